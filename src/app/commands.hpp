@@ -1,0 +1,16 @@
+#pragma once
+// Each subcommand lives in its own command_<name>.cpp and registers itself on the CLI11 app.
+// A registered command returns its exit code through the shared `exit_code` slot.
+
+#include <CLI/CLI.hpp>
+
+namespace grpvss::app {
+
+/// Exit codes (docs/user-guide.md): 0 clear/ok, 1 collision or within tolerance, 2 input error.
+constexpr int kExitOk = 0;
+constexpr int kExitFinding = 1;
+constexpr int kExitInputError = 2;
+
+void register_trajectory_command(CLI::App& app, int& exit_code);
+
+}  // namespace grpvss::app
