@@ -1,0 +1,113 @@
+#pragma once
+/// \file
+/// \brief Everything one verification run produces, in library units (radians, lengths).
+/// The report stage renders it (thesis output file, JSON report); the certificate is a
+/// separate document (certificate.hpp) written from the same run.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "grpvss/model/path_program.hpp"
+
+namespace grpvss::certify {
+
+/// The two labelled resolution modes (issue 4; docs/verification.md).
+enum class ResolutionMode {
+  kCertified,  ///< every point of every hull; two-ball cover with clearance (proofs/step-bound.md)
+  kThesis,     ///< thesis Eq. 3-3 at link-frame origins; reproduces the thesis, never "certified"
+};
+
+enum class Verdict {
+  kClear,            ///< certified: the nominal robot never touches an obstacle
+  kCollision,        ///< the unexpanded robot intersects an obstacle at a reported configuration
+  kWithinTolerance,  ///< only the expanded robot interferes; the unexpanded robot proven clear
+  kUndecided,        ///< only the expanded robot interferes and refinement hit its limit
+  kError,            ///< a thesis error 1-6 or a CP-model violation stopped the path
+};
+
+/// Which term bounded a step's allowance (recorded per link in every step).
+enum class GoverningTerm {
+  kTolerance,   ///< allowance = 2*Delta (no extra clearance at the step ends)
+  kClearance,   ///< allowance = (Delta + c_k) + (Delta + c_k1) with clearance > 0
+  kThesisRule,  ///< thesis mode: max{min[2D/cos(theta/2), 2D+L], Dmin}
+  kSegmentEnd,  ///< the step was cut short by the segment's end
+};
+
+/// One interference point (rounded from exact coordinates) with its ids.
+struct InterferencePoint {
+  int link = 0;      ///< 0..N
+  int hull = 0;      ///< index within the link (0-based)
+  int obstacle = 0;  ///< index within the environment (0-based)
+  Eigen::Vector3d p_W = Eigen::Vector3d::Zero();
+  std::string kind;  ///< "edge-of-link/face-of-obstacle", "obstacle-vertex-inside-link", ...
+};
+
+struct LinkStepRecord {
+  double motion_bound = 0.0;   ///< upper bound on the path length of any point of the link
+  double allowance = 0.0;      ///< what the step rule compared the bound with
+  GoverningTerm governing = GoverningTerm::kTolerance;
+  double clearance = 0.0;      ///< certified lower bound of dist(link, obstacles) at this step
+                               ///< (unexpanded link, raw obstacles); 0 when interfering
+};
+
+struct StepRecord {
+  int index = 0;        ///< 1-based over the whole path (the thesis numbers steps this way)
+  int segment = 0;      ///< 1-based
+  double path_time = 0.0;     ///< s from the start of the path
+  double segment_parameter = 0.0;  ///< PTP: s since segment start; CP: arc length from start
+  Eigen::VectorXd q;
+  Eigen::Vector3d end_effector_W = Eigen::Vector3d::Zero();
+  std::vector<LinkStepRecord> links;  ///< index = link number 0..N (link 0 has bound 0)
+  std::vector<InterferencePoint> interference_points;  ///< expanded robot vs obstacles
+  bool expanded_interferes = false;
+  bool unexpanded_collides = false;
+  bool refinement = false;  ///< inserted by the automatic refinement of Section 5.2.2
+};
+
+/// A thesis error (A.4, codes 1-6) or a new detection (codes >= 7, docs/user-guide.md).
+struct PathError {
+  int code = 0;
+  int segment = 0;  ///< 1-based; 0 when not tied to a segment
+  int step = 0;     ///< last step reached; 0 when none
+  std::string message;
+};
+
+struct SegmentRecord {
+  int number = 0;  ///< 1-based
+  PathSegment input;
+  Eigen::VectorXd start_q;
+  Eigen::VectorXd end_q;  ///< empty when the segment was refused
+  int first_step = 0;     ///< 0 when the segment produced no step
+  int last_step = 0;
+  double cycle_time = 0.0;
+  bool simulated = false;
+};
+
+struct LinkClearanceSummary {
+  int link = 0;
+  double min_clearance = 0.0;  ///< smallest certified clearance over all steps
+  int step = 0;                ///< where it occurs
+  int obstacle = -1;
+};
+
+struct VerificationResult {
+  double tolerance = 0.0;
+  ResolutionMode mode = ResolutionMode::kCertified;
+  Verdict verdict = Verdict::kClear;
+  std::string path_file_label;  ///< printed in "... INPUT FROM FILE <label>"
+  std::vector<SegmentRecord> segments;
+  std::vector<StepRecord> steps;
+  std::vector<PathError> errors;
+  std::vector<LinkClearanceSummary> link_clearances;
+  std::optional<int> collision_step;  ///< the step whose unexpanded robot intersects
+  double total_cycle_time = 0.0;
+};
+
+const char* to_string(ResolutionMode mode);
+const char* to_string(Verdict verdict);
+const char* to_string(GoverningTerm term);
+
+}  // namespace grpvss::certify

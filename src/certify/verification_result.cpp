@@ -1,0 +1,34 @@
+#include "grpvss/certify/verification_result.hpp"
+
+namespace grpvss::certify {
+
+const char* to_string(ResolutionMode mode) {
+  switch (mode) {
+    case ResolutionMode::kCertified: return "certified";
+    case ResolutionMode::kThesis: return "thesis";
+  }
+  return "?";
+}
+
+const char* to_string(Verdict verdict) {
+  switch (verdict) {
+    case Verdict::kClear: return "CLEAR";
+    case Verdict::kCollision: return "COLLISION";
+    case Verdict::kWithinTolerance: return "WITHIN_TOLERANCE";
+    case Verdict::kUndecided: return "UNDECIDED";
+    case Verdict::kError: return "ERROR";
+  }
+  return "?";
+}
+
+const char* to_string(GoverningTerm term) {
+  switch (term) {
+    case GoverningTerm::kTolerance: return "tolerance";
+    case GoverningTerm::kClearance: return "clearance";
+    case GoverningTerm::kThesisRule: return "thesis-rule";
+    case GoverningTerm::kSegmentEnd: return "segment-end";
+  }
+  return "?";
+}
+
+}  // namespace grpvss::certify
