@@ -27,6 +27,8 @@ const char* to_string(GoverningTerm term) {
     case GoverningTerm::kClearance: return "clearance";
     case GoverningTerm::kThesisRule: return "thesis-rule";
     case GoverningTerm::kSegmentEnd: return "segment-end";
+    case GoverningTerm::kRawClearance: return "raw-clearance";
+    case GoverningTerm::kUncertified: return "uncertified";
   }
   return "?";
 }

@@ -33,6 +33,8 @@ enum class GoverningTerm {
   kTolerance,   ///< allowance = 2*Delta (no extra clearance at the step ends)
   kClearance,   ///< allowance = (Delta + c_k) + (Delta + c_k1) with clearance > 0
   kThesisRule,  ///< thesis mode: max{min[2D/cos(theta/2), 2D+L], Dmin}
+  kRawClearance,  ///< refinement: the expanded hull interferes; radii from the raw hull's clearance
+  kUncertified,   ///< no rule could be met (collision at a step end, or the step floor reached)
   kSegmentEnd,  ///< the step was cut short by the segment's end
 };
 

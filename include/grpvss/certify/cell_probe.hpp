@@ -1,0 +1,84 @@
+#pragma once
+/// \file
+/// \brief Evaluates one configuration: places every link hull and its tolerance offset,
+/// decides interference of the expanded robot with every obstacle, and proves for each hull
+/// a radius r_h such that the open ball of radius r_h around every point of the TRUE
+/// (exactly placed) hull is free of obstacles. Every proof is kept as evidence.
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "grpvss/certify/robot_cell.hpp"
+#include "grpvss/certify/verification_result.hpp"
+#include "grpvss/geometry/separation_witness.hpp"
+#include "grpvss/kinematics/forward_kinematics.hpp"
+
+namespace grpvss::certify {
+
+/// \brief The proof about one (link hull, obstacle) pair at one configuration.
+struct PairEvidence {
+  int hull_index = 0;      ///< into RobotCell::hulls()
+  int obstacle = 0;
+  bool expanded = true;    ///< about the placed offset (true) or the placed raw hull (false)
+  bool separated = false;  ///< false: the pair interferes (no witness)
+  geometry::SeparationWitness witness;  ///< valid when separated
+  double lower_bound = 0.0;             ///< certified distance lower bound of the witness
+};
+
+/// \brief What one configuration proves about one link hull.
+struct HullState {
+  bool expanded_interferes = false;  ///< the expanded hull meets some obstacle
+  bool raw_collides = false;         ///< the raw hull meets some obstacle
+  /// Certified: every point of the true hull is farther than `radius` from every obstacle
+  /// (strictly). 0 when the raw hull collides.
+  /// proof: proofs/two-ball-cover.md#corollary-step
+  double radius = 0.0;
+  int nearest_obstacle = -1;   ///< the obstacle that governs `radius` (-1: broadphase margin)
+  /// Obstacles without explicit evidence are farther than this from the placed offset
+  /// (broadphase, exact box test); +inf when every obstacle has evidence.
+  double broadphase_margin = 0.0;
+};
+
+struct ProbeResult {
+  Eigen::VectorXd q;
+  std::vector<HullState> hulls;  ///< index = RobotCell::hulls() index
+  std::vector<PairEvidence> evidence;
+  std::vector<InterferencePoint> interference_points;  ///< filled only when requested
+  bool any_expanded_interference = false;
+  bool any_collision = false;
+
+  /// Smallest hull radius of a link (the link's certified clearance at this configuration).
+  double link_radius(const RobotCell& cell, int link) const;
+};
+
+/// \brief Per-query buffers and warm starts (workspace side of the model/workspace split).
+class CellProbe {
+ public:
+  explicit CellProbe(const RobotCell& cell);
+
+  /// Evaluates configuration q. `with_points`: also compute the exact interference points.
+  void probe(const Eigen::VectorXd& q, bool with_points, ProbeResult& out);
+
+  /// Obstacle count above which the broadphase is used instead of testing every obstacle.
+  static constexpr int kBroadphaseThreshold = 16;
+
+ private:
+  void probe_hull(int hull_index, bool with_points, ProbeResult& out);
+
+  const RobotCell* cell_;
+  kinematics::Workspace workspace_;
+  std::vector<Eigen::Vector3d> placed_expanded_;
+  std::vector<Eigen::Vector3d> placed_raw_;
+  std::vector<int> candidates_;
+  std::vector<std::pair<double, int>> ordered_candidates_;
+  std::vector<Eigen::Vector3d> warm_normals_;  ///< [hull * obstacles + obstacle]
+  std::vector<char> has_warm_normal_;
+};
+
+/// Places link-frame points with the pose X_WL exactly as forward kinematics places hull
+/// vertices (the FK rounding bound covers this expression).
+void place_points(const Eigen::Isometry3d& X_WL, const std::vector<Eigen::Vector3d>& points_L,
+                  std::vector<Eigen::Vector3d>& points_W);
+
+}  // namespace grpvss::certify

@@ -1,0 +1,77 @@
+#pragma once
+/// \file
+/// \brief The certificate of a certified verification: per step the configuration, every
+/// hull's proven radius with its evidence (separating slabs, broadphase margin), per
+/// transition every hull's motion bound, the allowance it was compared with and the term that
+/// governed. check_certificate() re-verifies all of it exactly from the input files alone.
+/// Format: docs/certificate.md.
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <nlohmann/json_fwd.hpp>
+
+#include "grpvss/certify/verification_result.hpp"
+#include "grpvss/geometry/separation_witness.hpp"
+
+namespace grpvss::certify {
+
+struct EvidenceRecord {
+  int obstacle = 0;
+  bool expanded = true;    ///< slab about the placed offset (true) or the raw hull (false)
+  bool separated = false;  ///< false: the pair interferes (no slab)
+  geometry::SeparationWitness witness;
+  double lower_bound = 0.0;
+};
+
+struct HullRecord {
+  int link = 0;
+  int hull = 0;
+  double radius = 0.0;             ///< claimed certified radius r_h
+  double broadphase_margin = 0.0;  ///< obstacles without evidence are farther (inf: none)
+  std::vector<EvidenceRecord> evidence;
+};
+
+struct TransitionRecord {
+  bool certified = false;
+  std::vector<double> hull_motion_bounds;  ///< M_h, same order as StepCertificate::hulls
+  std::vector<double> hull_allowances;     ///< r_k + r_{k+1}
+  std::vector<GoverningTerm> governing;
+};
+
+struct StepCertificate {
+  int step = 0;            ///< global step index (0 = the path's start configuration)
+  double parameter = 0.0;  ///< PTP: time since segment start; CP: path length from start
+  Eigen::VectorXd q;
+  std::vector<HullRecord> hulls;
+  TransitionRecord to_next;  ///< transition to the next step of the same segment
+};
+
+struct SegmentCertificate {
+  int number = 0;
+  std::string kind;  ///< "ptp-joint", "ptp-world", "cp-line"
+  double parameter_end = 0.0;
+  std::vector<StepCertificate> steps;  ///< first at parameter 0, last at parameter_end
+};
+
+struct Certificate {
+  std::string mode;  ///< always "certified" for a certificate
+  double tolerance = 0.0;
+  std::string offset_shape;
+  std::string timing;
+  double cp_speed = 0.0;
+  double cp_deviation_fraction = 0.0;
+  double placement_error = 0.0;
+  double expansion_radius = 0.0;
+  std::string claim;  ///< the verdict it supports
+  int collision_step = 0;
+  std::vector<SegmentCertificate> segments;
+  std::vector<PathError> errors;
+};
+
+nlohmann::json certificate_to_json(const Certificate& certificate);
+/// \throws InputError (file = `file_name`) when the document is not a well-formed certificate.
+Certificate certificate_from_json(const nlohmann::json& document, const std::string& file_name);
+
+}  // namespace grpvss::certify

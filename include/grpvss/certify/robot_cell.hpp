@@ -1,0 +1,81 @@
+#pragma once
+/// \file
+/// \brief Everything about one robot in one environment that does not change during a
+/// verification: exact hulls, the tolerance offsets of every link hull (built once, in the
+/// link frame), obstacle hulls and their spheres, the broadphase, the motion-bound radii and
+/// the bound on forward kinematics' rounding error.
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "grpvss/certify/motion_bound.hpp"
+#include "grpvss/geometry/broadphase.hpp"
+#include "grpvss/geometry/centroid_cull.hpp"
+#include "grpvss/geometry/minkowski_offset.hpp"
+#include "grpvss/kinematics/kinematic_chain.hpp"
+#include "grpvss/model/environment.hpp"
+#include "grpvss/model/robot_model.hpp"
+
+namespace grpvss::certify {
+
+struct CellOptions {
+  double tolerance = 0.0;  ///< Delta > 0
+  geometry::OffsetShape offset_shape = geometry::OffsetShape::kRhombicuboctahedron;
+};
+
+/// \brief One link hull, in its link frame L.
+struct LinkHull {
+  int link = 0;
+  int hull = 0;  ///< index within the link
+  std::vector<Eigen::Vector3d> raw_L;       ///< exact-hull vertices of the input points
+  std::vector<Eigen::Vector3d> expanded_L;  ///< vertices of H (+) P, P >= B(Delta + 2 eps)
+  geometry::CertifiedSphere raw_sphere_L;
+  geometry::CertifiedSphere expanded_sphere_L;
+};
+
+/// \brief The immutable verification context (model side of the model/workspace split).
+class RobotCell {
+ public:
+  /// \throws InputError-free: inputs are already validated; throws geometry::DegenerateHullError
+  ///         only for hulls the readers let through (never for valid files).
+  RobotCell(const RobotModel& robot, const Environment& environment, const CellOptions& options);
+
+  const RobotModel& robot() const { return *robot_; }
+  const kinematics::KinematicChain& chain() const { return chain_; }
+  const std::vector<LinkHull>& hulls() const { return hulls_; }
+  /// Exact-hull vertices of obstacle o, world frame.
+  const std::vector<std::vector<Eigen::Vector3d>>& obstacles_W() const { return obstacles_W_; }
+  const std::vector<geometry::CertifiedSphere>& obstacle_spheres_W() const {
+    return obstacle_spheres_W_;
+  }
+  const geometry::StaticObstacleIndex& obstacle_index() const { return obstacle_index_; }
+  const HullRadiusTable& radii() const { return radii_; }
+  double tolerance() const { return options_.tolerance; }
+  geometry::OffsetShape offset_shape() const { return options_.offset_shape; }
+  /// Strict upper bound on |computed placed point - exact placed point| for every point the
+  /// verifier places (hull and offset vertices, sphere centres).
+  /// proof: proofs/fk-rounding.md#fk-rounding
+  double placement_error() const { return placement_error_; }
+  /// Radius of the ball the link offsets are verified to contain: Delta + 2 * placement_error.
+  /// proof: proofs/offset-containment.md#rounded-placement
+  double expansion_radius() const { return expansion_radius_; }
+
+ private:
+  const RobotModel* robot_;
+  CellOptions options_;
+  kinematics::KinematicChain chain_;
+  HullRadiusTable radii_;
+  double placement_error_ = 0.0;
+  double expansion_radius_ = 0.0;
+  std::vector<LinkHull> hulls_;
+  std::vector<std::vector<Eigen::Vector3d>> obstacles_W_;
+  std::vector<geometry::CertifiedSphere> obstacle_spheres_W_;
+  geometry::StaticObstacleIndex obstacle_index_;
+};
+
+/// Largest |coordinate| of any point the verifier places for this robot (hull and offset
+/// vertices, sphere centres), the input of the FK rounding bound.
+double largest_link_coordinate(const std::vector<LinkHull>& hulls);
+
+}  // namespace grpvss::certify

@@ -1,0 +1,195 @@
+#include "grpvss/certify/cell_probe.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "grpvss/geometry/certified_query.hpp"
+#include "grpvss/geometry/directed_rounding.hpp"
+#include "grpvss/geometry/exact_contact.hpp"
+
+namespace grpvss::certify {
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// A separating slab from two balls that contain the sets: n = c_b - c_a,
+// a0 >= n.c_a + r_a |n|, b0 <= n.c_b - r_b |n|, all with directed rounding.
+// proof: proofs/separation-witness.md#sphere-slab
+bool sphere_witness(const Eigen::Vector3d& center_a, double radius_a,
+                    const Eigen::Vector3d& center_b, double radius_b,
+                    geometry::SeparationWitness& witness) {
+  namespace r = geometry::rounding;
+  const Eigen::Vector3d normal = center_b - center_a;
+  if (!(normal.squaredNorm() > 0.0)) return false;
+  r::UpwardRoundingScope upward;
+  const double norm_up = r::sqrt_up(r::dot_up(normal.data(), normal.data()));
+  const double offset_a = r::add_up(r::dot_up(normal.data(), center_a.data()),
+                                    r::mul_up(radius_a, norm_up));
+  const double offset_b = r::sub_down(r::dot_down(normal.data(), center_b.data()),
+                                      r::mul_up(radius_b, norm_up));
+  if (!(offset_b > offset_a)) return false;
+  witness.normal = normal;
+  witness.offset_a = offset_a;
+  witness.offset_b = offset_b;
+  return true;
+}
+
+double placed_sphere_radius(double radius_L, double placement_error) {
+  // |p~ - c~| <= |p - c| + 2 eps for rigidly placed p, c computed with error < eps each.
+  namespace r = geometry::rounding;
+  r::UpwardRoundingScope upward;
+  return r::add_up(radius_L, r::mul_up(2.0, placement_error));
+}
+
+}  // namespace
+
+void place_points(const Eigen::Isometry3d& X_WL, const std::vector<Eigen::Vector3d>& points_L,
+                  std::vector<Eigen::Vector3d>& points_W) {
+  points_W.resize(points_L.size());
+  for (std::size_t i = 0; i < points_L.size(); ++i) points_W[i] = X_WL * points_L[i];
+}
+
+double ProbeResult::link_radius(const RobotCell& cell, int link) const {
+  double smallest = kInfinity;
+  for (std::size_t i = 0; i < hulls.size(); ++i) {
+    if (cell.hulls()[i].link == link) smallest = std::min(smallest, hulls[i].radius);
+  }
+  return smallest;
+}
+
+CellProbe::CellProbe(const RobotCell& cell)
+    : cell_(&cell),
+      workspace_(cell.robot()),
+      warm_normals_(cell.hulls().size() * cell.obstacles_W().size()),
+      has_warm_normal_(cell.hulls().size() * cell.obstacles_W().size(), 0) {}
+
+void CellProbe::probe(const Eigen::VectorXd& q, bool with_points, ProbeResult& out) {
+  out.q = q;
+  out.hulls.assign(cell_->hulls().size(), HullState{});
+  out.evidence.clear();
+  out.interference_points.clear();
+  out.any_expanded_interference = false;
+  out.any_collision = false;
+  kinematics::forward_kinematics(cell_->chain(), q, workspace_);
+  for (int i = 0; i < static_cast<int>(cell_->hulls().size()); ++i) probe_hull(i, with_points, out);
+}
+
+void CellProbe::probe_hull(int hull_index, bool with_points, ProbeResult& out) {
+  const RobotCell& cell = *cell_;
+  const LinkHull& hull = cell.hulls()[hull_index];
+  const Eigen::Isometry3d& X_WL = workspace_.X_WL[hull.link];
+  const double eps = cell.placement_error();
+  const double delta = cell.tolerance();
+  const int obstacle_count = static_cast<int>(cell.obstacles_W().size());
+  HullState& state = out.hulls[hull_index];
+
+  const Eigen::Vector3d center_W = X_WL * hull.expanded_sphere_L.center;
+  const double radius_W = placed_sphere_radius(hull.expanded_sphere_L.radius_upper, eps);
+
+  // Candidate obstacles: all of them in small cells, the broadphase's otherwise.
+  candidates_.clear();
+  state.broadphase_margin = kInfinity;
+  if (obstacle_count <= kBroadphaseThreshold) {
+    for (int o = 0; o < obstacle_count; ++o) candidates_.push_back(o);
+  } else {
+    place_points(X_WL, hull.expanded_L, placed_expanded_);
+    state.broadphase_margin = 0.25 * cell.radii().radius(cell.radii().link_count() - 1, 0, 1);
+    cell.obstacle_index().candidates(geometry::Aabb::of_points(placed_expanded_),
+                                     state.broadphase_margin, candidates_);
+  }
+  // proof: proofs/two-ball-cover.md#corollary-step (obstacles beyond the margin are farther
+  // than Delta + margin from every true point of the hull)
+  state.radius = delta + state.broadphase_margin;
+
+  // Nearest first: a sphere slab is enough for every obstacle whose sphere gap is not below
+  // the smallest proven clearance so far; only the others need the pair query.
+  ordered_candidates_.clear();
+  for (int o : candidates_) {
+    const geometry::CertifiedSphere& sphere = cell.obstacle_spheres_W()[o];
+    const double gap = (sphere.center - center_W).norm() - radius_W - sphere.radius_upper;
+    ordered_candidates_.emplace_back(gap, o);
+  }
+  std::sort(ordered_candidates_.begin(), ordered_candidates_.end());
+
+  bool expanded_placed = obstacle_count > kBroadphaseThreshold;
+  bool raw_placed = false;
+  double smallest_clearance = kInfinity;
+  for (const auto& [gap_estimate, o] : ordered_candidates_) {
+    PairEvidence evidence;
+    evidence.hull_index = hull_index;
+    evidence.obstacle = o;
+    const geometry::CertifiedSphere& sphere = cell.obstacle_spheres_W()[o];
+    if (gap_estimate > 0.0 && gap_estimate >= smallest_clearance &&
+        sphere_witness(center_W, radius_W, sphere.center, sphere.radius_upper, evidence.witness)) {
+      evidence.separated = true;
+      evidence.lower_bound = geometry::certified_lower_bound(evidence.witness);
+    } else {
+      if (!expanded_placed) {
+        place_points(X_WL, hull.expanded_L, placed_expanded_);
+        expanded_placed = true;
+      }
+      const std::size_t warm_slot = static_cast<std::size_t>(hull_index) * obstacle_count + o;
+      const geometry::CertifiedPairResult result = geometry::certified_pair_query(
+          placed_expanded_, cell.obstacles_W()[o],
+          has_warm_normal_[warm_slot] ? &warm_normals_[warm_slot] : nullptr);
+      if (result.contact == geometry::Contact::kSeparated && result.witness) {
+        evidence.separated = true;
+        evidence.witness = *result.witness;
+        evidence.lower_bound = result.clearance_lower_bound;
+        warm_normals_[warm_slot] = result.witness->normal;
+        has_warm_normal_[warm_slot] = 1;
+      }
+    }
+    if (evidence.separated) {
+      smallest_clearance = std::min(smallest_clearance, evidence.lower_bound);
+      // proof: proofs/offset-containment.md#clearance-through-offset
+      const double radius = delta + evidence.lower_bound;
+      if (radius < state.radius) {
+        state.radius = radius;
+        state.nearest_obstacle = o;
+      }
+      out.evidence.push_back(evidence);
+      continue;
+    }
+    // The expanded hull interferes: record it, then decide the raw hull.
+    state.expanded_interferes = true;
+    out.any_expanded_interference = true;
+    out.evidence.push_back(evidence);
+    if (with_points) {
+      for (const auto& point : geometry::interference_points(placed_expanded_, cell.obstacles_W()[o])) {
+        out.interference_points.push_back(
+            {hull.link, hull.hull, o, point.point, geometry::to_string(point.kind)});
+      }
+    }
+    if (!raw_placed) {
+      place_points(X_WL, hull.raw_L, placed_raw_);
+      raw_placed = true;
+    }
+    PairEvidence raw;
+    raw.hull_index = hull_index;
+    raw.obstacle = o;
+    raw.expanded = false;
+    const geometry::CertifiedPairResult raw_result =
+        geometry::certified_pair_query(placed_raw_, cell.obstacles_W()[o], nullptr);
+    if (raw_result.contact == geometry::Contact::kSeparated && raw_result.witness) {
+      raw.separated = true;
+      raw.witness = *raw_result.witness;
+      raw.lower_bound = raw_result.clearance_lower_bound;
+      // proof: proofs/two-ball-cover.md#corollary-step (raw radius: lb - eps < true distance)
+      const double radius = std::max(0.0, raw.lower_bound - eps);
+      if (radius < state.radius) {
+        state.radius = radius;
+        state.nearest_obstacle = o;
+      }
+    } else {
+      state.raw_collides = true;
+      out.any_collision = true;
+      state.radius = 0.0;
+      state.nearest_obstacle = o;
+    }
+    out.evidence.push_back(raw);
+  }
+}
+
+}  // namespace grpvss::certify

@@ -1,0 +1,209 @@
+#include "grpvss/certify/certificate.hpp"
+
+#include <cmath>
+#include <limits>
+
+#include <nlohmann/json.hpp>
+
+#include "grpvss/common/input_error.hpp"
+
+namespace grpvss::certify {
+namespace {
+
+using nlohmann::json;
+
+// JSON has no infinity: an absent broadphase margin is written as null.
+json number_or_null(double value) { return std::isfinite(value) ? json(value) : json(nullptr); }
+
+json vector_to_json(const Eigen::VectorXd& v) {
+  json array = json::array();
+  for (Eigen::Index i = 0; i < v.size(); ++i) array.push_back(v[i]);
+  return array;
+}
+
+GoverningTerm governing_from_string(const std::string& name, const std::string& file) {
+  for (GoverningTerm term : {GoverningTerm::kTolerance, GoverningTerm::kClearance,
+                             GoverningTerm::kThesisRule, GoverningTerm::kSegmentEnd,
+                             GoverningTerm::kRawClearance, GoverningTerm::kUncertified}) {
+    if (name == to_string(term)) return term;
+  }
+  throw InputError(file, 0, "a governing term name", name);
+}
+
+// Reads a required field with a clear message naming the JSON path.
+template <typename T>
+T field(const json& object, const char* key, const std::string& where, const std::string& file) {
+  if (!object.is_object() || !object.contains(key)) {
+    throw InputError(file, 0, "field '" + std::string(key) + "' in " + where);
+  }
+  try {
+    return object.at(key).get<T>();
+  } catch (const json::exception&) {
+    throw InputError(file, 0, "field '" + std::string(key) + "' in " + where + " of the right type");
+  }
+}
+
+double margin_field(const json& object, const std::string& where, const std::string& file) {
+  if (!object.contains("broadphase_margin")) {
+    throw InputError(file, 0, "field 'broadphase_margin' in " + where);
+  }
+  const json& value = object.at("broadphase_margin");
+  if (value.is_null()) return std::numeric_limits<double>::infinity();
+  if (!value.is_number()) throw InputError(file, 0, "a number or null for broadphase_margin in " + where);
+  return value.get<double>();
+}
+
+Eigen::VectorXd vector_field(const json& object, const char* key, const std::string& where,
+                             const std::string& file) {
+  const auto values = field<std::vector<double>>(object, key, where, file);
+  return Eigen::Map<const Eigen::VectorXd>(values.data(), static_cast<Eigen::Index>(values.size()));
+}
+
+}  // namespace
+
+json certificate_to_json(const Certificate& certificate) {
+  json document;
+  document["format"] = "grpvss-certificate";
+  document["version"] = 1;
+  document["mode"] = certificate.mode;
+  document["tolerance"] = certificate.tolerance;
+  document["offset_shape"] = certificate.offset_shape;
+  document["timing"] = certificate.timing;
+  document["cp_speed"] = certificate.cp_speed;
+  document["cp_deviation_fraction"] = certificate.cp_deviation_fraction;
+  document["placement_error"] = certificate.placement_error;
+  document["expansion_radius"] = certificate.expansion_radius;
+  document["claim"] = certificate.claim;
+  document["collision_step"] = certificate.collision_step;
+  json errors = json::array();
+  for (const PathError& error : certificate.errors) {
+    errors.push_back({{"code", error.code}, {"segment", error.segment}, {"step", error.step},
+                      {"message", error.message}});
+  }
+  document["errors"] = errors;
+  json segments = json::array();
+  for (const SegmentCertificate& segment : certificate.segments) {
+    json steps = json::array();
+    for (const StepCertificate& step : segment.steps) {
+      json hulls = json::array();
+      for (const HullRecord& hull : step.hulls) {
+        json evidence = json::array();
+        for (const EvidenceRecord& record : hull.evidence) {
+          json item = {{"obstacle", record.obstacle},
+                       {"expanded", record.expanded},
+                       {"separated", record.separated}};
+          if (record.separated) {
+            item["normal"] = {record.witness.normal.x(), record.witness.normal.y(),
+                              record.witness.normal.z()};
+            item["offset_a"] = record.witness.offset_a;
+            item["offset_b"] = record.witness.offset_b;
+            item["lower_bound"] = record.lower_bound;
+          }
+          evidence.push_back(item);
+        }
+        hulls.push_back({{"link", hull.link},
+                         {"hull", hull.hull},
+                         {"radius", hull.radius},
+                         {"broadphase_margin", number_or_null(hull.broadphase_margin)},
+                         {"evidence", evidence}});
+      }
+      json item = {{"step", step.step},
+                   {"parameter", step.parameter},
+                   {"q", vector_to_json(step.q)},
+                   {"hulls", hulls}};
+      if (!step.to_next.hull_motion_bounds.empty()) {
+        json governing = json::array();
+        for (GoverningTerm term : step.to_next.governing) governing.push_back(to_string(term));
+        item["to_next"] = {{"certified", step.to_next.certified},
+                           {"hull_motion_bounds", step.to_next.hull_motion_bounds},
+                           {"hull_allowances", step.to_next.hull_allowances},
+                           {"governing", governing}};
+      }
+      steps.push_back(item);
+    }
+    segments.push_back({{"number", segment.number},
+                        {"kind", segment.kind},
+                        {"parameter_end", segment.parameter_end},
+                        {"steps", steps}});
+  }
+  document["segments"] = segments;
+  return document;
+}
+
+Certificate certificate_from_json(const json& document, const std::string& file) {
+  if (!document.is_object() || document.value("format", "") != "grpvss-certificate") {
+    throw InputError(file, 0, "a GRPVSS certificate (\"format\": \"grpvss-certificate\")");
+  }
+  if (document.value("version", 0) != 1) throw InputError(file, 0, "certificate version 1");
+  Certificate certificate;
+  const std::string top = "the certificate";
+  certificate.mode = field<std::string>(document, "mode", top, file);
+  certificate.tolerance = field<double>(document, "tolerance", top, file);
+  certificate.offset_shape = field<std::string>(document, "offset_shape", top, file);
+  certificate.timing = field<std::string>(document, "timing", top, file);
+  certificate.cp_speed = field<double>(document, "cp_speed", top, file);
+  certificate.cp_deviation_fraction = field<double>(document, "cp_deviation_fraction", top, file);
+  certificate.placement_error = field<double>(document, "placement_error", top, file);
+  certificate.expansion_radius = field<double>(document, "expansion_radius", top, file);
+  certificate.claim = field<std::string>(document, "claim", top, file);
+  certificate.collision_step = field<int>(document, "collision_step", top, file);
+  for (const json& error : field<json>(document, "errors", top, file)) {
+    certificate.errors.push_back({field<int>(error, "code", "an error", file),
+                                  field<int>(error, "segment", "an error", file),
+                                  field<int>(error, "step", "an error", file),
+                                  field<std::string>(error, "message", "an error", file)});
+  }
+  for (const json& segment_json : field<json>(document, "segments", top, file)) {
+    SegmentCertificate segment;
+    const std::string where = "a segment";
+    segment.number = field<int>(segment_json, "number", where, file);
+    segment.kind = field<std::string>(segment_json, "kind", where, file);
+    segment.parameter_end = field<double>(segment_json, "parameter_end", where, file);
+    for (const json& step_json : field<json>(segment_json, "steps", where, file)) {
+      StepCertificate step;
+      const std::string step_where = "step of segment " + std::to_string(segment.number);
+      step.step = field<int>(step_json, "step", step_where, file);
+      step.parameter = field<double>(step_json, "parameter", step_where, file);
+      step.q = vector_field(step_json, "q", step_where, file);
+      for (const json& hull_json : field<json>(step_json, "hulls", step_where, file)) {
+        HullRecord hull;
+        hull.link = field<int>(hull_json, "link", step_where, file);
+        hull.hull = field<int>(hull_json, "hull", step_where, file);
+        hull.radius = field<double>(hull_json, "radius", step_where, file);
+        hull.broadphase_margin = margin_field(hull_json, step_where, file);
+        for (const json& evidence_json : field<json>(hull_json, "evidence", step_where, file)) {
+          EvidenceRecord record;
+          record.obstacle = field<int>(evidence_json, "obstacle", step_where, file);
+          record.expanded = field<bool>(evidence_json, "expanded", step_where, file);
+          record.separated = field<bool>(evidence_json, "separated", step_where, file);
+          if (record.separated) {
+            const auto normal = field<std::vector<double>>(evidence_json, "normal", step_where, file);
+            if (normal.size() != 3) throw InputError(file, 0, "a 3-vector normal in " + step_where);
+            record.witness.normal = {normal[0], normal[1], normal[2]};
+            record.witness.offset_a = field<double>(evidence_json, "offset_a", step_where, file);
+            record.witness.offset_b = field<double>(evidence_json, "offset_b", step_where, file);
+            record.lower_bound = field<double>(evidence_json, "lower_bound", step_where, file);
+          }
+          hull.evidence.push_back(record);
+        }
+        step.hulls.push_back(std::move(hull));
+      }
+      if (step_json.contains("to_next")) {
+        const json& next = step_json.at("to_next");
+        step.to_next.certified = field<bool>(next, "certified", step_where, file);
+        step.to_next.hull_motion_bounds =
+            field<std::vector<double>>(next, "hull_motion_bounds", step_where, file);
+        step.to_next.hull_allowances =
+            field<std::vector<double>>(next, "hull_allowances", step_where, file);
+        for (const auto& name : field<std::vector<std::string>>(next, "governing", step_where, file)) {
+          step.to_next.governing.push_back(governing_from_string(name, file));
+        }
+      }
+      segment.steps.push_back(std::move(step));
+    }
+    certificate.segments.push_back(std::move(segment));
+  }
+  return certificate;
+}
+
+}  // namespace grpvss::certify

@@ -1,0 +1,454 @@
+#include "grpvss/certify/certificate_checker.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <optional>
+#include <sstream>
+
+#include <gmpxx.h>
+
+#include "grpvss/certify/cell_probe.hpp"  // place_points only: the shared placement expression
+#include "grpvss/geometry/convex_polytope.hpp"
+#include "grpvss/geometry/exact_contact.hpp"
+#include "grpvss/geometry/minkowski_offset.hpp"
+#include "grpvss/geometry/separation_witness.hpp"
+#include "grpvss/kinematics/fk_error_bound.hpp"
+#include "grpvss/kinematics/forward_kinematics.hpp"
+#include "grpvss/motion/cp_line.hpp"
+#include "grpvss/motion/trajectory.hpp"
+
+namespace grpvss::certify {
+namespace {
+
+using Rational = mpq_class;
+
+Rational exact(double value) { return Rational(value); }
+
+// The checker's own data per link hull: raw vertices, the offset it rebuilds and verifies,
+// and the exact axis radii R_{jh} (proofs/motion-bound.md#lemma-axis-radius).
+struct CheckedHull {
+  int link = 0;
+  int hull = 0;
+  std::vector<Eigen::Vector3d> raw_L;
+  std::vector<Eigen::Vector3d> expanded_L;
+  std::vector<Rational> axis_radius;  ///< [joint-1], exact
+};
+
+Rational exact_axis_radius(const RobotModel& robot, int link, const HullPoints& hull, int joint) {
+  Rational sum = abs(exact(robot.joints[joint - 1].dh.a));
+  for (int m = joint + 1; m <= link; ++m) {
+    const Joint& joint_m = robot.joints[m - 1];
+    Rational reach = abs(exact(joint_m.dh.d));
+    if (joint_m.type == JointType::kPrismatic) {
+      const Rational low = abs(exact(joint_m.dh.d) + exact(joint_m.minimum));
+      const Rational high = abs(exact(joint_m.dh.d) + exact(joint_m.maximum));
+      reach = low > high ? low : high;
+    }
+    sum += abs(exact(joint_m.dh.a)) + reach;
+  }
+  Rational largest = 0;
+  for (const auto& p : hull.points) {
+    const Rational l1 = abs(exact(p.x())) + abs(exact(p.y())) + abs(exact(p.z()));
+    if (l1 > largest) largest = l1;
+  }
+  return sum + largest;
+}
+
+// Exact box separation: some axis has a gap > margin between the boxes of the two sets.
+bool boxes_farther_than(const std::vector<Eigen::Vector3d>& a,
+                        const std::vector<Eigen::Vector3d>& b, double margin) {
+  for (int axis = 0; axis < 3; ++axis) {
+    double a_lo = a[0][axis], a_hi = a[0][axis], b_lo = b[0][axis], b_hi = b[0][axis];
+    for (const auto& p : a) a_lo = std::min(a_lo, p[axis]), a_hi = std::max(a_hi, p[axis]);
+    for (const auto& p : b) b_lo = std::min(b_lo, p[axis]), b_hi = std::max(b_hi, p[axis]);
+    if (exact(b_lo) - exact(a_hi) > exact(margin)) return true;
+    if (exact(a_lo) - exact(b_hi) > exact(margin)) return true;
+  }
+  return false;
+}
+
+class Checker {
+ public:
+  Checker(const RobotModel& robot, const Environment& environment, const PathProgram& program,
+          const motion::KinematicsAccess& kinematics, const Certificate& certificate,
+          const CheckOptions& options)
+      : robot_(robot),
+        environment_(environment),
+        program_(program),
+        kinematics_(kinematics),
+        certificate_(certificate),
+        options_(options),
+        chain_(kinematics::make_chain(robot)),
+        workspace_(robot) {}
+
+  CheckReport run();
+
+ private:
+  void fail(const std::string& message) {
+    if (report_.failures.size() < options_.max_failures) report_.failures.push_back(message);
+    else if (report_.failures.size() == options_.max_failures) report_.failures.push_back("...");
+  }
+  bool check_header();
+  bool build_hulls();
+  void check_segment(const SegmentCertificate& segment, const motion::SegmentTrajectory& planned);
+  // Returns the exactly verified radius bound of every hull at this step (claimed radii that
+  // exceed what the evidence proves are failures).
+  std::vector<Rational> check_step(const StepCertificate& step, const std::string& where);
+  void check_transition(const StepCertificate& from, const StepCertificate& to,
+                        const std::vector<Rational>& radius_from,
+                        const std::vector<Rational>& radius_to, const std::string& where);
+  void check_claim();
+
+  const RobotModel& robot_;
+  const Environment& environment_;
+  const PathProgram& program_;
+  const motion::KinematicsAccess& kinematics_;
+  const Certificate& certificate_;
+  CheckOptions options_;
+  kinematics::KinematicChain chain_;
+  kinematics::Workspace workspace_;
+  std::vector<CheckedHull> hulls_;
+  std::vector<std::vector<Eigen::Vector3d>> obstacles_;
+  std::vector<Eigen::Vector3d> placed_;
+  CheckReport report_;
+  bool all_transitions_certified_ = true;
+  bool any_expanded_interference_ = false;
+  bool any_raw_collision_ = false;
+  bool coverage_complete_ = true;
+  int previous_step_index_ = -1;
+  std::map<int, const StepCertificate*> steps_by_index_;
+};
+
+bool Checker::check_header() {
+  bool ok = true;
+  if (certificate_.mode != "certified") fail("the certificate's mode is not 'certified'"), ok = false;
+  if (!(certificate_.tolerance > 0.0)) fail("tolerance must be > 0"), ok = false;
+  // The placement error must cover the FK rounding bound for every coordinate used: the
+  // checker measures the largest coordinate of its own offsets below and compares there.
+  if (!(exact(certificate_.expansion_radius) >=
+        exact(certificate_.tolerance) + 2 * exact(certificate_.placement_error))) {
+    fail("expansion_radius < tolerance + 2 placement_error");
+    ok = false;
+  }
+  ++report_.inequalities_checked;
+  return ok;
+}
+
+bool Checker::build_hulls() {
+  const geometry::OffsetShape shape = certificate_.offset_shape == "cube"
+                                          ? geometry::OffsetShape::kCube
+                                          : geometry::OffsetShape::kRhombicuboctahedron;
+  if (certificate_.offset_shape != "cube" && certificate_.offset_shape != "rhombicuboctahedron") {
+    fail("unknown offset shape '" + certificate_.offset_shape + "'");
+    return false;
+  }
+  double largest_coordinate = 0.0;
+  for (int link = 0; link < static_cast<int>(robot_.links.size()); ++link) {
+    for (int hull = 0; hull < static_cast<int>(robot_.links[link].hulls.size()); ++hull) {
+      const HullPoints& points = robot_.links[link].hulls[hull];
+      const geometry::ConvexPolytope raw = geometry::ConvexPolytope::from_points(points.points);
+      const geometry::ConvexPolytope expanded =
+          geometry::minkowski_offset(raw, certificate_.expansion_radius, shape);
+      // proof: proofs/offset-containment.md#rounded-placement
+      ++report_.inequalities_checked;
+      if (!geometry::contains_ball_sum_exactly(expanded, raw, certificate_.expansion_radius)) {
+        fail("link " + std::to_string(link) + " hull " + std::to_string(hull) +
+             ": the offset does not contain the ball sum");
+        return false;
+      }
+      CheckedHull checked;
+      checked.link = link;
+      checked.hull = hull;
+      checked.raw_L = raw.vertices();
+      checked.expanded_L = expanded.vertices();
+      for (int joint = 1; joint <= link; ++joint) {
+        checked.axis_radius.push_back(exact_axis_radius(robot_, link, points, joint));
+      }
+      for (const auto& p : checked.expanded_L) largest_coordinate = std::max(largest_coordinate, p.cwiseAbs().maxCoeff());
+      for (const auto& p : checked.raw_L) largest_coordinate = std::max(largest_coordinate, p.cwiseAbs().maxCoeff());
+      hulls_.push_back(std::move(checked));
+    }
+  }
+  // proof: proofs/fk-rounding.md#fk-rounding (the verifier doubles the bound: strictness)
+  const double bound = kinematics::forward_kinematics_error_bound(chain_, largest_coordinate);
+  ++report_.inequalities_checked;
+  if (!(exact(certificate_.placement_error) >= 2 * exact(bound))) {
+    fail("placement_error is smaller than twice the forward-kinematics rounding bound");
+    return false;
+  }
+  for (const HullPoints& obstacle : environment_.obstacles) {
+    obstacles_.push_back(geometry::ConvexPolytope::from_points(obstacle.points).vertices());
+  }
+  return true;
+}
+
+std::vector<Rational> Checker::check_step(const StepCertificate& step, const std::string& where) {
+  std::vector<Rational> verified(hulls_.size(), Rational(0));
+  if (step.q.size() != robot_.joint_count()) {
+    fail(where + ": wrong joint count");
+    return verified;
+  }
+  if (step.hulls.size() != hulls_.size()) {
+    fail(where + ": expected a record for each of the " + std::to_string(hulls_.size()) + " hulls");
+    return verified;
+  }
+  kinematics::forward_kinematics(chain_, step.q, workspace_);
+  const Rational delta = exact(certificate_.tolerance);
+  const Rational eps = exact(certificate_.placement_error);
+  const int obstacle_count = static_cast<int>(obstacles_.size());
+  for (std::size_t i = 0; i < hulls_.size(); ++i) {
+    const CheckedHull& hull = hulls_[i];
+    const HullRecord& record = step.hulls[i];
+    const std::string hull_where = where + " link " + std::to_string(hull.link) + " hull " +
+                                   std::to_string(hull.hull);
+    if (record.link != hull.link || record.hull != hull.hull) {
+      fail(hull_where + ": hull records out of order");
+      continue;
+    }
+    const Eigen::Isometry3d& X_WL = workspace_.X_WL[hull.link];
+    std::vector<Eigen::Vector3d> placed_expanded, placed_raw;
+    place_points(X_WL, hull.expanded_L, placed_expanded);
+    place_points(X_WL, hull.raw_L, placed_raw);
+    // Per obstacle: the radius its evidence proves (proofs/two-ball-cover.md#corollary-step).
+    std::vector<std::optional<Rational>> expanded_radius(obstacle_count), raw_radius(obstacle_count);
+    std::vector<char> expanded_interferes(obstacle_count, 0), raw_collides(obstacle_count, 0);
+    bool bad_evidence = false;
+    for (const EvidenceRecord& evidence : record.evidence) {
+      if (evidence.obstacle < 0 || evidence.obstacle >= obstacle_count) {
+        fail(hull_where + ": evidence names an obstacle that does not exist");
+        bad_evidence = true;
+        continue;
+      }
+      const auto& placed = evidence.expanded ? placed_expanded : placed_raw;
+      if (evidence.separated) {
+        ++report_.inequalities_checked;
+        if (!geometry::check_witness_exactly(placed, obstacles_[evidence.obstacle], evidence.witness,
+                                             evidence.lower_bound) ||
+            !(evidence.lower_bound >= 0.0)) {
+          fail(hull_where + " obstacle " + std::to_string(evidence.obstacle) +
+               ": the separation witness does not hold");
+          bad_evidence = true;
+          continue;
+        }
+        if (evidence.expanded) {
+          // proof: proofs/offset-containment.md#clearance-through-offset
+          expanded_radius[evidence.obstacle] = delta + exact(evidence.lower_bound);
+        } else {
+          const Rational r = exact(evidence.lower_bound) - eps;
+          raw_radius[evidence.obstacle] = r > 0 ? r : Rational(0);
+        }
+      } else if (evidence.expanded) {
+        expanded_interferes[evidence.obstacle] = 1;
+        any_expanded_interference_ = true;
+      } else {
+        raw_collides[evidence.obstacle] = 1;
+        any_raw_collision_ = true;
+      }
+    }
+    if (bad_evidence) continue;
+    // Every obstacle must be accounted for.
+    std::optional<Rational> radius;
+    auto lower_to = [&radius](const Rational& r) {
+      if (!radius || r < *radius) radius = r;
+    };
+    for (int o = 0; o < obstacle_count; ++o) {
+      if (expanded_radius[o]) {
+        lower_to(*expanded_radius[o]);
+      } else if (expanded_interferes[o]) {
+        if (raw_radius[o]) lower_to(*raw_radius[o]);
+        else lower_to(Rational(0));  // raw collision or no raw evidence: nothing proven
+      } else if (std::isfinite(record.broadphase_margin) && record.broadphase_margin >= 0.0) {
+        ++report_.inequalities_checked;
+        if (!boxes_farther_than(placed_expanded, obstacles_[o], record.broadphase_margin)) {
+          fail(hull_where + " obstacle " + std::to_string(o) +
+               ": no evidence and not beyond the broadphase margin");
+          lower_to(Rational(0));
+        } else {
+          lower_to(delta + exact(record.broadphase_margin));
+        }
+      } else {
+        fail(hull_where + " obstacle " + std::to_string(o) + ": no evidence");
+        lower_to(Rational(0));
+      }
+    }
+    if (!radius) radius = delta + exact(std::isfinite(record.broadphase_margin) ? record.broadphase_margin : 0.0);
+    ++report_.inequalities_checked;
+    if (!(exact(record.radius) <= *radius) || record.radius < 0.0) {
+      fail(hull_where + ": the claimed radius exceeds what the evidence proves");
+      continue;
+    }
+    verified[i] = exact(record.radius);
+  }
+  return verified;
+}
+
+// proof: proofs/motion-bound.md#lemma-motion-bound, proofs/two-ball-cover.md#corollary-step
+void Checker::check_transition(const StepCertificate& from, const StepCertificate& to,
+                               const std::vector<Rational>& radius_from,
+                               const std::vector<Rational>& radius_to, const std::string& where) {
+  const TransitionRecord& claimed = from.to_next;
+  if (claimed.hull_motion_bounds.size() != hulls_.size() ||
+      claimed.hull_allowances.size() != hulls_.size() || claimed.governing.size() != hulls_.size()) {
+    fail(where + ": the transition record is incomplete");
+    all_transitions_certified_ = false;
+    return;
+  }
+  bool certified = true;
+  for (std::size_t i = 0; i < hulls_.size(); ++i) {
+    const CheckedHull& hull = hulls_[i];
+    Rational bound = 0;
+    for (int joint = 1; joint <= hull.link; ++joint) {
+      const Rational increment = abs(exact(to.q[joint - 1]) - exact(from.q[joint - 1]));
+      bound += robot_.joints[joint - 1].type == JointType::kRevolute
+                   ? increment * hull.axis_radius[joint - 1]
+                   : increment;
+    }
+    const Rational allowance = radius_from[i] + radius_to[i];
+    report_.inequalities_checked += 3;
+    if (!(exact(claimed.hull_motion_bounds[i]) >= bound)) {
+      fail(where + " hull " + std::to_string(i) + ": the recorded motion bound is below the exact bound");
+      certified = false;
+    }
+    if (!(exact(claimed.hull_allowances[i]) <= allowance)) {
+      fail(where + " hull " + std::to_string(i) + ": the recorded allowance exceeds r_k + r_k+1");
+      certified = false;
+    }
+    if (!(bound <= allowance)) {
+      if (claimed.certified) {
+        fail(where + " hull " + std::to_string(i) + ": motion bound exceeds the allowance");
+      }
+      certified = false;
+    }
+  }
+  if (!certified) all_transitions_certified_ = false;
+}
+
+void Checker::check_segment(const SegmentCertificate& segment,
+                            const motion::SegmentTrajectory& planned) {
+  const std::string where_segment = "segment " + std::to_string(segment.number);
+  const bool cp = planned.kind == motion::SegmentKind::kCpLine;
+  const double parameter_end = cp ? planned.cp->length() : planned.duration;
+  if (segment.steps.size() < 2) {
+    fail(where_segment + ": fewer than two steps");
+    return;
+  }
+  if (!(segment.parameter_end == parameter_end) || segment.steps.back().parameter != parameter_end ||
+      segment.steps.front().parameter != 0.0) {
+    coverage_complete_ = false;  // fine for a path stopped by an error; not for a safety claim
+  }
+  std::vector<Rational> previous_radius;
+  const StepCertificate* previous = nullptr;
+  for (std::size_t k = 0; k < segment.steps.size(); ++k) {
+    const StepCertificate& step = segment.steps[k];
+    const std::string where = where_segment + " step " + std::to_string(step.step);
+    // Consecutive global step numbers (a removed step is a gap); the first step of a segment
+    // repeats the previous segment's last.
+    const int expected_index = k == 0 ? (previous_step_index_ < 0 ? 0 : previous_step_index_)
+                                      : previous->step + 1;
+    if (step.step != expected_index) fail(where + ": step numbers are not consecutive");
+    // The configuration must be the trajectory's own at this parameter.
+    std::optional<Eigen::VectorXd> expected;
+    if (k == 0) expected = planned.q_start;
+    else if (step.parameter == parameter_end) expected = planned.q_end;
+    else if (!cp) expected = planned.ptp->joints_at(step.parameter);
+    else expected = motion::solve_within_limits(robot_, kinematics_, planned.cp->pose_at(step.parameter), previous->q);
+    if (previous != nullptr && !(step.parameter > previous->parameter)) {
+      fail(where + ": parameters must increase");
+    }
+    ++report_.inequalities_checked;
+    if (!expected || expected->size() != step.q.size() || *expected != step.q) {
+      fail(where + ": the configuration is not the trajectory's at this parameter");
+    }
+    std::vector<Rational> radius = check_step(step, where);
+    if (previous != nullptr) {
+      check_transition(*previous, step, previous_radius, radius,
+                       where_segment + " steps " + std::to_string(previous->step) + "-" +
+                           std::to_string(step.step));
+    }
+    previous_radius = std::move(radius);
+    previous = &step;
+    steps_by_index_[step.step] = &step;
+  }
+  previous_step_index_ = segment.steps.back().step;
+}
+
+void Checker::check_claim() {
+  const std::string& claim = certificate_.claim;
+  const bool safety_claim = claim == "CLEAR" || claim == "WITHIN_TOLERANCE";
+  if (safety_claim && !coverage_complete_) fail("claim " + claim + ", but the steps do not cover the whole path");
+  if (claim == "CLEAR") {
+    if (!all_transitions_certified_) fail("claim CLEAR, but some transition is not certified");
+    if (any_expanded_interference_) fail("claim CLEAR, but the expanded robot interferes");
+    if (any_raw_collision_) fail("claim CLEAR, but the robot collides");
+    if (!certificate_.errors.empty()) fail("claim CLEAR, but the path has errors");
+  } else if (claim == "WITHIN_TOLERANCE") {
+    if (!all_transitions_certified_) fail("claim WITHIN_TOLERANCE, but some transition is not certified");
+    if (any_raw_collision_) fail("claim WITHIN_TOLERANCE, but the robot collides");
+    if (!any_expanded_interference_) fail("claim WITHIN_TOLERANCE, but nothing interferes");
+  } else if (claim == "COLLISION") {
+    // The colliding configuration is re-decided exactly from scratch.
+    const auto found = steps_by_index_.find(certificate_.collision_step);
+    bool proven = false;
+    if (found != steps_by_index_.end()) {
+      kinematics::forward_kinematics(chain_, found->second->q, workspace_);
+      for (const CheckedHull& hull : hulls_) {
+        place_points(workspace_.X_WL[hull.link], hull.raw_L, placed_);
+        for (const auto& obstacle : obstacles_) {
+          ++report_.inequalities_checked;
+          if (geometry::classify_exact(placed_, obstacle) != geometry::Contact::kSeparated) proven = true;
+          if (proven) break;
+        }
+        if (proven) break;
+      }
+    }
+    if (!proven) fail("claim COLLISION, but the robot at the named step touches no obstacle");
+  } else if (claim != "UNDECIDED" && claim != "ERROR") {
+    fail("unknown claim '" + claim + "'");
+  }
+}
+
+CheckReport Checker::run() {
+  report_.claim = certificate_.claim;
+  if (!check_header() || !build_hulls()) return report_;
+  motion::TrajectoryOptions trajectory_options;
+  trajectory_options.timing = certificate_.timing == "synchronized" ? motion::PtpTiming::kSynchronized
+                                                                     : motion::PtpTiming::kIndependent;
+  trajectory_options.cp_speed = certificate_.cp_speed;
+  trajectory_options.table = options_.profile_table;
+  const motion::Trajectory trajectory =
+      motion::Trajectory::plan(robot_, program_, kinematics_, trajectory_options);
+  const bool path_stopped = !certificate_.errors.empty();
+  if (certificate_.segments.size() != trajectory.segments().size() ||
+      !trajectory.errors().empty()) {
+    coverage_complete_ = false;
+  }
+  if (path_stopped != !trajectory.errors().empty() && trajectory.errors().empty() &&
+      certificate_.claim != "ERROR") {
+    fail("the certificate lists path errors the trajectory does not have");
+  }
+  if (certificate_.segments.size() > trajectory.segments().size()) return report_;
+  for (std::size_t s = 0; s < certificate_.segments.size(); ++s) {
+    if (certificate_.segments[s].number != trajectory.segments()[s].number) {
+      fail("segment numbers out of order");
+      break;
+    }
+    check_segment(certificate_.segments[s], trajectory.segments()[s]);
+  }
+  check_claim();
+  report_.accepted = report_.failures.empty();
+  return report_;
+}
+
+}  // namespace
+
+CheckReport check_certificate(const RobotModel& robot, const Environment& environment,
+                              const PathProgram& program,
+                              const motion::KinematicsAccess& kinematics,
+                              const Certificate& certificate, const CheckOptions& options) {
+  Checker checker(robot, environment, program, kinematics, certificate, options);
+  return checker.run();
+}
+
+}  // namespace grpvss::certify

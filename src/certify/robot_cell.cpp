@@ -1,0 +1,82 @@
+#include "grpvss/certify/robot_cell.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "grpvss/geometry/convex_polytope.hpp"
+#include "grpvss/kinematics/fk_error_bound.hpp"
+
+namespace grpvss::certify {
+namespace {
+
+double max_abs_coordinate(const std::vector<Eigen::Vector3d>& points) {
+  double largest = 0.0;
+  for (const auto& p : points) largest = std::max(largest, p.cwiseAbs().maxCoeff());
+  return largest;
+}
+
+}  // namespace
+
+double largest_link_coordinate(const std::vector<LinkHull>& hulls) {
+  double largest = 0.0;
+  for (const LinkHull& hull : hulls) {
+    largest = std::max(largest, max_abs_coordinate(hull.raw_L));
+    largest = std::max(largest, max_abs_coordinate(hull.expanded_L));
+    largest = std::max(largest, hull.expanded_sphere_L.center.cwiseAbs().maxCoeff());
+  }
+  return largest;
+}
+
+RobotCell::RobotCell(const RobotModel& robot, const Environment& environment,
+                     const CellOptions& options)
+    : robot_(&robot),
+      options_(options),
+      chain_(kinematics::make_chain(robot)),
+      radii_(robot) {
+  if (!(options.tolerance > 0.0) || !std::isfinite(options.tolerance)) {
+    throw std::invalid_argument("RobotCell: tolerance must be finite and > 0");
+  }
+  // The offsets are built in the link frame, so the placement error bound must cover their
+  // vertices too. Build with a provisional radius, measure, then rebuild once with the
+  // final radius (the vertices move by far less than the 2x safety factor absorbs).
+  std::vector<geometry::ConvexPolytope> raw_polytopes;
+  for (int link = 0; link < static_cast<int>(robot.links.size()); ++link) {
+    for (int hull = 0; hull < static_cast<int>(robot.links[link].hulls.size()); ++hull) {
+      raw_polytopes.push_back(
+          geometry::ConvexPolytope::from_points(robot.links[link].hulls[hull].points));
+      LinkHull entry;
+      entry.link = link;
+      entry.hull = hull;
+      entry.raw_L = raw_polytopes.back().vertices();
+      hulls_.push_back(std::move(entry));
+    }
+  }
+  // Every vertex of H (+) P lies within |h| + circumradius(P) <= |h|_inf + 2 r per coordinate
+  // for both shapes (cube: r, rhombicuboctahedron: r); 2x covers the retry inflation.
+  double raw_extent = 0.0;
+  for (const LinkHull& hull : hulls_) raw_extent = std::max(raw_extent, max_abs_coordinate(hull.raw_L));
+  const double coordinate_bound = raw_extent + 2.0 * options.tolerance + 1.0;
+  // proof: proofs/fk-rounding.md#fk-rounding (the bound is strict: the lemma's bound is
+  // doubled so that every use below may treat it as a strict inequality).
+  placement_error_ = 2.0 * kinematics::forward_kinematics_error_bound(chain_, coordinate_bound);
+  // proof: proofs/offset-containment.md#rounded-placement
+  expansion_radius_ = options.tolerance + 2.0 * placement_error_;
+  for (std::size_t i = 0; i < hulls_.size(); ++i) {
+    const geometry::ConvexPolytope expanded =
+        geometry::minkowski_offset(raw_polytopes[i], expansion_radius_, options.offset_shape);
+    hulls_[i].expanded_L = expanded.vertices();
+    hulls_[i].raw_sphere_L = geometry::certified_sphere(hulls_[i].raw_L);
+    hulls_[i].expanded_sphere_L = geometry::certified_sphere(hulls_[i].expanded_L);
+  }
+  if (largest_link_coordinate(hulls_) > coordinate_bound) {
+    throw std::logic_error("RobotCell: offset vertices exceed the coordinate bound of the FK error");
+  }
+  for (const HullPoints& obstacle : environment.obstacles) {
+    obstacles_W_.push_back(geometry::ConvexPolytope::from_points(obstacle.points).vertices());
+    obstacle_spheres_W_.push_back(geometry::certified_sphere(obstacles_W_.back()));
+  }
+  obstacle_index_ = geometry::StaticObstacleIndex(obstacles_W_);
+}
+
+}  // namespace grpvss::certify

@@ -1,0 +1,557 @@
+#include "grpvss/certify/verifier.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <utility>
+
+#include <Eigen/SVD>
+
+#include "grpvss/certify/cell_probe.hpp"
+#include "grpvss/certify/robot_cell.hpp"
+#include "grpvss/geometry/directed_rounding.hpp"
+#include "grpvss/geometry/gjk.hpp"
+#include "grpvss/kinematics/forward_kinematics.hpp"
+#include "grpvss/kinematics/jacobian.hpp"
+#include "grpvss/motion/cp_line.hpp"
+
+namespace grpvss::certify {
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+const char* segment_kind_name(motion::SegmentKind kind) {
+  switch (kind) {
+    case motion::SegmentKind::kPtpJoint: return "ptp-joint";
+    case motion::SegmentKind::kPtpWorld: return "ptp-world";
+    case motion::SegmentKind::kCpLine: return "cp-line";
+  }
+  return "?";
+}
+
+// r_k + r_{k+1} rounded down, so that "bound <= allowance" in double implies it exactly.
+double allowance_down(double radius_k, double radius_k1) {
+  namespace r = geometry::rounding;
+  r::UpwardRoundingScope upward;
+  return r::add_down(radius_k, radius_k1);
+}
+
+// One segment's configurations as a function of its parameter s: time for PTP, path length
+// for CP (docs/verification.md#segment-parameter).
+class SegmentPath {
+ public:
+  SegmentPath(const RobotModel& robot, const motion::KinematicsAccess& kinematics,
+              const motion::SegmentTrajectory& segment)
+      : robot_(&robot), kinematics_(&kinematics), segment_(&segment) {}
+
+  bool is_cp() const { return segment_->kind == motion::SegmentKind::kCpLine; }
+  double parameter_end() const { return is_cp() ? segment_->cp->length() : segment_->duration; }
+  double time_at(double s) const {
+    if (!is_cp()) return segment_->start_time + s;
+    const double end = parameter_end();
+    return segment_->start_time + (end > 0.0 ? segment_->duration * (s / end) : 0.0);
+  }
+
+  /// PTP: the profile. CP: IK of the line's pose nearest the previous step's joints; the end
+  /// of the line is the motion stage's own end configuration (the next segment starts there).
+  std::optional<Eigen::VectorXd> q_at(double s, const Eigen::VectorXd& q_previous) const {
+    if (!is_cp()) return segment_->ptp->joints_at(s);
+    if (s <= 0.0) return segment_->q_start;
+    if (s >= parameter_end()) return segment_->q_end;
+    return motion::solve_within_limits(*robot_, *kinematics_, segment_->cp->pose_at(s), q_previous);
+  }
+
+  Eigen::VectorXd joint_velocity_at(double s) const {
+    if (is_cp()) return Eigen::VectorXd::Zero(robot_->joint_count());
+    return segment_->ptp->velocities_at(s);
+  }
+
+  const motion::SegmentTrajectory& segment() const { return *segment_; }
+  const motion::CpLine& line() const { return *segment_->cp; }
+
+ private:
+  const RobotModel* robot_;
+  const motion::KinematicsAccess* kinematics_;
+  const motion::SegmentTrajectory* segment_;
+};
+
+class PathVerifier {
+ public:
+  PathVerifier(const RobotModel& robot, const Environment& environment,
+               const PathProgram& program, const motion::KinematicsAccess& kinematics,
+               const VerifyOptions& options)
+      : robot_(robot),
+        environment_(environment),
+        program_(program),
+        kinematics_(kinematics),
+        options_(options),
+        cell_(robot, environment, make_cell_options(options)),
+        probe_(cell_),
+        workspace_(robot) {}
+
+  VerificationRun run();
+
+ private:
+  static CellOptions make_cell_options(const VerifyOptions& options) {
+    CellOptions cell_options;
+    cell_options.tolerance = options.tolerance;
+    cell_options.offset_shape = options.offset_shape.value_or(
+        options.mode == ResolutionMode::kThesis ? geometry::OffsetShape::kCube
+                                                : geometry::OffsetShape::kRhombicuboctahedron);
+    return cell_options;
+  }
+  bool certified() const { return options_.mode == ResolutionMode::kCertified; }
+
+  void record_step(const ProbeResult& probe, int segment, double parameter, double path_time,
+                   const TransitionRecord* incoming, bool refinement);
+  StepCertificate certificate_step(const ProbeResult& probe, int index, double parameter) const;
+  bool march_segment(const SegmentPath& path, int segment_number);
+  TransitionRecord judge_transition(const ProbeResult& from, const ProbeResult& to,
+                                    bool cut_by_segment_end) const;
+  bool cp_model_holds(const SegmentPath& path, double s0, const Eigen::VectorXd& q0, double s1,
+                      const Eigen::VectorXd& q1);
+  bool near_singularity(const Eigen::VectorXd& q);
+  double thesis_next_parameter(const SegmentPath& path, double s, const Eigen::VectorXd& q,
+                               double previous_step);
+  std::vector<double> thesis_allowed_displacements(const Eigen::VectorXd& q);
+  void add_error(int code, int segment, std::string message);
+  void finish();
+
+  const RobotModel& robot_;
+  const Environment& environment_;
+  const PathProgram& program_;
+  const motion::KinematicsAccess& kinematics_;
+  VerifyOptions options_;
+  RobotCell cell_;
+  CellProbe probe_;
+  kinematics::Workspace workspace_;
+  ProbeResult current_;
+  ProbeResult trial_;
+  long long probes_ = 0;
+  bool any_uncertified_ = false;
+  VerificationRun run_;
+  SegmentCertificate* segment_certificate_ = nullptr;
+};
+
+void PathVerifier::add_error(int code, int segment, std::string message) {
+  PathError error;
+  error.code = code;
+  error.segment = segment;
+  error.step = run_.result.steps.empty() ? 0 : run_.result.steps.back().index;
+  error.message = std::move(message);
+  run_.result.errors.push_back(error);
+}
+
+StepCertificate PathVerifier::certificate_step(const ProbeResult& probe, int index,
+                                               double parameter) const {
+  StepCertificate step;
+  step.step = index;
+  step.parameter = parameter;
+  step.q = probe.q;
+  for (std::size_t i = 0; i < cell_.hulls().size(); ++i) {
+    HullRecord hull;
+    hull.link = cell_.hulls()[i].link;
+    hull.hull = cell_.hulls()[i].hull;
+    hull.radius = probe.hulls[i].radius;
+    hull.broadphase_margin = probe.hulls[i].broadphase_margin;
+    step.hulls.push_back(std::move(hull));
+  }
+  for (const PairEvidence& evidence : probe.evidence) {
+    step.hulls[evidence.hull_index].evidence.push_back({evidence.obstacle, evidence.expanded,
+                                                        evidence.separated, evidence.witness,
+                                                        evidence.lower_bound});
+  }
+  return step;
+}
+
+void PathVerifier::record_step(const ProbeResult& probe, int segment, double parameter,
+                               double path_time, const TransitionRecord* incoming,
+                               bool refinement) {
+  StepRecord step;
+  step.index = static_cast<int>(run_.result.steps.size());
+  step.segment = segment;
+  step.path_time = path_time;
+  step.segment_parameter = parameter;
+  step.q = probe.q;
+  step.end_effector_W = kinematics::end_effector_pose(cell_.chain(), probe.q).translation();
+  step.links.assign(robot_.links.size(), LinkStepRecord{});
+  for (int link = 0; link < static_cast<int>(robot_.links.size()); ++link) {
+    step.links[link].clearance = probe.link_radius(cell_, link);
+  }
+  if (incoming != nullptr) {
+    // Per link: the hull whose bound uses the largest share of its allowance governs.
+    std::vector<double> worst_share(robot_.links.size(), -1.0);
+    for (std::size_t i = 0; i < cell_.hulls().size(); ++i) {
+      const int link = cell_.hulls()[i].link;
+      const double bound = incoming->hull_motion_bounds[i];
+      const double allowance = incoming->hull_allowances[i];
+      const double share = allowance > 0.0 ? bound / allowance : kInfinity;
+      if (share > worst_share[link]) {
+        worst_share[link] = share;
+        step.links[link].motion_bound = bound;
+        step.links[link].allowance = allowance;
+        step.links[link].governing = incoming->governing[i];
+      }
+    }
+  }
+  step.interference_points = probe.interference_points;
+  step.expanded_interferes = probe.any_expanded_interference;
+  step.unexpanded_collides = probe.any_collision;
+  step.refinement = refinement;
+  if (probe.any_collision && !run_.result.collision_step) run_.result.collision_step = step.index;
+  run_.result.steps.push_back(std::move(step));
+
+  if (segment_certificate_ != nullptr) {
+    if (incoming != nullptr && !segment_certificate_->steps.empty()) {
+      segment_certificate_->steps.back().to_next = *incoming;
+    }
+    segment_certificate_->steps.push_back(
+        certificate_step(probe, run_.result.steps.back().index, parameter));
+  }
+}
+
+// proof: proofs/two-ball-cover.md#corollary-step, proofs/motion-bound.md#lemma-motion-bound
+TransitionRecord PathVerifier::judge_transition(const ProbeResult& from, const ProbeResult& to,
+                                                bool cut_by_segment_end) const {
+  TransitionRecord record;
+  record.certified = true;
+  const Eigen::VectorXd dq = to.q - from.q;
+  const double two_delta = 2.0 * cell_.tolerance();
+  for (std::size_t i = 0; i < cell_.hulls().size(); ++i) {
+    const LinkHull& hull = cell_.hulls()[i];
+    const double bound = cell_.radii().hull_motion_bound(hull.link, hull.hull, dq);
+    const double allowance = allowance_down(from.hulls[i].radius, to.hulls[i].radius);
+    GoverningTerm governing = GoverningTerm::kClearance;
+    if (from.hulls[i].expanded_interferes || to.hulls[i].expanded_interferes) {
+      governing = GoverningTerm::kRawClearance;
+    } else if (allowance <= two_delta * (1.0 + 1e-9)) {
+      governing = GoverningTerm::kTolerance;
+    } else if (cut_by_segment_end) {
+      governing = GoverningTerm::kSegmentEnd;
+    }
+    if (!(bound <= allowance)) {
+      record.certified = false;
+      governing = GoverningTerm::kUncertified;
+    }
+    record.hull_motion_bounds.push_back(bound);
+    record.hull_allowances.push_back(allowance);
+    record.governing.push_back(governing);
+  }
+  return record;
+}
+
+bool PathVerifier::near_singularity(const Eigen::VectorXd& q) {
+  kinematics::forward_kinematics(cell_.chain(), q, workspace_);
+  const Eigen::MatrixXd jacobian = kinematics::point_jacobian(
+      cell_.chain(), workspace_, robot_.joint_count(), Eigen::Vector3d::Zero());
+  if (jacobian.cols() < 3) return false;
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(jacobian);
+  return svd.singularValues().minCoeff() < options_.cp_singular_value_threshold;
+}
+
+// The CP model (proofs/cp-joint-path.md#model): the joints move linearly between the two
+// samples; the end effector of that motion must stay near the commanded line. A step that
+// fails is subdivided by the caller; a jump that survives subdivision is error 7.
+bool PathVerifier::cp_model_holds(const SegmentPath& path, double s0, const Eigen::VectorXd& q0,
+                                  double s1, const Eigen::VectorXd& q1) {
+  const double limit = options_.cp_deviation_fraction * options_.tolerance;
+  for (const double fraction : {0.25, 0.5, 0.75}) {
+    const Eigen::VectorXd q_mid = q0 + fraction * (q1 - q0);
+    const Eigen::Vector3d p_joint_linear =
+        kinematics::end_effector_pose(cell_.chain(), q_mid).translation();
+    const Eigen::Vector3d p_line = path.line().pose_at(s0 + fraction * (s1 - s0)).translation();
+    if ((p_joint_linear - p_line).norm() > limit) return false;
+  }
+  return true;
+}
+
+std::vector<double> PathVerifier::thesis_allowed_displacements(const Eigen::VectorXd& q) {
+  // Eq. 3-3: delta_l_i = max{min[2D/cos(theta/2), 2D + L], Dmin_i} at the origin of frame i.
+  const double delta = options_.tolerance;
+  const double base = std::min(2.0 * delta / std::cos(environment_.smallest_angle / 2.0),
+                               2.0 * delta + environment_.smallest_thickness);
+  kinematics::forward_kinematics(cell_.chain(), q, workspace_);
+  kinematics::place_hull_points(robot_, workspace_);
+  std::vector<double> allowed(robot_.joint_count() + 1, base);
+  for (int link = 1; link <= robot_.joint_count(); ++link) {
+    double nearest = kInfinity;
+    for (const auto& hull_W : workspace_.hull_points_W[link]) {
+      for (const auto& obstacle_W : cell_.obstacles_W()) {
+        nearest = std::min(nearest, geometry::gjk(hull_W, obstacle_W).distance);
+      }
+    }
+    if (robot_.links[link].hulls.empty() || cell_.obstacles_W().empty()) nearest = 0.0;
+    allowed[link] = std::max(base, nearest);
+  }
+  return allowed;
+}
+
+// Thesis Eq. 4-13..4-16 (PTP: delta_t_i <= delta_l_i / v_i) and Figure 16 (CP: the ratio
+// iteration on the end effector's increment). Link-frame origins only: see
+// proofs/thesis-rule.md for what this does and does not guarantee.
+double PathVerifier::thesis_next_parameter(const SegmentPath& path, double s,
+                                           const Eigen::VectorXd& q, double previous_step) {
+  const double end = path.parameter_end();
+  const std::vector<double> allowed = thesis_allowed_displacements(q);
+  const int joints = robot_.joint_count();
+  if (!path.is_cp()) {
+    double step = previous_step > 0.0 ? previous_step : end / 16.0;
+    for (int iteration = 0; iteration < 3; ++iteration) {
+      const Eigen::VectorXd speed_now = path.joint_velocity_at(s).cwiseAbs();
+      const Eigen::VectorXd speed_then = path.joint_velocity_at(std::min(end, s + step)).cwiseAbs();
+      const Eigen::VectorXd joint_speed = speed_now.cwiseMax(speed_then);
+      kinematics::forward_kinematics(cell_.chain(), q, workspace_);
+      double candidate = end - s;
+      for (int link = 1; link <= joints; ++link) {
+        const Eigen::Vector3d velocity =
+            kinematics::point_jacobian(cell_.chain(), workspace_, link, Eigen::Vector3d::Zero()) *
+            joint_speed;
+        const double speed = velocity.norm();
+        if (speed > 0.0) candidate = std::min(candidate, allowed[link] / speed);
+      }
+      step = candidate;
+    }
+    return std::min(end, s + std::max(step, end * options_.min_step_fraction));
+  }
+  // CP: trial increment of the end effector, scaled by the smallest ratio until every
+  // origin moves at most its allowance (Figure 16).
+  double increment = *std::min_element(allowed.begin() + 1, allowed.end());
+  kinematics::forward_kinematics(cell_.chain(), q, workspace_);
+  std::vector<Eigen::Vector3d> origins_now(joints + 1);
+  for (int link = 1; link <= joints; ++link) origins_now[link] = workspace_.X_WL[link].translation();
+  for (int iteration = 0; iteration < 60; ++iteration) {
+    const double s1 = std::min(end, s + increment);
+    const std::optional<Eigen::VectorXd> q1 = path.q_at(s1, q);
+    if (!q1) return s1;  // the caller reports the unreachable point (error 5)
+    kinematics::forward_kinematics(cell_.chain(), *q1, workspace_);
+    double ratio = kInfinity;
+    for (int link = 1; link <= joints; ++link) {
+      const double moved = (workspace_.X_WL[link].translation() - origins_now[link]).norm();
+      if (moved > 0.0) ratio = std::min(ratio, allowed[link] / moved);
+    }
+    if (ratio >= 1.0) return s1;
+    increment = (s1 - s) * ratio * 0.999;
+  }
+  return std::min(end, s + increment);
+}
+
+// Returns false when the path must stop (an error was recorded).
+bool PathVerifier::march_segment(const SegmentPath& path, int segment_number) {
+  const double end = path.parameter_end();
+  const double min_step = std::max(end * options_.min_step_fraction, 1e-300);
+  double s = 0.0;
+  double step = end;
+  bool refinement_region = false;
+  while (s < end) {
+    if (probes_ >= options_.max_probes) {
+      add_error(kErrorProbeLimit, segment_number,
+                "THE CONFIGURATION BUDGET WAS EXHAUSTED IN MOTION SEGMENT " +
+                    std::to_string(segment_number));
+      return false;
+    }
+    double s1 = 0.0;
+    if (certified()) {
+      s1 = std::min(end, s + step);
+    } else {
+      s1 = thesis_next_parameter(path, s, current_.q, step);
+    }
+    const std::optional<Eigen::VectorXd> q1 = path.q_at(s1, current_.q);
+    if (!q1) {
+      add_error(5, segment_number,
+                motion::thesis_error_text(5, segment_number));
+      return false;
+    }
+    if (path.is_cp() && certified()) {
+      if (!cp_model_holds(path, s, current_.q, s1, *q1)) {
+        if (s1 - s > min_step) {
+          step = (s1 - s) / 2.0;
+          continue;
+        }
+        add_error(kErrorCpJointJump, segment_number,
+                  "THE JOINTS JUMP (IK BRANCH CHANGE) BETWEEN TWO CLOSE POINTS OF THE CP LINE IN "
+                  "MOTION SEGMENT " + std::to_string(segment_number));
+        return false;
+      }
+      if (near_singularity(*q1)) {
+        add_error(kErrorCpSingularity, segment_number,
+                  "THE CP LINE PASSES A SINGULAR CONFIGURATION IN MOTION SEGMENT " +
+                      std::to_string(segment_number));
+        return false;
+      }
+    }
+    ++probes_;
+    probe_.probe(*q1, /*with_points=*/true, trial_);
+    const bool cut = s1 >= end;
+    TransitionRecord transition = judge_transition(current_, trial_, cut);
+    if (!certified()) {
+      std::fill(transition.governing.begin(), transition.governing.end(),
+                GoverningTerm::kThesisRule);
+      transition.certified = false;
+    } else if (!transition.certified) {
+      double ratio = kInfinity;
+      for (std::size_t i = 0; i < transition.hull_motion_bounds.size(); ++i) {
+        if (transition.hull_motion_bounds[i] > 0.0) {
+          ratio = std::min(ratio, transition.hull_allowances[i] / transition.hull_motion_bounds[i]);
+        }
+      }
+      const bool collision_at_an_end = current_.any_collision || trial_.any_collision;
+      // With a collision at a step end there is nothing to certify; move on at the thesis's
+      // basic resolution (every point at most 2D) so the report still covers the motion.
+      const double two_delta = 2.0 * options_.tolerance;
+      bool basic_resolution_met = true;
+      for (double bound : transition.hull_motion_bounds) basic_resolution_met &= bound <= two_delta;
+      const bool accept_uncertified =
+          (collision_at_an_end && basic_resolution_met) || (s1 - s) <= min_step;
+      if (!accept_uncertified) {
+        const double factor = std::clamp(0.9 * ratio, 0.05, 0.9);
+        step = std::max(min_step, (s1 - s) * (collision_at_an_end ? 0.5 : factor));
+        continue;
+      }
+      if (!collision_at_an_end) any_uncertified_ = true;
+    }
+    // Accepted: the next proposal grows with the slack this step left.
+    if (certified()) {
+      double slack = kInfinity;
+      for (std::size_t i = 0; i < transition.hull_motion_bounds.size(); ++i) {
+        if (transition.hull_motion_bounds[i] > 0.0) {
+          slack = std::min(slack, transition.hull_allowances[i] / transition.hull_motion_bounds[i]);
+        }
+      }
+      step = (s1 - s) * std::clamp(0.9 * slack, 1.0, 4.0);
+    } else {
+      step = s1 - s;
+    }
+    refinement_region = trial_.any_expanded_interference || current_.any_expanded_interference;
+    record_step(trial_, segment_number, s1, path.time_at(s1), &transition,
+                certified() && refinement_region);
+    std::swap(current_, trial_);
+    s = s1;
+  }
+  return true;
+}
+
+void PathVerifier::finish() {
+  VerificationResult& result = run_.result;
+  // Per-link minimum clearance and where it occurs.
+  for (int link = 0; link < static_cast<int>(robot_.links.size()); ++link) {
+    LinkClearanceSummary summary;
+    summary.link = link;
+    summary.min_clearance = kInfinity;
+    for (const StepRecord& step : result.steps) {
+      if (step.links[link].clearance < summary.min_clearance) {
+        summary.min_clearance = step.links[link].clearance;
+        summary.step = step.index;
+      }
+    }
+    result.link_clearances.push_back(summary);
+  }
+  bool any_expanded = false;
+  for (const StepRecord& step : result.steps) any_expanded |= step.expanded_interferes;
+  if (result.collision_step) {
+    result.verdict = Verdict::kCollision;
+  } else if (!result.errors.empty()) {
+    result.verdict = Verdict::kError;
+  } else if (any_uncertified_) {
+    result.verdict = Verdict::kUndecided;
+  } else if (any_expanded) {
+    result.verdict = Verdict::kWithinTolerance;
+  } else {
+    result.verdict = Verdict::kClear;
+  }
+  for (const SegmentRecord& segment : result.segments) {
+    if (segment.simulated) result.total_cycle_time += segment.cycle_time;
+  }
+  if (certified()) {
+    Certificate& certificate = run_.certificate;
+    certificate.claim = to_string(result.verdict);
+    certificate.collision_step = result.collision_step.value_or(0);
+    certificate.errors = result.errors;
+  }
+}
+
+VerificationRun PathVerifier::run() {
+  VerificationResult& result = run_.result;
+  result.tolerance = options_.tolerance;
+  result.mode = options_.mode;
+  result.path_file_label = options_.path_label;
+  if (certified()) {
+    Certificate& certificate = run_.certificate;
+    certificate.mode = "certified";
+    certificate.tolerance = options_.tolerance;
+    certificate.offset_shape = cell_.offset_shape() == geometry::OffsetShape::kCube
+                                   ? "cube"
+                                   : "rhombicuboctahedron";
+    certificate.timing =
+        options_.trajectory.timing == motion::PtpTiming::kIndependent ? "independent"
+                                                                      : "synchronized";
+    certificate.cp_speed = options_.trajectory.cp_speed;
+    certificate.cp_deviation_fraction = options_.cp_deviation_fraction;
+    certificate.placement_error = cell_.placement_error();
+    certificate.expansion_radius = cell_.expansion_radius();
+  }
+  const motion::Trajectory trajectory =
+      motion::Trajectory::plan(robot_, program_, kinematics_, options_.trajectory);
+
+  // Step 0: the start configuration (home), evaluated like every other step; it is never
+  // printed in the thesis file, whose steps start at 1.
+  probe_.probe(trajectory.home(), /*with_points=*/true, current_);
+  ++probes_;
+  record_step(current_, 1, 0.0, 0.0, nullptr, false);
+
+  bool keep_going = true;
+  for (const motion::SegmentTrajectory& segment : trajectory.segments()) {
+    if (!keep_going) break;
+    SegmentRecord record;
+    record.number = segment.number;
+    record.input = program_.segments[segment.number - 1];
+    record.start_q = segment.q_start;
+    record.end_q = segment.q_end;
+    record.cycle_time = segment.duration;
+    const SegmentPath path(robot_, kinematics_, segment);
+    if (certified()) {
+      SegmentCertificate segment_certificate;
+      segment_certificate.number = segment.number;
+      segment_certificate.kind = segment_kind_name(segment.kind);
+      segment_certificate.parameter_end = path.parameter_end();
+      // Every segment's certificate starts with its start configuration (the previous end).
+      segment_certificate.steps.push_back(
+          certificate_step(current_, result.steps.back().index, 0.0));
+      run_.certificate.segments.push_back(std::move(segment_certificate));
+      segment_certificate_ = &run_.certificate.segments.back();
+    }
+    const int first_step = static_cast<int>(result.steps.size());
+    keep_going = march_segment(path, segment.number);
+    record.last_step = static_cast<int>(result.steps.size()) - 1;
+    record.first_step = record.last_step >= first_step ? first_step : 0;
+    if (record.first_step == 0) record.last_step = 0;
+    record.simulated = keep_going;
+    result.segments.push_back(std::move(record));
+    segment_certificate_ = nullptr;
+  }
+  // Segments the motion stage refused (thesis errors 3-6) stop the path there.
+  for (const motion::ThesisError& error : trajectory.errors()) {
+    if (keep_going) add_error(error.code, error.segment, error.message);
+    if (error.segment > 0 && error.segment <= static_cast<int>(program_.segments.size())) {
+      SegmentRecord refused;
+      refused.number = error.segment;
+      refused.input = program_.segments[error.segment - 1];
+      refused.start_q = result.steps.back().q;
+      refused.simulated = false;
+      result.segments.push_back(std::move(refused));
+    }
+  }
+  finish();
+  return std::move(run_);
+}
+
+}  // namespace
+
+VerificationRun verify(const RobotModel& robot, const Environment& environment,
+                       const PathProgram& program, const motion::KinematicsAccess& kinematics,
+                       const VerifyOptions& options) {
+  PathVerifier verifier(robot, environment, program, kinematics, options);
+  return verifier.run();
+}
+
+}  // namespace grpvss::certify
