@@ -6,8 +6,6 @@
 #include <string>
 #include <vector>
 
-#include <Eigen/Core>
-
 #include "grpvss/io/number_reader.hpp"
 #include "grpvss/model/hull_points.hpp"
 
@@ -24,14 +22,9 @@ struct PointBudget {
 
 /// \brief Reads `count` hulls. Each hull is 16 lines `x, y, z`, or, with the extension, a
 /// line `HULL k` (4 <= k <= 10^6) followed by k lines `x, y, z`. Every hull must span 3-D
-/// (exact test, see hull_spans_3d()); otherwise the error names the hull's first line.
+/// (exact test, see affine_dimension.hpp); otherwise the error names the hull's first line.
 /// \param owner names the list for messages, e.g. "link 2" or "the environment".
 std::vector<HullPoints> read_hull_list(NumberReader& reader, long long count,
                                        const std::string& owner, PointBudget& budget);
-
-/// \brief True iff some four of the points are affinely independent, i.e. their convex hull
-/// has positive volume. Decided EXACTLY: a floating-point orient3d with Shewchuk's static
-/// error bound proposes, boost::multiprecision rationals decide every uncertain case.
-bool hull_spans_3d(const std::vector<Eigen::Vector3d>& points);
 
 }  // namespace grpvss::io

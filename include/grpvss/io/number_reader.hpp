@@ -70,16 +70,19 @@ class NumberReader {
     std::vector<std::string_view> fields;
   };
   /// Finds the next content line without consuming it; false at end of text.
-  bool peek(RawLine& out);
+  /// `what` names the expected content for the messages of malformed lines.
+  bool peek(RawLine& out, std::string_view what);
   /// Consumes the line last returned by peek().
   void consume();
-  RawLine next_or_fail(std::string_view what);
+  /// peek() + consume(), failing with "found end of file" when the text is exhausted.
+  RawLine next_or_fail(const std::string& expected);
 
   std::string_view text_;
   std::string file_name_;
-  std::size_t position_ = 0;       ///< start of the first unconsumed line
-  std::size_t peek_end_ = 0;       ///< start of the line after the peeked one
-  int peek_line_counter_ = 0;      ///< line number after the peeked one
+  std::size_t position_ = 0;      ///< offset of the first unconsumed line
+  int position_line_ = 1;         ///< 1-based number of the line at position_
+  std::size_t peek_end_ = 0;      ///< offset after the peeked line
+  int peek_end_line_ = 1;         ///< number of the line after the peeked line
   int line_ = 0;
   int end_line_ = 1;
 };
