@@ -157,9 +157,10 @@ void NumberReader::consume() {
   line_ = peek_end_line_ - 1;
 }
 
-NumberReader::RawLine NumberReader::next_or_fail(const std::string& expected) {
+NumberReader::RawLine NumberReader::next_or_fail(const std::string& expected,
+                                                std::string_view what) {
   RawLine raw;
-  if (!peek(raw, expected)) fail(end_line_, expected, "end of file");
+  if (!peek(raw, what)) fail(end_line_, expected, "end of file");
   consume();
   return raw;
 }
@@ -170,7 +171,7 @@ bool NumberReader::at_end() {
 }
 
 NumberLine NumberReader::read_numbers(std::string_view what) {
-  const RawLine raw = next_or_fail("numbers for " + std::string(what));
+  const RawLine raw = next_or_fail("numbers for " + std::string(what), what);
   NumberLine result;
   result.line = raw.line;
   result.values.reserve(raw.fields.size());
@@ -182,7 +183,7 @@ NumberLine NumberReader::read_numbers(std::string_view what) {
 
 NumberLine NumberReader::read_numbers(std::size_t count, std::string_view what) {
   const std::string expected = plural(count, "number") + " for " + std::string(what);
-  const RawLine raw = next_or_fail(expected);
+  const RawLine raw = next_or_fail(expected, what);
   if (raw.fields.size() != count) fail(raw.line, expected, plural(raw.fields.size(), "number"));
   NumberLine result;
   result.line = raw.line;
@@ -200,7 +201,7 @@ double NumberReader::read_number(std::string_view what) {
 long long NumberReader::read_integer(std::string_view what, long long minimum,
                                      long long maximum) {
   const std::string expected = "an integer for " + std::string(what);
-  const RawLine raw = next_or_fail(expected);
+  const RawLine raw = next_or_fail(expected, what);
   if (raw.fields.size() != 1) {
     fail(raw.line, "a single integer for " + std::string(what),
          plural(raw.fields.size(), "field"));

@@ -75,7 +75,7 @@ class NumberReader {
   /// Consumes the line last returned by peek().
   void consume();
   /// peek() + consume(), failing with "found end of file" when the text is exhausted.
-  RawLine next_or_fail(const std::string& expected);
+  RawLine next_or_fail(const std::string& expected, std::string_view what);
 
   std::string_view text_;
   std::string file_name_;
