@@ -264,3 +264,44 @@ TEST(RobotFile, AcceptsAPrismaticJointWithDegreesForItsAngles) {
 
 }  // namespace
 }  // namespace grpvss::io
+
+namespace grpvss::io {
+namespace {
+
+TEST(RobotFile, ReadsCrLfLineEndingsAndCommentsToTheSameModel) {
+  const std::string original = grpvss::testing::source_file_text("data/ibm7545/robot.txt");
+  std::string converted = "# IBM 7545, thesis Appendix A.1.1.1\r\n";
+  for (const char c : original) {
+    if (c == '\n') converted += "\r";
+    converted += c;
+  }
+  const RobotModel expected = parse_robot_file(original, "robot.txt");
+  const RobotModel actual = parse_robot_file(converted, "robot.txt");
+  ASSERT_EQ(actual.links.size(), expected.links.size());
+  for (std::size_t i = 0; i < expected.joints.size(); ++i) {
+    EXPECT_EQ(actual.joints[i].dh.d, expected.joints[i].dh.d);
+    EXPECT_EQ(actual.joints[i].maximum, expected.joints[i].maximum);
+  }
+  for (std::size_t i = 0; i < expected.links.size(); ++i) {
+    ASSERT_EQ(actual.links[i].hulls.size(), expected.links[i].hulls.size());
+    for (std::size_t h = 0; h < expected.links[i].hulls.size(); ++h) {
+      EXPECT_EQ(actual.links[i].hulls[h].points, expected.links[i].hulls[h].points);
+      // One comment line was added at the top.
+      EXPECT_EQ(actual.links[i].hulls[h].source_line, expected.links[i].hulls[h].source_line + 1);
+    }
+  }
+}
+
+TEST(RobotFile, TreatsHull16AsTheThesisDefault) {
+  const std::string original = grpvss::testing::source_file_text("data/ibm7545/robot.txt");
+  // Line 178 is NOBAR_4 = 1; declare its hull explicitly with the extension.
+  const std::string extended =
+      grpvss::testing::with_line_replaced(original, 178, "1\nHULL 16");
+  const RobotModel expected = parse_robot_file(original, "robot.txt");
+  const RobotModel actual = parse_robot_file(extended, "robot.txt");
+  EXPECT_EQ(actual.links[4].hulls[0].points, expected.links[4].hulls[0].points);
+  EXPECT_EQ(actual.links[4].hulls[0].source_line, 180);
+}
+
+}  // namespace
+}  // namespace grpvss::io
