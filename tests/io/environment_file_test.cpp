@@ -141,6 +141,32 @@ TEST(EnvironmentFile, RejectsAHullWhosePointsAreCoplanar) {
                      "points not in one plane), found all 16 points coplanar");
 }
 
+TEST(EnvironmentFile, RejectsAMalformedHullLine) {
+  expect_input_error([] { parse("90\n5\n1\nHULL\n" + tetrahedron_lines(4)); }, "environment.txt",
+                     4,
+                     "environment.txt:4: expected 'HULL k' with one integer k for the number of "
+                     "points of hull 1 of the environment, found 1 field");
+  expect_input_error([] { parse("90\n5\n1\nHULL 4.0\n" + tetrahedron_lines(4)); },
+                     "environment.txt", 4,
+                     "environment.txt:4: expected an integer for the number of points of hull 1 "
+                     "of the environment, found '4.0'");
+}
+
+TEST(EnvironmentFile, ParsesTheExtensionExampleOfTheDocumentation) {
+  // docs/input-formats.md, "Extension: hulls with any number of points".
+  const std::string text =
+      "60.\n2.\n2\nHULL 4\n0,0,0\n1,0,0\n0,1,0\n0,0,1\n"
+      "HULL 5\n0,0,0\n2,0,0\n2,2,0\n0,2,0\n1,1,3\n";
+  const Environment environment = parse_environment_file(text, "doc.txt");
+  EXPECT_EQ(environment.smallest_angle, 60.0 * kRadiansPerDegree);
+  EXPECT_EQ(environment.smallest_thickness, 2.0);
+  ASSERT_EQ(environment.obstacles.size(), 2u);
+  EXPECT_EQ(environment.obstacles[0].points.size(), 4u);
+  EXPECT_EQ(environment.obstacles[1].points.size(), 5u);
+  EXPECT_EQ(environment.obstacles[1].points[4], Eigen::Vector3d(1, 1, 3));
+  EXPECT_EQ(environment.obstacles[1].source_line, 10);
+}
+
 TEST(EnvironmentFile, RejectsTrailingGarbage) {
   expect_input_error([] { parse(sample() + "1,2,3\n"); }, "environment.txt", 36,
                      "environment.txt:36: expected end of file after the last obstacle hull, "
