@@ -13,12 +13,23 @@ constexpr std::size_t kMaxQuotedField = 40;
 
 bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
 
-/// The field as it appears in messages: quoted, cut to a readable length.
+/// The field as it appears in messages: quoted, cut to a readable length, control and
+/// non-ASCII bytes written as \xNN so a message is always printable.
 std::string quoted(std::string_view field) {
-  if (field.size() > kMaxQuotedField) {
-    return "'" + std::string(field.substr(0, kMaxQuotedField)) + "...'";
+  const bool cut = field.size() > kMaxQuotedField;
+  std::string text = "'";
+  for (const char c : field.substr(0, kMaxQuotedField)) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte < 0x20 || byte >= 0x7f) {
+      static constexpr char kHex[] = "0123456789abcdef";
+      text += "\\x";
+      text += kHex[byte >> 4];
+      text += kHex[byte & 0xf];
+    } else {
+      text += c;
+    }
   }
-  return "'" + std::string(field) + "'";
+  return text + (cut ? "...'" : "'");
 }
 
 /// from_chars rejects a leading '+'; users coming from FORTRAN write it.

@@ -88,6 +88,12 @@ TEST(NumberReader, QuotesAtMostFortyCharactersOfAField) {
                          "...'");
 }
 
+TEST(NumberReader, EscapesUnprintableBytesInMessages) {
+  expect_input_error(
+      [] { NumberReader(std::string("1\0x\x7f\xc3\xa9", 6), "t.txt").read_number("a value"); },
+      "t.txt", 1, "t.txt:1: expected a number for a value, found '1\\x00x\\x7f\\xc3\\xa9'");
+}
+
 TEST(NumberReader, RejectsAnOverLongLine) {
   std::string line = "1";
   line.append(4096, ' ');  // 4097 characters
