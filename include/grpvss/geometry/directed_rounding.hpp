@@ -1,0 +1,98 @@
+#pragma once
+/// \file
+/// \brief Directed (upward) rounding scope and the few rounded operations the certified fast
+/// path needs: sums, products, quotients and square roots rounded up or down.
+///
+/// All operations assume an active UpwardRoundingScope. Rounding down is obtained from
+/// rounding up by negation, \f$\mathrm{RD}(x \circ y) = -\mathrm{RU}(-(x \circ y))\f$, which
+/// IEEE 754 makes exact because negation never rounds. The only exception is the square root:
+/// \f$\mathrm{pred}(\mathrm{RU}(\sqrt{x})) < \sqrt{x}\f$ because RU returns the smallest double
+/// not below the true value.
+///
+/// Why the asm barriers: GCC may move or constant-fold floating-point arithmetic across a
+/// call to std::fesetround even with -frounding-math (GCC bug 34678). Every operand and every
+/// result passes through an `asm volatile` that the compiler must keep in program order
+/// with the scope's own barriers, so each operation is evaluated while upward rounding is in
+/// force. proof: proofs/fast-path.md#directed-rounding
+
+#include <cfenv>
+#include <cmath>
+#include <limits>
+
+namespace grpvss::geometry::rounding {
+
+/// \brief Forces \p x to be materialised here, in program order with other barriers.
+inline double barrier(double x) {
+#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__)) && defined(__SSE2__)
+  asm volatile("" : "+x"(x));
+#elif defined(__GNUC__)
+  asm volatile("" : "+g"(x));
+#else
+  volatile double v = x;
+  x = v;
+#endif
+  return x;
+}
+
+/// \brief RAII: switches the FPU to round-toward-+infinity, restores the previous mode on exit.
+class UpwardRoundingScope {
+ public:
+  UpwardRoundingScope() : previous_(std::fegetround()) {
+    std::fesetround(FE_UPWARD);
+    asm volatile("" ::: "memory");
+  }
+  ~UpwardRoundingScope() {
+    asm volatile("" ::: "memory");
+    std::fesetround(previous_);
+  }
+  UpwardRoundingScope(const UpwardRoundingScope&) = delete;
+  UpwardRoundingScope& operator=(const UpwardRoundingScope&) = delete;
+
+ private:
+  int previous_;
+};
+
+// --- upward-rounded primitives (require an active UpwardRoundingScope) ---
+inline double add_up(double a, double b) { return barrier(barrier(a) + barrier(b)); }
+inline double sub_up(double a, double b) { return barrier(barrier(a) - barrier(b)); }
+inline double mul_up(double a, double b) { return barrier(barrier(a) * barrier(b)); }
+inline double div_up(double a, double b) { return barrier(barrier(a) / barrier(b)); }
+inline double sqrt_up(double a) { return barrier(std::sqrt(barrier(a))); }
+
+// --- downward-rounded primitives via negation ---
+inline double add_down(double a, double b) { return -add_up(-a, -b); }
+inline double sub_down(double a, double b) { return -sub_up(b, a); }
+inline double mul_down(double a, double b) { return -mul_up(-a, b); }
+inline double div_down(double a, double b) { return -div_up(-a, b); }
+/// \brief A double not above \f$\sqrt{a}\f$ (\p a >= 0).
+inline double sqrt_down(double a) {
+  if (!(a > 0.0)) return 0.0;
+  return std::nextafter(sqrt_up(a), 0.0);
+}
+
+/// \brief Upper bound of \f$\lvert x\rvert^2\f$ given \f$x \in [lo, hi]\f$.
+inline double square_up_of_range(double lo, double hi) {
+  const double m = std::fmax(std::fabs(lo), std::fabs(hi));
+  return mul_up(m, m);
+}
+/// \brief Lower bound of \f$\lvert x\rvert^2\f$ given \f$x \in [lo, hi]\f$ (0 if the range
+/// contains 0).
+inline double square_down_of_range(double lo, double hi) {
+  if (lo <= 0.0 && hi >= 0.0) return 0.0;
+  const double m = std::fmin(std::fabs(lo), std::fabs(hi));
+  return mul_down(m, m);
+}
+
+/// \brief Upper bound of the dot product \f$n \cdot p\f$ (upward rounding throughout).
+///
+/// Monotonicity of RU makes every partial result an upper bound of the exact partial result.
+inline double dot_up(const double* n, const double* p) {
+  return add_up(add_up(mul_up(n[0], p[0]), mul_up(n[1], p[1])), mul_up(n[2], p[2]));
+}
+/// \brief Lower bound of the dot product \f$n \cdot p\f$.
+inline double dot_down(const double* n, const double* p) {
+  const double m[3] = {-n[0], -n[1], -n[2]};
+  return -dot_up(m, p);
+}
+
+}  // namespace grpvss::geometry::rounding

@@ -1,0 +1,49 @@
+#pragma once
+/// \file
+/// \brief GJK (Gilbert, Johnson, Keerthi 1988) in double precision on two point sets.
+///
+/// This is the "floating point proposes" half of the fast path: its answers are NEVER used as
+/// decisions. certified_query.hpp turns them into proofs (or falls back to exact arithmetic).
+/// The support function runs over the raw points, so no hull topology is needed:
+/// \f$\mathrm{conv}(A) - \mathrm{conv}(B) = \mathrm{conv}\{a - b\}\f$.
+
+#include <array>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace grpvss::geometry {
+
+/// \brief What double-precision GJK believes about two point sets.
+enum class GjkStatus {
+  kSeparated,    ///< converged to a positive distance; `closest_vector` points from B to A
+  kOverlapping,  ///< a tetrahedron of Minkowski-difference points encloses the origin
+  kNearContact,  ///< distance below GJK's resolution: neither claim is worth certifying
+};
+
+/// \brief The double-precision GJK result. Indices refer to the input point vectors.
+struct GjkResult {
+  GjkStatus status = GjkStatus::kNearContact;
+  /// Closest point of \f$\mathrm{conv}(A)-\mathrm{conv}(B)\f$ to the origin, \f$v = a^* - b^*\f$.
+  Eigen::Vector3d closest_vector = Eigen::Vector3d::Zero();
+  Eigen::Vector3d closest_a = Eigen::Vector3d::Zero();  ///< \f$a^*\f$ (estimate)
+  Eigen::Vector3d closest_b = Eigen::Vector3d::Zero();  ///< \f$b^*\f$ (estimate)
+  double distance = 0.0;                                ///< \f$\lvert v\rvert\f$, 0 unless separated
+  /// Final simplex: vertex k is a[simplex_a[k]] - b[simplex_b[k]], k < simplex_size.
+  int simplex_size = 0;
+  std::array<int, 4> simplex_a{};
+  std::array<int, 4> simplex_b{};
+  int iterations = 0;
+};
+
+/// \brief Runs GJK on the convex hulls of \p a and \p b (each non-empty).
+/// \param warm_start_normal optional direction believed to separate A (below) from B (above),
+///        e.g. the previous step's witness normal; GJK starts from \f$v = -n\f$.
+/// \throws std::invalid_argument if a point set is empty.
+GjkResult gjk(const std::vector<Eigen::Vector3d>& a, const std::vector<Eigen::Vector3d>& b,
+              const Eigen::Vector3d* warm_start_normal = nullptr);
+
+/// \brief Index of the point of \p points maximising \f$d \cdot p\f$ (first on ties).
+int support_index(const std::vector<Eigen::Vector3d>& points, const Eigen::Vector3d& d);
+
+}  // namespace grpvss::geometry

@@ -1,0 +1,246 @@
+#include "grpvss/geometry/gjk.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include <Eigen/Geometry>
+
+namespace grpvss::geometry {
+namespace {
+
+using Eigen::Vector3d;
+
+/// One simplex vertex: w = a[ia] - b[ib].
+struct SimplexVertex {
+  Vector3d w = Vector3d::Zero();
+  int ia = 0;
+  int ib = 0;
+};
+
+/// A simplex with barycentric weights of its closest point to the origin.
+struct Simplex {
+  std::array<SimplexVertex, 4> v;
+  std::array<double, 4> weight{};
+  int size = 0;
+  bool contains_origin = false;  // only meaningful for size 4
+};
+
+Simplex make(std::initializer_list<std::pair<const SimplexVertex*, double>> items) {
+  Simplex s;
+  for (const auto& [vertex, weight] : items) {
+    s.v[s.size] = *vertex;
+    s.weight[s.size] = weight;
+    ++s.size;
+  }
+  return s;
+}
+
+Vector3d point_of(const Simplex& s) {
+  Vector3d p = Vector3d::Zero();
+  for (int k = 0; k < s.size; ++k) p += s.weight[k] * s.v[k].w;
+  return p;
+}
+
+Simplex closest_on_segment(const SimplexVertex& a, const SimplexVertex& b) {
+  const Vector3d ab = b.w - a.w;
+  const double denom = ab.squaredNorm();
+  const double t = denom > 0.0 ? -a.w.dot(ab) / denom : 0.0;
+  if (t <= 0.0) return make({{&a, 1.0}});
+  if (t >= 1.0) return make({{&b, 1.0}});
+  return make({{&a, 1.0 - t}, {&b, t}});
+}
+
+// Ericson, Real-Time Collision Detection, 5.1.5, with the query point at the origin.
+Simplex closest_on_triangle(const SimplexVertex& a, const SimplexVertex& b,
+                            const SimplexVertex& c) {
+  const Vector3d ab = b.w - a.w;
+  const Vector3d ac = c.w - a.w;
+  const double d1 = -ab.dot(a.w);
+  const double d2 = -ac.dot(a.w);
+  if (d1 <= 0.0 && d2 <= 0.0) return make({{&a, 1.0}});
+  const double d3 = -ab.dot(b.w);
+  const double d4 = -ac.dot(b.w);
+  if (d3 >= 0.0 && d4 <= d3) return make({{&b, 1.0}});
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) {
+    const double t = d1 / (d1 - d3);
+    return make({{&a, 1.0 - t}, {&b, t}});
+  }
+  const double d5 = -ab.dot(c.w);
+  const double d6 = -ac.dot(c.w);
+  if (d6 >= 0.0 && d5 <= d6) return make({{&c, 1.0}});
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) {
+    const double t = d2 / (d2 - d6);
+    return make({{&a, 1.0 - t}, {&c, t}});
+  }
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0) {
+    const double t = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+    return make({{&b, 1.0 - t}, {&c, t}});
+  }
+  const double sum = va + vb + vc;
+  if (!(sum > 0.0)) return closest_on_segment(a, b);  // degenerate (collinear) triangle
+  const double v = vb / sum;
+  const double w = vc / sum;
+  return make({{&a, 1.0 - v - w}, {&b, v}, {&c, w}});
+}
+
+/// True when the origin and \p d lie strictly on different sides of plane (a, b, c), or the
+/// tetrahedron is flat (then every face must be examined).
+bool origin_outside_face(const Vector3d& a, const Vector3d& b, const Vector3d& c,
+                         const Vector3d& d) {
+  const Vector3d n = (b - a).cross(c - a);
+  const double sign_origin = -a.dot(n);
+  const double sign_d = (d - a).dot(n);
+  if (sign_d == 0.0) return true;
+  return sign_origin * sign_d <= 0.0;
+}
+
+Simplex closest_on_tetrahedron(const SimplexVertex& a, const SimplexVertex& b,
+                               const SimplexVertex& c, const SimplexVertex& d) {
+  Simplex best;
+  double best_norm2 = std::numeric_limits<double>::infinity();
+  bool any_outside = false;
+  const auto consider = [&](const SimplexVertex& p, const SimplexVertex& q,
+                            const SimplexVertex& r, const SimplexVertex& opposite) {
+    if (!origin_outside_face(p.w, q.w, r.w, opposite.w)) return;
+    any_outside = true;
+    const Simplex s = closest_on_triangle(p, q, r);
+    const double n2 = point_of(s).squaredNorm();
+    if (n2 < best_norm2) {
+      best_norm2 = n2;
+      best = s;
+    }
+  };
+  consider(a, b, c, d);
+  consider(a, c, d, b);
+  consider(a, d, b, c);
+  consider(b, d, c, a);
+  if (!any_outside) {
+    Simplex inside = make({{&a, 0.25}, {&b, 0.25}, {&c, 0.25}, {&d, 0.25}});
+    inside.contains_origin = true;
+    return inside;
+  }
+  return best;
+}
+
+Simplex closest(const Simplex& s) {
+  switch (s.size) {
+    case 1: return s;
+    case 2: return closest_on_segment(s.v[0], s.v[1]);
+    case 3: return closest_on_triangle(s.v[0], s.v[1], s.v[2]);
+    case 4: return closest_on_tetrahedron(s.v[0], s.v[1], s.v[2], s.v[3]);
+    default: throw std::logic_error("gjk: simplex of invalid size");
+  }
+}
+
+SimplexVertex support(const std::vector<Vector3d>& a, const std::vector<Vector3d>& b,
+                      const Vector3d& d) {
+  const int ia = support_index(a, d);
+  const int ib = support_index(b, -d);
+  return {a[ia] - b[ib], ia, ib};
+}
+
+void fill_result(const Simplex& s, const std::vector<Vector3d>& a,
+                 const std::vector<Vector3d>& b, GjkResult& result) {
+  result.simplex_size = s.size;
+  result.closest_a.setZero();
+  result.closest_b.setZero();
+  for (int k = 0; k < s.size; ++k) {
+    result.simplex_a[k] = s.v[k].ia;
+    result.simplex_b[k] = s.v[k].ib;
+    result.closest_a += s.weight[k] * a[s.v[k].ia];
+    result.closest_b += s.weight[k] * b[s.v[k].ib];
+  }
+  result.closest_vector = point_of(s);
+}
+
+constexpr int kMaxIterations = 64;
+// Convergence: the duality gap |v|^2 - v.w is a relative bound on how far |v| may still fall.
+constexpr double kRelativeGap = 1e-13;
+// Below this fraction of the sets' extent, double GJK cannot tell touching from a tiny gap.
+constexpr double kRelativeContact = 1e-14;
+
+}  // namespace
+
+int support_index(const std::vector<Vector3d>& points, const Vector3d& d) {
+  int best = 0;
+  double best_value = points[0].dot(d);
+  for (int i = 1; i < static_cast<int>(points.size()); ++i) {
+    const double value = points[i].dot(d);
+    if (value > best_value) {
+      best_value = value;
+      best = i;
+    }
+  }
+  return best;
+}
+
+GjkResult gjk(const std::vector<Vector3d>& a, const std::vector<Vector3d>& b,
+              const Vector3d* warm_start_normal) {
+  if (a.empty() || b.empty()) throw std::invalid_argument("gjk: empty point set");
+  GjkResult result;
+  // n separates A (below) from B (above), so the first useful support direction of A - B is
+  // -v = n; without a warm start use the direction from a[0] to b[0].
+  Vector3d direction = (warm_start_normal != nullptr && !warm_start_normal->isZero())
+                           ? *warm_start_normal
+                           : Vector3d(b[0] - a[0]);
+  if (direction.isZero()) direction = Vector3d::UnitX();
+  Simplex simplex;
+  simplex.v[0] = support(a, b, direction);
+  simplex.weight[0] = 1.0;
+  simplex.size = 1;
+  double scale2 = simplex.v[0].w.squaredNorm();
+  Vector3d v = simplex.v[0].w;
+
+  for (int iteration = 1; iteration <= kMaxIterations; ++iteration) {
+    result.iterations = iteration;
+    const double v2 = v.squaredNorm();
+    if (v2 <= kRelativeContact * kRelativeContact * scale2) {
+      fill_result(simplex, a, b, result);
+      result.status = GjkStatus::kNearContact;
+      return result;
+    }
+    const SimplexVertex w = support(a, b, -v);
+    scale2 = std::max(scale2, w.w.squaredNorm());
+    const bool repeated = std::any_of(simplex.v.begin(), simplex.v.begin() + simplex.size,
+                                      [&](const SimplexVertex& s) {
+                                        return s.ia == w.ia && s.ib == w.ib;
+                                      });
+    if (repeated || v2 - v.dot(w.w) <= kRelativeGap * v2) {
+      fill_result(simplex, a, b, result);
+      result.distance = std::sqrt(v2);
+      result.status = GjkStatus::kSeparated;
+      return result;
+    }
+    const Simplex previous = simplex;
+    simplex.v[simplex.size] = w;
+    ++simplex.size;
+    const Simplex reduced = closest(simplex);
+    if (reduced.contains_origin) {
+      fill_result(reduced, a, b, result);
+      result.closest_vector.setZero();
+      result.status = GjkStatus::kOverlapping;
+      return result;
+    }
+    const Vector3d next_v = point_of(reduced);
+    // GJK's |v| must strictly fall; if rounding stalls it, stop with the best estimate.
+    if (next_v.squaredNorm() >= v2) {
+      fill_result(previous, a, b, result);
+      result.distance = std::sqrt(v2);
+      result.status = GjkStatus::kSeparated;
+      return result;
+    }
+    simplex = reduced;
+    v = next_v;
+  }
+  fill_result(simplex, a, b, result);
+  result.distance = v.norm();
+  result.status = GjkStatus::kSeparated;
+  return result;
+}
+
+}  // namespace grpvss::geometry

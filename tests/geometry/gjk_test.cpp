@@ -1,0 +1,117 @@
+#include "grpvss/geometry/gjk.hpp"
+
+#include <random>
+
+#include <Eigen/Geometry>
+#include <gtest/gtest.h>
+
+#include "support/random_shapes.hpp"
+
+namespace grpvss::geometry {
+namespace {
+
+using Eigen::Vector3d;
+
+// Lower bound of the hull distance from GJK's own direction (weak duality of the support
+// function): the gap of the planes orthogonal to v that bound A and B.
+double plane_gap(const std::vector<Vector3d>& a, const std::vector<Vector3d>& b,
+                 const Vector3d& v) {
+  const Vector3d n = -v.normalized();  // from A towards B
+  double max_a = -1e300, min_b = 1e300;
+  for (const auto& p : a) max_a = std::max(max_a, n.dot(p));
+  for (const auto& p : b) min_b = std::min(min_b, n.dot(p));
+  return min_b - max_a;
+}
+
+TEST(Gjk, FaceToFaceCubesAtDistanceThree) {
+  const auto a = test::cube(Vector3d(0, 0, 0), 1.0);
+  const auto b = test::cube(Vector3d(4, 0.25, -0.5), 1.0);
+  const GjkResult r = gjk(a, b);
+  ASSERT_EQ(r.status, GjkStatus::kSeparated);
+  EXPECT_NEAR(r.distance, 3.0, 1e-12);
+  EXPECT_NEAR(r.closest_vector.x(), -3.0, 1e-12);
+  EXPECT_NEAR(r.closest_a.x(), 1.0, 1e-12);
+  EXPECT_NEAR(r.closest_b.x(), 4.0, 1e-12);
+}
+
+TEST(Gjk, EdgeToEdgeCubesAtDiagonalDistance) {
+  const auto a = test::cube(Vector3d(0, 0, 0), 1.0);
+  const auto b = test::cube(Vector3d(2, 2, 0), 1.0);  // nearest features: two vertical edges
+  const GjkResult r = gjk(a, b);
+  ASSERT_EQ(r.status, GjkStatus::kSeparated);
+  EXPECT_NEAR(r.distance, std::sqrt(2.0), 1e-12);
+}
+
+TEST(Gjk, OverlappingCubesEndWithTetrahedronAroundOrigin) {
+  const auto a = test::cube(Vector3d(0, 0, 0), 1.0);
+  const auto b = test::cube(Vector3d(0.5, 0.3, 0.2), 1.0);
+  const GjkResult r = gjk(a, b);
+  ASSERT_EQ(r.status, GjkStatus::kOverlapping);
+  ASSERT_EQ(r.simplex_size, 4);
+  Vector3d w[4];
+  for (int k = 0; k < 4; ++k) w[k] = a[r.simplex_a[k]] - b[r.simplex_b[k]];
+  // Barycentric coordinates of the origin must all be positive.
+  Eigen::Matrix3d m;
+  m << w[1] - w[0], w[2] - w[0], w[3] - w[0];
+  const Vector3d lambda = m.colPivHouseholderQr().solve(-w[0]);
+  EXPECT_GT(lambda.minCoeff(), 0.0);
+  EXPECT_GT(1.0 - lambda.sum(), 0.0);
+}
+
+TEST(Gjk, EmptyInputIsRejected) {
+  EXPECT_THROW(gjk({}, test::cube(Vector3d::Zero(), 1.0)), std::invalid_argument);
+}
+
+TEST(Gjk, RandomSeparatedPairsConvergeToDualityGap) {
+  std::mt19937_64 rng(20261121);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  int separated = 0;
+  for (int trial = 0; trial < 2000; ++trial) {
+    const auto a = test::random_prism(rng, Vector3d::Zero(), 1.0);
+    const Vector3d direction = Vector3d(unit(rng), unit(rng), unit(rng)).normalized();
+    const auto b = test::random_prism(rng, direction * (2.5 + 2.0 * (unit(rng) + 1.0)), 1.0);
+    const GjkResult r = gjk(a, b);
+    if (r.status != GjkStatus::kSeparated) {
+      // 2.5 apart with radius <= 1.0 and height <= 1.5: never touching.
+      ADD_FAILURE() << "trial " << trial << " not separated";
+      continue;
+    }
+    ++separated;
+    // closest_a, closest_b are convex combinations, so |a* - b*| >= true distance >= gap.
+    const double upper = (r.closest_a - r.closest_b).norm();
+    const double lower = plane_gap(a, b, r.closest_vector);
+    EXPECT_LE(lower, upper + 1e-12);
+    EXPECT_NEAR(upper, r.distance, 1e-9);
+    EXPECT_LE(upper - lower, 1e-6 * upper) << "trial " << trial;
+  }
+  EXPECT_EQ(separated, 2000);
+}
+
+TEST(Gjk, WarmStartFromSeparatingNormalGivesSameDistance) {
+  std::mt19937_64 rng(7);
+  for (int trial = 0; trial < 500; ++trial) {
+    const auto a = test::random_prism(rng, Vector3d::Zero(), 1.0);
+    const auto b = test::random_prism(rng, Vector3d(3.0, 0.5, -0.2), 1.0);
+    const GjkResult cold = gjk(a, b);
+    const Vector3d normal = -cold.closest_vector;
+    const GjkResult warm = gjk(a, b, &normal);
+    ASSERT_EQ(warm.status, GjkStatus::kSeparated);
+    EXPECT_NEAR(warm.distance, cold.distance, 1e-9);
+  }
+}
+
+TEST(Gjk, RandomDeepOverlapsAreReportedOverlapping) {
+  std::mt19937_64 rng(99);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  for (int trial = 0; trial < 2000; ++trial) {
+    const auto a = test::random_prism(rng, Vector3d::Zero(), 1.0);
+    // A contains the ball of radius min(0.7 cos(pi/8), 0.5/2) = 0.25 about the origin and B's
+    // centre is at most 0.1 sqrt(3) < 0.25 away, so B's centre is interior to A.
+    const auto b = test::random_prism(rng, 0.1 * Vector3d(unit(rng), unit(rng), unit(rng)), 1.0);
+    const GjkResult r = gjk(a, b);
+    EXPECT_EQ(r.status, GjkStatus::kOverlapping) << "trial " << trial;
+  }
+}
+
+}  // namespace
+}  // namespace grpvss::geometry
