@@ -105,13 +105,28 @@ Trajectory Trajectory::plan(const RobotModel& robot, const PathProgram& program,
   return trajectory;
 }
 
+namespace {
+
+// Last segment starting at or before t (a zero-duration segment is passed through).
+std::vector<SegmentTrajectory>::const_iterator segment_containing(
+    const std::vector<SegmentTrajectory>& segments, double t) {
+  const auto after = std::upper_bound(
+      segments.begin(), segments.end(), t,
+      [](double time, const SegmentTrajectory& s) { return time < s.start_time; });
+  return after - 1;
+}
+
+}  // namespace
+
+int Trajectory::segment_at(double t) const {
+  if (segments_.empty()) return 0;
+  return segment_containing(segments_, std::clamp(t, 0.0, duration()))->number;
+}
+
 std::optional<Eigen::VectorXd> Trajectory::joints_at(double t) const {
   if (segments_.empty()) return home_;
   t = std::clamp(t, 0.0, duration());
-  // Last segment starting at or before t (a zero-duration segment is passed through).
-  auto it = std::upper_bound(segments_.begin(), segments_.end(), t,
-                             [](double time, const SegmentTrajectory& s) { return time < s.start_time; });
-  const SegmentTrajectory& piece = *(it - 1);
+  const SegmentTrajectory& piece = *segment_containing(segments_, t);
   const double local = t - piece.start_time;
   if (piece.ptp) return piece.ptp->joints_at(local);
   const double l = std::min(options_.cp_speed * local, piece.cp->length());

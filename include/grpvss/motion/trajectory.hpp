@@ -44,6 +44,8 @@ struct SegmentTrajectory {
   double end_time() const { return start_time + duration; }
 };
 
+/// \brief A planned path. Keeps a pointer to the RobotModel given to plan(): the model must
+/// outlive the trajectory.
 class Trajectory {
  public:
   /// Plans every segment from the robot's home. Thesis errors 3-5 stop the plan at the
@@ -63,6 +65,9 @@ class Trajectory {
   /// std::nullopt if that point has no IK solution within the limits (an unreachable point
   /// the samples missed).
   std::optional<Eigen::VectorXd> joints_at(double t) const;
+  /// 1-based number of the segment that path time t (clamped) falls in; 0 when no segment was
+  /// simulated. At a boundary the later segment is reported.
+  int segment_at(double t) const;
 
  private:
   const RobotModel* robot_ = nullptr;
