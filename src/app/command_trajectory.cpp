@@ -1,16 +1,114 @@
-// `grpvss trajectory`: placeholder until the motion stage lands (issue 2, item 8).
-#include <stdexcept>
+// `grpvss trajectory`: plans the joint trajectory of a path (motion stage) and prints it
+// (docs/trajectories.md). Exit codes: 0 path planned, 1 a thesis error 3-6 stopped the path,
+// 2 input error.
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <fmt/core.h>
 
 #include "commands.hpp"
+#include "grpvss/common/input_error.hpp"
+#include "grpvss/io/path_file.hpp"
+#include "grpvss/io/robot_file.hpp"
+#include "grpvss/motion/kinematics_adapter.hpp"
+#include "grpvss/motion/trajectory.hpp"
+#include "grpvss/report/trajectory_report.hpp"
 
 namespace grpvss::app {
+namespace {
+
+struct TrajectoryArguments {
+  std::string robot_file;
+  std::string path_file;
+  std::string timing = "independent";
+  std::string profile_table;
+  std::string ik = "auto";
+  std::vector<double> at;
+  double step = 0.0;
+  double cp_speed = 1.0;
+  double cp_spacing = 0.5;
+  bool json = false;
+};
+
+/// Most time samples --step may produce (a guard against an accidental tiny step).
+constexpr double kMaxSteps = 1e6;
+
+std::vector<double> requested_times(const TrajectoryArguments& args, double total) {
+  std::vector<double> times = args.at;
+  if (args.step > 0.0) {
+    if (total / args.step > kMaxSteps)
+      throw InputError("--step", 0, fmt::format("at most {:.0f} samples over {} s", kMaxSteps, total),
+                       fmt::format("{}", args.step));
+    const auto count = static_cast<long long>(std::floor(total / args.step));
+    for (long long k = 0; k <= count; ++k) times.push_back(static_cast<double>(k) * args.step);
+    if (times.empty() || times.back() < total) times.push_back(total);
+  }
+  return times;
+}
+
+int run_trajectory(const TrajectoryArguments& args) {
+  const RobotModel robot = io::read_robot_file(args.robot_file);
+  const PathProgram program = io::read_path_file(args.path_file, robot);
+  motion::TrajectoryOptions options;
+  options.timing = args.timing == "synchronized" ? motion::PtpTiming::kSynchronized
+                                                 : motion::PtpTiming::kIndependent;
+  if (!args.profile_table.empty())
+    options.table = std::make_shared<const motion::ProfileTable>(
+        motion::ProfileTable::read(args.profile_table));
+  options.cp_speed = args.cp_speed;
+  options.cp_spacing = args.cp_spacing;
+  const auto ik = motion::select_ik(args.ik, robot, args.robot_file);
+  const motion::Trajectory trajectory =
+      motion::Trajectory::plan(robot, program, motion::make_kinematics_access(robot, ik), options);
+
+  report::TrajectoryReportSettings settings;
+  settings.robot_file = args.robot_file;
+  settings.path_file = args.path_file;
+  settings.timing = args.timing;
+  settings.profile_table = args.profile_table;
+  settings.ik_name = ik->name();
+  settings.cp_speed = args.cp_speed;
+  settings.cp_spacing = args.cp_spacing;
+  settings.times = requested_times(args, trajectory.duration());
+  if (args.json)
+    fmt::print("{}\n", report::trajectory_json(robot, trajectory, settings).dump(2));
+  else
+    fmt::print("{}", report::trajectory_text(robot, trajectory, settings));
+  return trajectory.errors().empty() ? kExitOk : kExitFinding;
+}
+
+}  // namespace
 
 void register_trajectory_command(CLI::App& app, int& exit_code) {
+  auto args = std::make_shared<TrajectoryArguments>();
   auto* command = app.add_subcommand("trajectory", "Print the joint trajectory of a path");
-  command->callback([&exit_code] {
-    exit_code = 3;
-    throw std::runtime_error("trajectory: not built yet");
-  });
+  command->add_option("--robot", args->robot_file, "Robot file (thesis A.1.1.1)")->required();
+  command->add_option("--path", args->path_file, "Path file (thesis A.1.3)")->required();
+  command->add_option("--timing", args->timing, "PTP joint timing")
+      ->check(CLI::IsMember({"independent", "synchronized"}))
+      ->capture_default_str();
+  command->add_option("--profile-table", args->profile_table,
+                      "Motion-time table replacing the ideal trapezoids (docs/trajectories.md)");
+  command->add_option("--ik", args->ik, "IK: auto, ibm7545, numeric or plugin:PATH.so")
+      ->capture_default_str();
+  command->add_option("--at", args->at, "Path times (s) at which to print the joints")
+      ->delimiter(',')
+      ->check(CLI::NonNegativeNumber);
+  command->add_option("--step", args->step, "Print the joints every DT seconds")
+      ->check(CLI::PositiveNumber);
+  command->add_option("--cp-speed", args->cp_speed,
+                      "Nominal end-effector speed on CP lines (length units per s)")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  command->add_option("--cp-spacing", args->cp_spacing,
+                      "Largest path-length spacing of the CP IK samples")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  command->add_flag("--json", args->json, "Print a JSON document instead of text");
+  command->callback([args, &exit_code] { exit_code = run_trajectory(*args); });
 }
 
 }  // namespace grpvss::app

@@ -1,0 +1,81 @@
+#pragma once
+/// \file
+/// \brief The joint trajectory of a whole path program: one timed piece per segment, from
+/// the robot's home, stopped at the first thesis error (docs/trajectories.md).
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "grpvss/model/path_program.hpp"
+#include "grpvss/model/robot_model.hpp"
+#include "grpvss/motion/cp_line.hpp"
+#include "grpvss/motion/kinematics_access.hpp"
+#include "grpvss/motion/profile_table.hpp"
+#include "grpvss/motion/ptp_motion.hpp"
+#include "grpvss/motion/thesis_error.hpp"
+
+namespace grpvss::motion {
+
+enum class SegmentKind { kPtpJoint = 1, kPtpWorld = 2, kCpLine = 3 };  ///< the thesis's IND
+
+struct TrajectoryOptions {
+  PtpTiming timing = PtpTiming::kIndependent;
+  std::shared_ptr<const ProfileTable> table;  ///< null: ideal trapezoids
+  /// Nominal constant Cartesian speed of the end effector on CP lines (length units per s).
+  /// The thesis ignores CP velocity (3.2.3.2); GRPVSS times a line of length L as L / speed.
+  double cp_speed = 1.0;
+  /// Largest path-length spacing of the CP samples (IK check points), length units.
+  double cp_spacing = 0.5;
+};
+
+/// \brief One simulated segment.
+struct SegmentTrajectory {
+  int number = 0;  ///< 1-based segment number
+  SegmentKind kind = SegmentKind::kPtpJoint;
+  Eigen::VectorXd q_start, q_end;
+  double start_time = 0.0;  ///< path time at which the segment starts
+  double duration = 0.0;    ///< the segment's cycle time
+  std::optional<PtpMotion> ptp;  ///< PTP segments
+  std::optional<CpLine> cp;      ///< CP segments
+  std::vector<CpSample> cp_samples;  ///< CP segments: l = 0 .. L
+  double end_time() const { return start_time + duration; }
+};
+
+/// \brief A planned path. Keeps a pointer to the RobotModel given to plan(): the model must
+/// outlive the trajectory.
+class Trajectory {
+ public:
+  /// Plans every segment from the robot's home. Thesis errors 3-5 stop the plan at the
+  /// failing segment: `segments()` holds the earlier ones, `errors()` the error.
+  /// \throws grpvss::InputError if the table's joint count differs from the robot's.
+  static Trajectory plan(const RobotModel& robot, const PathProgram& program,
+                         const KinematicsAccess& kinematics, const TrajectoryOptions& options);
+
+  const std::vector<SegmentTrajectory>& segments() const { return segments_; }
+  const std::vector<ThesisError>& errors() const { return errors_; }
+  const Eigen::VectorXd& home() const { return home_; }
+  /// Total cycle time of the simulated segments.
+  double duration() const { return segments_.empty() ? 0.0 : segments_.back().end_time(); }
+
+  /// Joints at path time t (clamped to [0, duration()]). On a CP segment: IK of the line's
+  /// pose at l = cp_speed (t - start) nearest the joints of the sample just before l;
+  /// std::nullopt if that point has no IK solution within the limits (an unreachable point
+  /// the samples missed).
+  std::optional<Eigen::VectorXd> joints_at(double t) const;
+  /// 1-based number of the segment that path time t (clamped) falls in; 0 when no segment was
+  /// simulated. At a boundary the later segment is reported.
+  int segment_at(double t) const;
+
+ private:
+  const RobotModel* robot_ = nullptr;
+  KinematicsAccess kinematics_;
+  TrajectoryOptions options_;
+  Eigen::VectorXd home_;
+  std::vector<SegmentTrajectory> segments_;
+  std::vector<ThesisError> errors_;
+};
+
+}  // namespace grpvss::motion

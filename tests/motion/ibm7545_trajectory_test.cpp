@@ -1,0 +1,94 @@
+// The thesis's output sample (Appendix A.3) planned end to end with the real readers, the DH
+// chain and the IBM 7545 closed-form IK.
+#include <cmath>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "grpvss/io/path_file.hpp"
+#include "grpvss/io/robot_file.hpp"
+#include "grpvss/motion/kinematics_adapter.hpp"
+#include "grpvss/motion/trajectory.hpp"
+#include "grpvss/report/trajectory_report.hpp"
+
+namespace grpvss::motion {
+namespace {
+
+const std::string kData = std::string(GRPVSS_SOURCE_DIR) + "/data/ibm7545/";
+
+struct Sample {
+  RobotModel robot = io::read_robot_file(kData + "robot.txt");
+  PathProgram program = io::read_path_file(kData + "path-output-sample.txt", robot);
+  Trajectory plan(PtpTiming timing) const {
+    TrajectoryOptions options;
+    options.timing = timing;
+    return Trajectory::plan(robot, program,
+                            make_kinematics_access(robot, select_ik("auto", robot, "robot.txt")),
+                            options);
+  }
+};
+
+void expect_joints(const RobotModel& robot, const Eigen::VectorXd& q,
+                   std::initializer_list<double> expected) {
+  const std::vector<double> shown = report::display_joints(robot, q);
+  std::size_t j = 0;
+  for (double value : expected) {
+    EXPECT_NEAR(shown[j], value, 0.01) << "joint " << j + 1;
+    ++j;
+  }
+}
+
+TEST(Ibm7545Trajectory, OutputSampleSegmentEndsAndError3) {
+  const Sample sample;
+  const Trajectory trajectory = sample.plan(PtpTiming::kIndependent);
+  ASSERT_EQ(trajectory.segments().size(), 3u);
+  expect_joints(sample.robot, trajectory.segments()[0].q_end, {61.16, 79.90, 2.45, 171.06});
+  expect_joints(sample.robot, trajectory.segments()[1].q_end, {166.68, 75.16, 8.45, -58.16});
+  expect_joints(sample.robot, trajectory.segments()[2].q_end, {50, 50, 5, 50});
+  ASSERT_EQ(trajectory.errors().size(), 1u);
+  EXPECT_EQ(trajectory.errors()[0].code, 3);
+  EXPECT_EQ(trajectory.errors()[0].segment, 4);
+}
+
+TEST(Ibm7545Trajectory, FirstStepsOfTheOutputSample) {
+  const Sample sample;
+  const Trajectory trajectory = sample.plan(PtpTiming::kIndependent);
+  expect_joints(sample.robot, *trajectory.joints_at(1.025), {1.05, 1.05, 0.24, 1.05});
+  expect_joints(sample.robot, *trajectory.joints_at(2.503), {5.26, 5.26, 0.69, 5.26});
+  expect_joints(sample.robot, *trajectory.joints_at(3.5), {8.25, 8.25, 0.99, 8.25});
+  expect_joints(sample.robot, *trajectory.joints_at(4.483), {11.20, 11.20, 1.28, 11.20});
+}
+
+TEST(Ibm7545Trajectory, CpSamplesTraceTheLineAndTheYawRule) {
+  const Sample sample;
+  const Trajectory trajectory = sample.plan(PtpTiming::kIndependent);
+  const SegmentTrajectory& cp = trajectory.segments()[1];
+  ASSERT_TRUE(cp.cp);
+  const auto forward = make_kinematics_access(sample.robot, select_ik("auto", sample.robot, "r")).forward;
+  for (std::size_t k = 0; k < cp.cp_samples.size(); ++k) {
+    const CpSample& s = cp.cp_samples[k];
+    const Eigen::Isometry3d X_WE = forward(s.q);
+    const Eigen::Isometry3d X_expected = cp.cp->pose_at(s.l);
+    EXPECT_LT((X_WE.translation() - X_expected.translation()).norm(), 1e-9);
+    EXPECT_LT((X_WE.linear() - X_expected.linear()).norm(), 1e-9);
+    if (k > 0) EXPECT_LE(s.l - cp.cp_samples[k - 1].l, 0.5 + 1e-12);
+  }
+  EXPECT_EQ(cp.cp_samples.back().l, cp.cp->length());
+}
+
+TEST(Ibm7545Trajectory, SynchronizedSegmentsEndTogetherAtTheSameJoints) {
+  const Sample sample;
+  const Trajectory independent = sample.plan(PtpTiming::kIndependent);
+  const Trajectory synchronized = sample.plan(PtpTiming::kSynchronized);
+  ASSERT_EQ(synchronized.segments().size(), 3u);
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_TRUE(synchronized.segments()[i].q_end.isApprox(independent.segments()[i].q_end, 1e-12));
+    EXPECT_DOUBLE_EQ(synchronized.segments()[i].duration, independent.segments()[i].duration);
+    if (synchronized.segments()[i].ptp)
+      for (const JointMotion& joint : synchronized.segments()[i].ptp->joints())
+        if (joint.natural_duration() > 0) EXPECT_EQ(joint.duration(), synchronized.segments()[i].duration);
+  }
+}
+
+}  // namespace
+}  // namespace grpvss::motion
