@@ -8,7 +8,7 @@ cd "$here"
 debian_packages=(
   build-essential cmake pkg-config
   libcgal-dev libgmp-dev libmpfr-dev libeigen3-dev libboost-dev
-  libcli11-dev nlohmann-json3-dev libfmt-dev
+  libcli11-dev nlohmann-json3-dev libfmt-dev libssl-dev
   libgtest-dev libgmock-dev libbenchmark-dev
 )
 missing=()

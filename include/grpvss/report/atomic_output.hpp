@@ -1,0 +1,38 @@
+#pragma once
+/// \file
+/// \brief Publishing an output file atomically and, unless forced, without clobbering.
+///
+/// A reader (or a crash) never sees a partial output: the content goes to a temporary file in
+/// the same directory, is fsync'ed, and only then appears under its final name in one step.
+
+#include <string>
+#include <string_view>
+
+#include "grpvss/common/input_error.hpp"
+
+namespace grpvss::report {
+
+/// \brief The output path already exists and --force was not given. Like the thesis program,
+/// GRPVSS refuses to overwrite an existing output name.
+class OutputExistsError : public InputError {
+ public:
+  explicit OutputExistsError(const std::string& path);
+};
+
+/// \brief Writes `content` to `path` atomically.
+///
+/// Writes `<dir>/.<name>.<pid>.<n>.grpvss-tmp` (created with O_EXCL, mode 0666 & ~umask),
+/// fsyncs it, then publishes it:
+/// - `force == false`: link(2) of the temporary to `path`, which fails with EEXIST if the path
+///   exists (also if it appeared meanwhile: no check-then-act race), so an existing file is
+///   never touched; where hard links are unsupported, renameat2(RENAME_NOREPLACE) is used;
+/// - `force == true`: rename(2) over `path` (atomic replacement).
+/// The directory is then fsync'ed (best effort). The temporary file is removed on every path,
+/// successful or not.
+///
+/// \throws OutputExistsError when `path` exists and `force` is false.
+/// \throws InputError (file = `path`, line 0) when the directory is missing or not writable,
+///         the disk is full, or `path` names a directory.
+void write_file_atomically(const std::string& path, std::string_view content, bool force);
+
+}  // namespace grpvss::report
