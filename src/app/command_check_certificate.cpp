@@ -1,0 +1,93 @@
+// `grpvss check-certificate`: re-verifies a certificate from the input files alone (a separate
+// code path from the verifier, every inequality decided exactly). Exit 0 accepted, 1 rejected,
+// 2 input error.
+#include <fstream>
+#include <memory>
+#include <sstream>
+#include <string>
+
+#include <fmt/core.h>
+#include <nlohmann/json.hpp>
+
+#include "commands.hpp"
+#include "grpvss/certify/certificate_checker.hpp"
+#include "grpvss/common/input_error.hpp"
+#include "grpvss/io/environment_file.hpp"
+#include "grpvss/io/path_file.hpp"
+#include "grpvss/io/robot_file.hpp"
+#include "grpvss/io/text_file.hpp"
+#include "grpvss/motion/kinematics_adapter.hpp"
+#include "grpvss/motion/profile_table.hpp"
+#include "grpvss/report/input_digests.hpp"
+#include "verify_arguments.hpp"
+
+namespace grpvss::app {
+namespace {
+
+struct CheckArguments {
+  VerifyArguments inputs;
+  std::string certificate_file;
+  bool json = false;
+};
+
+int run_check(const CheckArguments& args) {
+  const VerifyArguments& in = args.inputs;
+  const RobotModel robot = io::read_robot_file(in.robot_file);
+  const Environment environment = io::read_environment_file(in.environment_file);
+  const PathProgram program = io::read_path_file(in.path_file, robot);
+  const std::string text = io::read_text_file(args.certificate_file);
+  nlohmann::json document;
+  try {
+    document = nlohmann::json::parse(text);
+  } catch (const nlohmann::json::parse_error& error) {
+    throw InputError(args.certificate_file, 0, "a JSON document", error.what());
+  }
+  const certify::Certificate certificate =
+      certify::certificate_from_json(document, args.certificate_file);
+  std::vector<std::string> digest_failures;
+  if (document.contains("inputs") && document["inputs"].is_object()) {
+    const report::InputDigests digests =
+        report::digest_input_files(in.robot_file, in.environment_file, in.path_file);
+    const auto& inputs = document["inputs"];
+    if (inputs.value("robot", "") != digests.robot.sha256) digest_failures.push_back("the robot file differs from the one certified");
+    if (inputs.value("environment", "") != digests.environment.sha256) digest_failures.push_back("the environment file differs from the one certified");
+    if (inputs.value("path", "") != digests.path.sha256) digest_failures.push_back("the path file differs from the one certified");
+  }
+  certify::CheckOptions options;
+  if (!in.profile_table.empty()) {
+    options.profile_table = std::make_shared<const motion::ProfileTable>(
+        motion::ProfileTable::read(in.profile_table));
+  }
+  const auto ik = motion::select_ik(in.ik, robot, in.robot_file);
+  certify::CheckReport report = certify::check_certificate(
+      robot, environment, program, motion::make_kinematics_access(robot, ik), certificate, options);
+  for (const auto& failure : digest_failures) report.failures.insert(report.failures.begin(), failure);
+  report.accepted = report.failures.empty();
+  if (args.json) {
+    fmt::print("{}\n", nlohmann::json{{"accepted", report.accepted},
+                                      {"claim", report.claim},
+                                      {"inequalities_checked", report.inequalities_checked},
+                                      {"failures", report.failures}}
+                           .dump(2));
+  } else {
+    fmt::print("{}: claim {} ({} inequalities decided exactly)\n",
+               report.accepted ? "ACCEPTED" : "REJECTED", report.claim,
+               report.inequalities_checked);
+    for (const auto& failure : report.failures) fmt::print("  - {}\n", failure);
+  }
+  return report.accepted ? kExitOk : kExitFinding;
+}
+
+}  // namespace
+
+void register_check_certificate_command(CLI::App& app, int& exit_code) {
+  auto args = std::make_shared<CheckArguments>();
+  auto* command = app.add_subcommand(
+      "check-certificate", "Re-verify a certificate exactly from the input files alone");
+  add_input_options(*command, args->inputs);
+  command->add_option("CERT", args->certificate_file, "Certificate written by verify")->required();
+  command->add_flag("--json", args->json, "Print the result as JSON");
+  command->callback([args, &exit_code] { exit_code = run_check(*args); });
+}
+
+}  // namespace grpvss::app

@@ -1,0 +1,106 @@
+// `grpvss verify`: the simulation loop of thesis Figures 10-11 with the certified (default) or
+// the thesis step rule; writes the thesis output file, the JSON report and the certificate.
+// Exit codes: 0 CLEAR, 1 any other verdict, 2 input error (docs/user-guide.md).
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include <fmt/core.h>
+#include <nlohmann/json.hpp>
+
+#include "commands.hpp"
+#include "grpvss/certify/verifier.hpp"
+#include "grpvss/io/environment_file.hpp"
+#include "grpvss/io/path_file.hpp"
+#include "grpvss/io/robot_file.hpp"
+#include "grpvss/motion/kinematics_adapter.hpp"
+#include "grpvss/report/atomic_output.hpp"
+#include "grpvss/report/input_digests.hpp"
+#include "grpvss/report/json_report.hpp"
+#include "grpvss/report/thesis_output.hpp"
+#include "verify_arguments.hpp"
+
+namespace grpvss::app {
+namespace {
+
+std::string file_label(const std::string& path) {
+  const auto slash = path.find_last_of('/');
+  return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+void print_summary(const certify::VerificationRun& run, const VerifyArguments& args) {
+  const certify::VerificationResult& result = run.result;
+  const bool certified = result.mode == certify::ResolutionMode::kCertified;
+  fmt::print("verdict: {}{}\n", certify::to_string(result.verdict),
+             certified ? "" : " (thesis mode: NOT certified)");
+  fmt::print("mode: {}  tolerance: {}  steps: {}  cycle time: {:.3f} s\n",
+             certify::to_string(result.mode), result.tolerance,
+             result.steps.empty() ? 0 : result.steps.back().index, result.total_cycle_time);
+  if (result.collision_step) fmt::print("first collision at step {}\n", *result.collision_step);
+  for (const certify::PathError& error : result.errors) {
+    fmt::print("error {} (segment {}, step {}): {}\n", error.code, error.segment, error.step,
+               error.message);
+  }
+  for (const certify::LinkClearanceSummary& link : result.link_clearances) {
+    if (link.link == 0) continue;
+    fmt::print("link {}: smallest certified clearance {:.4f} at step {}\n", link.link,
+               link.min_clearance, link.step);
+  }
+  if (!args.out.empty()) fmt::print("thesis output file: {}\n", args.out);
+  if (!args.json.empty()) fmt::print("JSON report: {}\n", args.json);
+  if (!args.certificate.empty()) fmt::print("certificate: {}\n", args.certificate);
+}
+
+int run_verify(const VerifyArguments& args) {
+  const RobotModel robot = io::read_robot_file(args.robot_file);
+  const Environment environment = io::read_environment_file(args.environment_file);
+  const PathProgram program = io::read_path_file(args.path_file, robot);
+  const report::InputDigests digests =
+      report::digest_input_files(args.robot_file, args.environment_file, args.path_file);
+  certify::VerifyOptions options = make_verify_options(args, robot);
+  options.path_label = file_label(args.path_file);
+  const auto ik = motion::select_ik(args.ik, robot, args.robot_file);
+  const certify::VerificationRun run = certify::verify(
+      robot, environment, program, motion::make_kinematics_access(robot, ik), options);
+
+  // All outputs are rendered first, then published: a refused name leaves nothing half-done.
+  if (!args.certificate.empty() && run.result.mode != certify::ResolutionMode::kCertified) {
+    throw InputError("--certificate", 0, "--mode certified (thesis mode proves nothing)");
+  }
+  if (!args.out.empty()) {
+    report::write_file_atomically(args.out, report::render_thesis_output(run.result, robot),
+                                  args.force);
+  }
+  if (!args.json.empty()) {
+    report::write_file_atomically(
+        args.json, report::render_json_report(report::report_to_json(run.result, robot, digests)),
+        args.force);
+  }
+  if (!args.certificate.empty()) {
+    nlohmann::json certificate = certify::certificate_to_json(run.certificate);
+    certificate["inputs"] = {{"robot", digests.robot.sha256},
+                             {"environment", digests.environment.sha256},
+                             {"path", digests.path.sha256},
+                             {"ik", ik->name()}};
+    report::write_file_atomically(args.certificate, certificate.dump(1) + "\n", args.force);
+  }
+  if (!args.quiet) print_summary(run, args);
+  return run.result.verdict == certify::Verdict::kClear ? kExitOk : kExitFinding;
+}
+
+}  // namespace
+
+void register_verify_command(CLI::App& app, int& exit_code) {
+  auto args = std::make_shared<VerifyArguments>();
+  auto* command = app.add_subcommand("verify", "Verify a path: simulate, test, certify");
+  add_verify_options(*command, *args);
+  command->add_option("--out", args->out, "Thesis output file (Appendix A.3 layout)");
+  command->add_option("--json", args->json, "JSON report (docs/report-schema.md)");
+  command->add_option("--certificate", args->certificate,
+                      "Certificate for check-certificate (docs/certificate.md)");
+  command->add_flag("--force", args->force, "Overwrite existing output files");
+  command->add_flag("--quiet", args->quiet, "Print nothing; the exit code tells the verdict");
+  command->callback([args, &exit_code] { exit_code = run_verify(*args); });
+}
+
+}  // namespace grpvss::app

@@ -1,0 +1,59 @@
+#include "verify_arguments.hpp"
+
+#include <memory>
+
+#include "grpvss/motion/profile_table.hpp"
+
+namespace grpvss::app {
+
+void add_input_options(CLI::App& command, VerifyArguments& args) {
+  command.add_option("--robot", args.robot_file, "Robot file (thesis A.1.1.1)")->required();
+  command.add_option("--env", args.environment_file, "Environment file (thesis A.1.1.2)")->required();
+  command.add_option("--path", args.path_file, "Path file (thesis A.1.3)")->required();
+  command.add_option("--timing", args.timing, "PTP joint timing")
+      ->check(CLI::IsMember({"independent", "synchronized"}))
+      ->capture_default_str();
+  command.add_option("--profile-table", args.profile_table,
+                     "Motion-time table replacing the ideal trapezoids (docs/trajectories.md)");
+  command.add_option("--ik", args.ik, "IK: auto, ibm7545, numeric or plugin:PATH.so")
+      ->capture_default_str();
+}
+
+void add_verify_options(CLI::App& command, VerifyArguments& args) {
+  add_input_options(command, args);
+  command.add_option("--tolerance", args.tolerance, "Tolerance Delta (> 0, length units)")
+      ->required()
+      ->check(CLI::PositiveNumber);
+  command.add_option("--mode", args.mode, "Step rule: certified, or thesis (never certified)")
+      ->check(CLI::IsMember({"certified", "thesis"}))
+      ->capture_default_str();
+  command.add_option("--offset", args.offset,
+                     "Tolerance offset polytope: auto, cube (thesis) or rhombicuboctahedron")
+      ->check(CLI::IsMember({"auto", "cube", "rhombicuboctahedron"}))
+      ->capture_default_str();
+  command.add_option("--cp-speed", args.cp_speed,
+                     "Nominal end-effector speed on CP lines (length units per s)")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+}
+
+certify::VerifyOptions make_verify_options(const VerifyArguments& args, const RobotModel&) {
+  certify::VerifyOptions options;
+  options.tolerance = args.tolerance;
+  options.mode = args.mode == "thesis" ? certify::ResolutionMode::kThesis
+                                       : certify::ResolutionMode::kCertified;
+  if (args.offset == "cube") options.offset_shape = geometry::OffsetShape::kCube;
+  if (args.offset == "rhombicuboctahedron") {
+    options.offset_shape = geometry::OffsetShape::kRhombicuboctahedron;
+  }
+  options.trajectory.timing = args.timing == "synchronized" ? motion::PtpTiming::kSynchronized
+                                                            : motion::PtpTiming::kIndependent;
+  options.trajectory.cp_speed = args.cp_speed;
+  if (!args.profile_table.empty()) {
+    options.trajectory.table = std::make_shared<const motion::ProfileTable>(
+        motion::ProfileTable::read(args.profile_table));
+  }
+  return options;
+}
+
+}  // namespace grpvss::app
