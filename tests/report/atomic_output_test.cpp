@@ -2,7 +2,9 @@
 
 #include <filesystem>
 #include <fstream>
+#include <atomic>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -140,6 +142,37 @@ TEST(AtomicOutput, RelativePathUsesTheCurrentDirectory) {
   std::filesystem::current_path(previous);
   EXPECT_EQ(read_text_file(dir + "/relative.txt"), "r");
   EXPECT_EQ(directory_entries(dir), std::vector<std::string>{"relative.txt"});
+  std::filesystem::remove_all(dir);
+}
+
+
+// No check-then-act race: of several writers racing for one new name, exactly one wins and
+// the file holds exactly the winner's content.
+TEST(AtomicOutput, ConcurrentWritersWithoutForceExactlyOneWins) {
+  const std::string dir = make_temporary_directory("atomic");
+  for (int round = 0; round < 20; ++round) {
+    const std::string path = dir + "/race" + std::to_string(round) + ".txt";
+    std::atomic<int> wins{0};
+    std::atomic<int> refusals{0};
+    std::atomic<int> winner{-1};
+    std::vector<std::thread> writers;
+    for (int w = 0; w < 6; ++w) {
+      writers.emplace_back([&, w] {
+        try {
+          write_file_atomically(path, "writer " + std::to_string(w) + "\n", false);
+          ++wins;
+          winner = w;
+        } catch (const OutputExistsError&) {
+          ++refusals;
+        }
+      });
+    }
+    for (auto& writer : writers) writer.join();
+    EXPECT_EQ(wins.load(), 1);
+    EXPECT_EQ(refusals.load(), 5);
+    EXPECT_EQ(read_text_file(path), "writer " + std::to_string(winner.load()) + "\n");
+  }
+  EXPECT_EQ(directory_entries(dir).size(), 20u);  // the 20 outputs, no temporary left
   std::filesystem::remove_all(dir);
 }
 

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <fstream>
 #include <limits>
+#include <random>
 #include <regex>
 #include <set>
 #include <stdexcept>
@@ -14,6 +15,7 @@
 
 #include "grpvss/report/program_version.hpp"
 #include "grpvss/report/thesis_error_text.hpp"
+#include "grpvss/report/thesis_output.hpp"
 #include "support/json_structure_check.hpp"
 #include "support/text_files.hpp"
 #include "support/thesis_sample_result.hpp"
@@ -283,6 +285,14 @@ std::string thesis_text_from_json(const json& report) {
                          error["code"].get<int>());
     }
   }
+  for (const json& error : report["errors"]) {
+    bool has_segment = false;
+    for (const json& segment : report["segments"]) has_segment |= segment["number"] == error["segment"];
+    if (has_segment) continue;
+    out += fmt::format("THIS PATH IS NOT QUALIFIED.\nTHE ERROR IS TYPE {}\nCHECK THE USER GUIDE "
+                       "FOR DETAILED ERROR DESCRIPTIONS\n\n",
+                       error["code"].get<int>());
+  }
   out += fmt::format("TOTAL {} STEPS IN THIS PATH\n{}\n", report["total_steps"].get<int>(),
                      report["collisions_detected"] ? "COLLISIONS DETECTED IN THIS PATH"
                                                    : "NO COLLISION DETECTED IN THIS PATH");
@@ -294,6 +304,102 @@ TEST(JsonReport, HoldsEverythingTheThesisOutputFileHolds) {
                                      test::ibm7545_joint_type_model(), sample_digests(), kPinnedTime);
   EXPECT_EQ(thesis_text_from_json(report),
             test::read_text_file(kSourceDir + "/tests/report/golden/thesis_output_sample.txt"));
+}
+
+/// A random but consistent run: 1-6 joints of random types, 0-4 segments of random kinds,
+/// 0-5 steps each, 0-3 interference points per step, 0-2 errors (some tied to no segment),
+/// values that include tiny negatives (the "-0.00" case).
+struct RandomRun {
+  certify::VerificationResult result;
+  RobotModel robot;
+};
+
+RandomRun random_run(std::mt19937& rng) {
+  const auto uniform_int = [&rng](int low, int high) {
+    return std::uniform_int_distribution<int>(low, high)(rng);
+  };
+  const auto value = [&rng, &uniform_int]() {
+    switch (uniform_int(0, 3)) {
+      case 0: return -1e-7 * std::uniform_real_distribution<double>(0.0, 1.0)(rng);
+      case 1: return std::round(std::uniform_real_distribution<double>(-200.0, 200.0)(rng));
+      default: return std::uniform_real_distribution<double>(-200.0, 200.0)(rng);
+    }
+  };
+  const auto vector = [&value](int size) {
+    Eigen::VectorXd v(size);
+    for (int i = 0; i < size; ++i) v[i] = value();
+    return v;
+  };
+  RandomRun run;
+  const int joints = uniform_int(1, 6);
+  for (int j = 0; j < joints; ++j) {
+    Joint joint;
+    joint.type = uniform_int(0, 1) == 0 ? JointType::kRevolute : JointType::kPrismatic;
+    run.robot.joints.push_back(joint);
+  }
+  run.robot.links.resize(static_cast<std::size_t>(joints) + 1);
+  auto& result = run.result;
+  result.tolerance = std::abs(value());
+  result.mode = uniform_int(0, 1) == 0 ? certify::ResolutionMode::kThesis
+                                       : certify::ResolutionMode::kCertified;
+  result.path_file_label = uniform_int(0, 1) == 0 ? "PATH" : "paths/p 2.txt";
+  const auto world = [&vector]() {
+    WorldTarget target;
+    target.position_W = vector(3);
+    target.axis_W = vector(3);
+    target.angle = vector(1)[0];
+    return target;
+  };
+  int step_index = 0;
+  const int segments = uniform_int(0, 4);
+  for (int k = 1; k <= segments; ++k) {
+    certify::SegmentRecord segment;
+    segment.number = k;
+    switch (uniform_int(0, 2)) {
+      case 0: segment.input.spec = PtpJointSegment{vector(joints), vector(joints)}; break;
+      case 1: segment.input.spec = PtpWorldSegment{world(), vector(joints)}; break;
+      default: segment.input.spec = CpLineSegment{world()}; break;
+    }
+    segment.start_q = vector(joints);
+    if (uniform_int(0, 3) > 0) segment.end_q = vector(joints);
+    const int steps = uniform_int(0, 5);
+    for (int s = 0; s < steps; ++s) {
+      certify::StepRecord step;
+      step.index = ++step_index;
+      step.segment = k;
+      step.q = vector(joints);
+      const int points = uniform_int(0, 3);
+      for (int p = 0; p < points; ++p) {
+        certify::InterferencePoint point;
+        point.p_W = vector(3);
+        step.interference_points.push_back(point);
+      }
+      step.unexpanded_collides = uniform_int(0, 9) == 0;
+      result.steps.push_back(step);
+    }
+    result.segments.push_back(segment);
+  }
+  const int errors = uniform_int(0, 2);
+  for (int e = 0; e < errors; ++e) {
+    certify::PathError error;
+    error.code = uniform_int(1, 9);
+    error.segment = uniform_int(0, segments + 1);
+    result.errors.push_back(error);
+  }
+  return run;
+}
+
+// Property, fixed seeds: for any run, the JSON holds what the thesis file prints (an
+// independent re-rendering from the JSON equals render_thesis_output()).
+TEST(JsonReport, ThesisFileRebuiltFromJsonEqualsRenderedThesisFileOnRandomRuns) {
+  for (unsigned seed = 1; seed <= 300; ++seed) {
+    std::mt19937 rng(seed);
+    const RandomRun run = random_run(rng);
+    const json report = report_to_json(run.result, run.robot, sample_digests(), kPinnedTime);
+    ASSERT_EQ(thesis_text_from_json(report), render_thesis_output(run.result, run.robot))
+        << "seed " << seed;
+    ASSERT_TRUE(test::check_json_structure(report, load_schema()).empty()) << "seed " << seed;
+  }
 }
 
 // docs/report-schema.md documents every field of docs/report.schema.json.
