@@ -1,0 +1,51 @@
+#pragma once
+/// \file
+/// \brief Upper bounds on how far any point of a link hull can travel between two
+/// configurations joined by a joint-monotone motion.
+///
+/// proof: proofs/motion-bound.md#lemma-motion-bound
+/// For hull h on link i and monotone joint motion from q_k to q_{k+1}:
+/// \f[ M_h = \sum_{j \le i,\ \mathrm{rev}} |\Delta q_j|\, R_{jh} + \sum_{j \le i,\ \mathrm{pris}} |\Delta q_j| \f]
+/// with the configuration-independent radius
+/// \f[ R_{jh} = |a_j| + \sum_{m=j+1}^{i} (|a_m| + d^{\max}_m) + \max_{v \in h} \|v\|_1 . \f]
+/// Every term is a sum of doubles, so a checker can decide the bound exactly.
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "grpvss/model/robot_model.hpp"
+
+namespace grpvss::certify {
+
+/// \brief R_{jh} for every hull of every link, computed once per robot.
+class HullRadiusTable {
+ public:
+  explicit HullRadiusTable(const RobotModel& robot);
+
+  /// Radius bound of hull `hull` of link `link` about the axis of joint `joint` (1-based,
+  /// joint <= link). Rounded upward so that it is >= the exact real-number formula.
+  double radius(int link, int hull, int joint) const;
+
+  /// Upper bound (rounded upward) on the path length of any point of the hull for a
+  /// joint-monotone motion with increments `dq` (library units).
+  double hull_motion_bound(int link, int hull, const Eigen::VectorXd& dq) const;
+
+  /// Max over the link's hulls of hull_motion_bound.
+  double link_motion_bound(int link, const Eigen::VectorXd& dq) const;
+
+  int link_count() const { return static_cast<int>(radius_.size()); }
+  int hull_count(int link) const { return static_cast<int>(radius_[link].size()); }
+
+ private:
+  std::vector<JointType> joint_types_;
+  // radius_[link][hull][joint-1]
+  std::vector<std::vector<std::vector<double>>> radius_;
+};
+
+/// The exact-arithmetic reference of HullRadiusTable::radius, used by the certificate
+/// checker: returns true when `claimed` >= R_{jh} computed in rational arithmetic.
+bool radius_bound_holds_exactly(const RobotModel& robot, int link, int hull, int joint,
+                                double claimed);
+
+}  // namespace grpvss::certify
