@@ -8,6 +8,9 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include "support/text_files.hpp"
 
@@ -97,8 +100,37 @@ TEST(AtomicOutput, MissingDirectoryIsAClearInputError) {
   std::filesystem::remove_all(dir);
 }
 
-// The test runs as root here, where permission bits do not stop writes; a regular file used
-// as a directory is unwritable for everybody.
+// A read-only directory. Root ignores permission bits, so the write happens in a child
+// process that, when run as root, first drops to the unprivileged uid/gid 65534 ("nobody").
+TEST(AtomicOutput, ReadOnlyDirectoryIsAClearInputError) {
+  const std::string dir = make_temporary_directory("atomic");
+  ASSERT_EQ(::chmod(dir.c_str(), 0555), 0);
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    if (::geteuid() == 0 && (::setgid(65534) != 0 || ::setuid(65534) != 0)) ::_exit(3);
+    try {
+      write_file_atomically(dir + "/out.txt", "data", false);
+      ::_exit(1);  // wrote into a read-only directory
+    } catch (const InputError& error) {
+      const bool clear = error.file() == dir + "/out.txt" &&
+                         error.expected() == "a writable output location" &&
+                         error.found() == "creating a temporary file failed: Permission denied";
+      ::_exit(clear ? 0 : 2);
+    } catch (...) {
+      ::_exit(4);
+    }
+  }
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0) << "1: wrote, 2: unclear error, 3: cannot drop root, 4: other";
+  EXPECT_TRUE(directory_entries(dir).empty());
+  ::chmod(dir.c_str(), 0755);
+  std::filesystem::remove_all(dir);
+}
+
+// A regular file used as a directory is unwritable for everybody, root included.
 TEST(AtomicOutput, FileInPlaceOfDirectoryIsAClearInputError) {
   const std::string dir = make_temporary_directory("atomic");
   write_plain(dir + "/plain", "not a directory");
