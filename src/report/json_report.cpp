@@ -185,7 +185,7 @@ class JsonWriter {
         {"collision_step",
          result_.collision_step ? json(*result_.collision_step) : json(nullptr)},
         {"path_file_label", result_.path_file_label},
-        {"total_steps", result_.steps.empty() ? 0 : result_.steps.back().index},
+        {"total_steps", total_steps(result_)},
         {"total_cycle_time", finite(result_.total_cycle_time, "total_cycle_time")},
         {"segments", segments},
         {"steps", steps},

@@ -219,11 +219,14 @@ TEST(JsonReport, NewErrorCodesHaveNoThesisText) {
   EXPECT_TRUE(report["errors"][0]["thesis_text"].is_null());
 }
 
-TEST(JsonReport, NanAndWrongJointCountAreLogicErrors) {
+TEST(JsonReport, NanWrongJointCountAndUnorderedStepsAreLogicErrors) {
   const auto robot = test::ibm7545_joint_type_model();
   auto nan_time = test::thesis_a3_sample_result();
   nan_time.steps[2].path_time = std::nan("");
   EXPECT_THROW(report_to_json(nan_time, robot, sample_digests(), kPinnedTime), std::logic_error);
+  auto unordered = test::thesis_a3_sample_result();
+  unordered.steps[1].index = 1;
+  EXPECT_THROW(report_to_json(unordered, robot, sample_digests(), kPinnedTime), std::logic_error);
   auto short_q = test::thesis_a3_sample_result();
   short_q.steps[0].q = Eigen::Vector3d(0, 0, 0);
   EXPECT_THROW(report_to_json(short_q, robot, sample_digests(), kPinnedTime), std::logic_error);
