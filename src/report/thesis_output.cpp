@@ -59,7 +59,7 @@ class ThesisWriter {
     for (const certify::PathError& error : result_.errors) {
       if (!has_segment(error.segment)) error_block(error);
     }
-    line(fmt::format("TOTAL {} STEPS IN THIS PATH", total_steps()));
+    line(fmt::format("TOTAL {} STEPS IN THIS PATH", total_steps(result_)));
     line(thesis_reports_collision(result_) ? "COLLISIONS DETECTED IN THIS PATH"
                                            : "NO COLLISION DETECTED IN THIS PATH");
     return std::move(out_);
@@ -77,16 +77,6 @@ class ThesisWriter {
       if (segment.number == number) return true;
     }
     return false;
-  }
-
-  /// Steps are numbered 1, 2, ... over the whole path, so the last index is the count.
-  int total_steps() const {
-    int previous = 0;
-    for (const auto& step : result_.steps) {
-      if (step.index <= previous) throw std::logic_error("thesis output: steps out of order");
-      previous = step.index;
-    }
-    return previous;
   }
 
   std::vector<double> in_file_units(const Eigen::VectorXd& q) const {
@@ -175,6 +165,15 @@ bool thesis_reports_collision(const certify::VerificationResult& result) {
     }
   }
   return false;
+}
+
+int total_steps(const certify::VerificationResult& result) {
+  int previous = 0;
+  for (const auto& step : result.steps) {
+    if (step.index <= previous) throw std::logic_error("report: step indices do not increase");
+    previous = step.index;
+  }
+  return previous;
 }
 
 std::string render_thesis_output(const certify::VerificationResult& result,

@@ -2,10 +2,15 @@
 
 #include <filesystem>
 #include <fstream>
+#include <atomic>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include "support/text_files.hpp"
 
@@ -95,8 +100,37 @@ TEST(AtomicOutput, MissingDirectoryIsAClearInputError) {
   std::filesystem::remove_all(dir);
 }
 
-// The test runs as root here, where permission bits do not stop writes; a regular file used
-// as a directory is unwritable for everybody.
+// A read-only directory. Root ignores permission bits, so the write happens in a child
+// process that, when run as root, first drops to the unprivileged uid/gid 65534 ("nobody").
+TEST(AtomicOutput, ReadOnlyDirectoryIsAClearInputError) {
+  const std::string dir = make_temporary_directory("atomic");
+  ASSERT_EQ(::chmod(dir.c_str(), 0555), 0);
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    if (::geteuid() == 0 && (::setgid(65534) != 0 || ::setuid(65534) != 0)) ::_exit(3);
+    try {
+      write_file_atomically(dir + "/out.txt", "data", false);
+      ::_exit(1);  // wrote into a read-only directory
+    } catch (const InputError& error) {
+      const bool clear = error.file() == dir + "/out.txt" &&
+                         error.expected() == "a writable output location" &&
+                         error.found() == "creating a temporary file failed: Permission denied";
+      ::_exit(clear ? 0 : 2);
+    } catch (...) {
+      ::_exit(4);
+    }
+  }
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0) << "1: wrote, 2: unclear error, 3: cannot drop root, 4: other";
+  EXPECT_TRUE(directory_entries(dir).empty());
+  ::chmod(dir.c_str(), 0755);
+  std::filesystem::remove_all(dir);
+}
+
+// A regular file used as a directory is unwritable for everybody, root included.
 TEST(AtomicOutput, FileInPlaceOfDirectoryIsAClearInputError) {
   const std::string dir = make_temporary_directory("atomic");
   write_plain(dir + "/plain", "not a directory");
@@ -140,6 +174,37 @@ TEST(AtomicOutput, RelativePathUsesTheCurrentDirectory) {
   std::filesystem::current_path(previous);
   EXPECT_EQ(read_text_file(dir + "/relative.txt"), "r");
   EXPECT_EQ(directory_entries(dir), std::vector<std::string>{"relative.txt"});
+  std::filesystem::remove_all(dir);
+}
+
+
+// No check-then-act race: of several writers racing for one new name, exactly one wins and
+// the file holds exactly the winner's content.
+TEST(AtomicOutput, ConcurrentWritersWithoutForceExactlyOneWins) {
+  const std::string dir = make_temporary_directory("atomic");
+  for (int round = 0; round < 20; ++round) {
+    const std::string path = dir + "/race" + std::to_string(round) + ".txt";
+    std::atomic<int> wins{0};
+    std::atomic<int> refusals{0};
+    std::atomic<int> winner{-1};
+    std::vector<std::thread> writers;
+    for (int w = 0; w < 6; ++w) {
+      writers.emplace_back([&, w] {
+        try {
+          write_file_atomically(path, "writer " + std::to_string(w) + "\n", false);
+          ++wins;
+          winner = w;
+        } catch (const OutputExistsError&) {
+          ++refusals;
+        }
+      });
+    }
+    for (auto& writer : writers) writer.join();
+    EXPECT_EQ(wins.load(), 1);
+    EXPECT_EQ(refusals.load(), 5);
+    EXPECT_EQ(read_text_file(path), "writer " + std::to_string(winner.load()) + "\n");
+  }
+  EXPECT_EQ(directory_entries(dir).size(), 20u);  // the 20 outputs, no temporary left
   std::filesystem::remove_all(dir);
 }
 

@@ -26,7 +26,7 @@ bool is_number_line(const std::string& line) {
 }
 
 /// A.3 as the thesis program wrote it, undoing what the PDF-to-text conversion did: leading
-/// blanks (5 lines), blank lines inside a block of numbers (between "... JOINT VALUES ARE"
+/// blanks (7 lines), blank lines inside a block of numbers (between "... JOINT VALUES ARE"
 /// and its numbers in steps 42-45, and amid the points of step 45), and the elision marks
 /// "." / ". ." where the thesis left steps out.
 std::vector<std::string> thesis_a3_as_written() {

@@ -9,7 +9,8 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-double radians(double degrees) { return degrees * kPi / 180.0; }
+// As the readers convert (io/units.hpp): degrees * (pi/180).
+double radians(double degrees) { return degrees * (kPi / 180.0); }
 
 Eigen::VectorXd joints(std::initializer_list<double> file_values) {
   Eigen::VectorXd q(static_cast<Eigen::Index>(file_values.size()));

@@ -12,8 +12,9 @@
 
 namespace grpvss::report {
 
-/// \brief The output path already exists and --force was not given. Like the thesis program,
-/// GRPVSS refuses to overwrite an existing output name.
+/// \brief The output path already exists and --force was not given. Like the thesis program
+/// (A.2.2: "If one file with this name already exists in the disk, the execution of GRPVSS
+/// will be terminated."), GRPVSS refuses to overwrite an existing output name.
 class OutputExistsError : public InputError {
  public:
   explicit OutputExistsError(const std::string& path);

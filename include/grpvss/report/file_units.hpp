@@ -11,7 +11,7 @@
 
 namespace grpvss::report {
 
-/// Radians -> degrees.
+/// Radians -> degrees: `radians / (pi/180)`, the inverse of the readers' conversion.
 double degrees(double radians);
 
 /// A joint value (or joint speed) in file units: degrees for revolute joints, unchanged for

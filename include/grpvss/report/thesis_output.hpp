@@ -34,4 +34,9 @@ std::string render_thesis_output(const certify::VerificationResult& result,
 /// interference points, an interfering expanded robot, or a colliding unexpanded robot.
 bool thesis_reports_collision(const certify::VerificationResult& result);
 
+/// The n of `TOTAL n STEPS IN THIS PATH`: the index of the last step (steps are numbered
+/// 1, 2, ... over the whole path), 0 without steps.
+/// \throws std::logic_error if the step indices do not increase.
+int total_steps(const certify::VerificationResult& result);
+
 }  // namespace grpvss::report

@@ -1,0 +1,37 @@
+#pragma once
+/// \file
+/// \brief SHA-256 digests of the three input files, so a report names exactly what it verified.
+/// The hashing is OpenSSL's (libcrypto), never hand-written.
+
+#include <string>
+#include <string_view>
+
+namespace grpvss::report {
+
+/// One input file as the user named it, and the SHA-256 of its bytes (64 lowercase hex digits).
+struct InputFileDigest {
+  std::string file;
+  std::string sha256;
+};
+
+/// The robot, environment and path files of one run.
+struct InputDigests {
+  InputFileDigest robot;
+  InputFileDigest environment;
+  InputFileDigest path;
+};
+
+/// SHA-256 of `bytes`, lowercase hex.
+std::string sha256_hex(std::string_view bytes);
+
+/// SHA-256 of the file's bytes, lowercase hex.
+/// \throws InputError (file = `path`, line 0) if the file cannot be read.
+std::string sha256_hex_of_file(const std::string& path);
+
+/// Digests of the three input files, each recorded under the name given here.
+/// \throws InputError if a file cannot be read.
+InputDigests digest_input_files(const std::string& robot_file,
+                                const std::string& environment_file,
+                                const std::string& path_file);
+
+}  // namespace grpvss::report
