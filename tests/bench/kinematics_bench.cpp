@@ -1,4 +1,4 @@
-// Forward kinematics, hull placement and IK timings (results: docs/performance.md).
+// Forward kinematics, hull placement and IK timings (Google Benchmark; no assertions).
 #include <random>
 
 #include <benchmark/benchmark.h>
