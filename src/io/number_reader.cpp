@@ -94,6 +94,11 @@ long long parse_integer_field(std::string_view field, const std::string& file_na
 
 NumberReader::NumberReader(std::string_view text, std::string file_name)
     : text_(text), file_name_(std::move(file_name)) {
+  // Editors on Windows may prepend a UTF-8 byte-order mark; it is not content.
+  constexpr std::string_view kByteOrderMark = "\xEF\xBB\xBF";
+  if (text_.substr(0, kByteOrderMark.size()) == kByteOrderMark) {
+    text_.remove_prefix(kByteOrderMark.size());
+  }
   int lines = 0;
   for (const char c : text_) lines += (c == '\n');
   if (!text_.empty() && text_.back() != '\n') ++lines;

@@ -4,12 +4,17 @@
 
 #include <array>
 #include <string>
+#include <utility>
 
 #include "grpvss/common/input_error.hpp"
 #include "grpvss/kinematics/ik_plugin.h"
+#include "grpvss/kinematics/kinematic_chain.hpp"
 
 namespace grpvss::kinematics {
 namespace {
+
+// Roundoff may leave an exact boundary solution a few ulps outside a limit.
+constexpr double kLimitSlack = 1e-9;
 
 using AbiVersionFunction = int (*)();
 using SolveFunction = int (*)(const double*, const double*, int, double*);
@@ -24,12 +29,13 @@ std::string last_dl_error() {
 class PluginIk final : public InverseKinematics {
  public:
   PluginIk(std::string path, void* handle, SolveFunction solve_function, std::string name,
-           int joint_count)
+           const RobotModel& model)
       : path_(std::move(path)),
         handle_(handle),
         solve_(solve_function),
         name_(std::move(name)),
-        joint_count_(joint_count) {}
+        chain_(make_chain(model)),
+        joint_count_(model.joint_count()) {}
   PluginIk(const PluginIk&) = delete;
   PluginIk& operator=(const PluginIk&) = delete;
   ~PluginIk() override { dlclose(handle_); }
@@ -41,11 +47,19 @@ class PluginIk final : public InverseKinematics {
     }
     std::array<double, 16> X_row_major{};
     for (int r = 0; r < 4; ++r) {
-      for (int c = 0; c < 4; ++c) X_row_major[static_cast<std::size_t>(4 * r + c)] = X_WE_target.matrix()(r, c);
+      for (int c = 0; c < 4; ++c) {
+        X_row_major[static_cast<std::size_t>(4 * r + c)] = X_WE_target.matrix()(r, c);
+      }
     }
     Eigen::VectorXd q_out = q_near;
     const int code = solve_(X_row_major.data(), q_near.data(), joint_count_, q_out.data());
-    if (code == GRPVSS_IK_SOLVED) return {IkStatus::kSolved, q_out};
+    if (code == GRPVSS_IK_SOLVED) {
+      // The plug-in is user code: hold it to its contract before anything moves.
+      if (!chain_.within_limits(q_out, kLimitSlack) || !q_out.allFinite()) {
+        throw InputError(path_, 0, "grpvss_ik_solve to return finite joint values within the limits");
+      }
+      return {IkStatus::kSolved, q_out};
+    }
     if (code == GRPVSS_IK_OUT_OF_WORKSPACE) return {IkStatus::kOutOfWorkspace, {}};
     throw InputError(path_, 0, "grpvss_ik_solve to return 0 (solved) or 1 (out of workspace)",
                      std::to_string(code));
@@ -58,6 +72,7 @@ class PluginIk final : public InverseKinematics {
   void* handle_;
   SolveFunction solve_;
   std::string name_;
+  KinematicChain chain_;
   int joint_count_;
 };
 
@@ -95,8 +110,7 @@ std::unique_ptr<InverseKinematics> load_ik_plugin(const std::string& shared_libr
   }
   std::string name = "plug-in " + shared_library_path;
   if (name_function != nullptr && name_function() != nullptr) name = name_function();
-  return std::make_unique<PluginIk>(shared_library_path, handle, solve, name,
-                                    model.joint_count());
+  return std::make_unique<PluginIk>(shared_library_path, handle, solve, name, model);
 }
 
 }  // namespace grpvss::kinematics

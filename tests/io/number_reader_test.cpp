@@ -33,6 +33,18 @@ TEST(NumberReader, ReadsFortranStyleNumbersExactlyAsFromChars) {
   EXPECT_EQ(row.values, (std::vector<double>{2.0, 0.5, 3.0, -100.0, 1e-3, 0.1}));
 }
 
+TEST(NumberReader, IgnoresAByteOrderMarkOnlyAtTheStart) {
+  NumberReader reader("\xEF\xBB\xBF" "4\n", "t.txt");
+  EXPECT_EQ(reader.read_integer("a count", 0, 9), 4);
+  expect_input_error(
+      [] {
+        NumberReader later("1\n\xEF\xBB\xBF" "4\n", "t.txt");
+        later.read_number("a value");
+        later.read_number("a value");
+      },
+      "t.txt", 2, "t.txt:2: expected a number for a value, found '\\xef\\xbb\\xbf4'");
+}
+
 TEST(NumberReader, AcceptsMagnitudeUpToOneBillion) {
   NumberReader reader("1e9, -1000000000", "t.txt");
   EXPECT_EQ(reader.read_numbers(2, "a row").values, (std::vector<double>{1e9, -1e9}));

@@ -5,7 +5,8 @@
 ///
 /// Syntax of one line: numbers separated by commas and/or blanks (spaces, tabs), a trailing
 /// comma allowed, empty fields (`1,,2`) rejected. `#` starts a comment that runs to the end of
-/// the line. Lines that are blank after removing the comment are skipped. A number is what
+/// the line. Lines that are blank after removing the comment are skipped. A leading UTF-8
+/// byte-order mark is ignored. A number is what
 /// `std::from_chars` reads in general format (`2.`, `.5`, `1e3`, with an optional leading `+`);
 /// it must be finite and satisfy \f$|x| \le 10^9\f$. Lines are at most 4096 characters long.
 /// Every failure throws grpvss::InputError naming the file, the 1-based line, what was
