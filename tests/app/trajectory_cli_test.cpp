@@ -12,14 +12,14 @@ namespace {
 
 const std::string kData = std::string(GRPVSS_SOURCE_DIR) + "/data/ibm7545/";
 
-struct Run {
+struct CliRun {
   int exit_code = -1;
   std::string out;
 };
 
-Run run(const std::string& arguments) {
+CliRun run(const std::string& arguments) {
   const std::string command = std::string(GRPVSS_CLI) + " trajectory " + arguments + " 2>/dev/null";
-  Run result;
+  CliRun result;
   FILE* pipe = popen(command.c_str(), "r");
   if (!pipe) return result;
   char buffer[4096];
@@ -35,7 +35,7 @@ std::string sample_args() {
 }
 
 TEST(TrajectoryCli, TextOutputOfTheThesisSample) {
-  const Run r = run(sample_args() + " --at 1.025,2.503,3.5,4.483");
+  const CliRun r = run(sample_args() + " --at 1.025,2.503,3.5,4.483");
   EXPECT_EQ(r.exit_code, 1);  // segment 4 is refused: a thesis error
   EXPECT_NE(r.out.find("ENDING JOINT VALUES     61.16    79.90     2.45   171.06"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("ENDING JOINT VALUES    166.68    75.16     8.45   -58.16"), std::string::npos) << r.out;
@@ -52,7 +52,7 @@ TEST(TrajectoryCli, TextOutputOfTheThesisSample) {
 }
 
 TEST(TrajectoryCli, JsonDocumentCarriesSegmentsSamplesAndErrors) {
-  const Run r = run(sample_args() + " --json --step 10 --timing synchronized");
+  const CliRun r = run(sample_args() + " --json --step 10 --timing synchronized");
   ASSERT_EQ(r.exit_code, 1);
   const nlohmann::json doc = nlohmann::json::parse(r.out);
   EXPECT_EQ(doc["format"], "grpvss-trajectory");
@@ -75,7 +75,7 @@ TEST(TrajectoryCli, JsonDocumentCarriesSegmentsSamplesAndErrors) {
 }
 
 TEST(TrajectoryCli, PathWithoutErrorsExitsZero) {
-  const Run r = run("--robot " + kData + "robot.txt --path " + kData + "path.txt --json");
+  const CliRun r = run("--robot " + kData + "robot.txt --path " + kData + "path.txt --json");
   EXPECT_EQ(r.exit_code, 0);
   const nlohmann::json doc = nlohmann::json::parse(r.out);
   EXPECT_EQ(doc["qualified"], true);
@@ -96,7 +96,7 @@ TEST(TrajectoryCli, UnknownSegmentTypeIsAnInputError) {
 TEST(TrajectoryCli, ZeroLengthCpIsError4) {
   // Home puts the end effector at (25.6, 0, 10.45): a CP "to" that point does not move.
   const std::string path = write_temp("grpvss_zero_cp_path.txt", "1\n3\n25.6,0.,10.45,0.,0.,1.,0.\n");
-  const Run r = run("--robot " + kData + "robot.txt --path " + path);
+  const CliRun r = run("--robot " + kData + "robot.txt --path " + path);
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.out.find("THE ERROR IS TYPE 4 IN SEGMENT 1\nThe movement of the end effector in the CP "
                        "operation of motion segment 1 in the input path file is zero."),
@@ -112,7 +112,7 @@ TEST(TrajectoryCli, BadProfileTableAndBadIkAreInputErrors) {
 }
 
 TEST(TrajectoryCli, ProfileTableChangesTheTiming) {
-  const Run r = run(sample_args() + " --json --profile-table " + std::string(GRPVSS_SOURCE_DIR) +
+  const CliRun r = run(sample_args() + " --json --profile-table " + std::string(GRPVSS_SOURCE_DIR) +
                     "/data/motion/example-table.txt");
   ASSERT_EQ(r.exit_code, 1);
   const nlohmann::json doc = nlohmann::json::parse(r.out);
