@@ -1,0 +1,76 @@
+#include "grpvss/kinematics/forward_kinematics.hpp"
+
+#include <stdexcept>
+#include <string>
+
+namespace grpvss::kinematics {
+
+Workspace::Workspace(const RobotModel& model) {
+  const std::size_t n = model.joints.size();
+  X_WL.assign(n + 1, Eigen::Isometry3d::Identity());
+  X_WJ.assign(n, Eigen::Isometry3d::Identity());
+  hull_points_W.resize(model.links.size());
+  for (std::size_t i = 0; i < model.links.size(); ++i) {
+    const auto& hulls = model.links[i].hulls;
+    hull_points_W[i].resize(hulls.size());
+    for (std::size_t h = 0; h < hulls.size(); ++h) {
+      hull_points_W[i][h].assign(hulls[h].points.size(), Eigen::Vector3d::Zero());
+    }
+  }
+}
+
+void forward_kinematics(const KinematicChain& chain, const Eigen::VectorXd& q, Workspace& ws) {
+  const std::size_t n = chain.joints.size();
+  if (static_cast<std::size_t>(q.size()) != n || ws.X_WL.size() != n + 1 || ws.X_WJ.size() != n) {
+    throw std::logic_error("forward_kinematics: chain has " + std::to_string(n) +
+                           " joints, q has " + std::to_string(q.size()) + ", workspace has " +
+                           std::to_string(ws.X_WL.size()) + " frames");
+  }
+  // Strict left-to-right accumulation, one isometry product per factor: the rounding bound
+  // is proved for exactly this order. proof: proofs/fk-rounding.md#fk-rounding
+  Eigen::Isometry3d X = Eigen::Isometry3d::Identity();
+  ws.X_WL[0] = X;
+  for (std::size_t i = 0; i < n; ++i) {
+    const ChainJoint& joint = chain.joints[i];
+    X = X * joint.X_PJ;
+    ws.X_WJ[i] = X;
+    X = X * joint_motion(joint.type, q[static_cast<Eigen::Index>(i)]);
+    X = X * joint.X_JC;
+    ws.X_WL[i + 1] = X;
+  }
+}
+
+void place_hull_points(const RobotModel& model, Workspace& ws) {
+  if (ws.hull_points_W.size() != model.links.size() || ws.X_WL.size() != model.links.size()) {
+    throw std::logic_error("place_hull_points: workspace not sized for this model");
+  }
+  for (std::size_t i = 0; i < model.links.size(); ++i) {
+    const Eigen::Isometry3d& X_WL = ws.X_WL[i];
+    const auto& hulls = model.links[i].hulls;
+    for (std::size_t h = 0; h < hulls.size(); ++h) {
+      const auto& points_L = hulls[h].points;
+      auto& points_W = ws.hull_points_W[i][h];
+      if (points_W.size() != points_L.size()) {
+        throw std::logic_error("place_hull_points: workspace not sized for this model");
+      }
+      for (std::size_t k = 0; k < points_L.size(); ++k) points_W[k] = X_WL * points_L[k];
+    }
+  }
+}
+
+Eigen::Isometry3d end_effector_pose(const KinematicChain& chain, const Eigen::VectorXd& q) {
+  if (static_cast<std::size_t>(q.size()) != chain.joints.size()) {
+    throw std::logic_error("end_effector_pose: q has " + std::to_string(q.size()) +
+                           " values for " + std::to_string(chain.joints.size()) + " joints");
+  }
+  Eigen::Isometry3d X = Eigen::Isometry3d::Identity();
+  for (std::size_t i = 0; i < chain.joints.size(); ++i) {
+    const ChainJoint& joint = chain.joints[i];
+    X = X * joint.X_PJ;
+    X = X * joint_motion(joint.type, q[static_cast<Eigen::Index>(i)]);
+    X = X * joint.X_JC;
+  }
+  return X;
+}
+
+}  // namespace grpvss::kinematics
