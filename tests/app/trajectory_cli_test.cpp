@@ -111,6 +111,30 @@ TEST(TrajectoryCli, BadProfileTableAndBadIkAreInputErrors) {
   EXPECT_EQ(run(sample_args() + " --timing sometimes").exit_code, 2);
 }
 
+TEST(TrajectoryCli, EveryIkChoiceGivesTheSampleEndJoints) {
+  for (const std::string& ik : {std::string("ibm7545"), std::string("numeric"),
+                                std::string("plugin:") + GRPVSS_IK_PLUGIN_GOOD}) {
+    const CliRun r = run(sample_args() + " --json --ik " + ik);
+    ASSERT_EQ(r.exit_code, 1) << ik;
+    const nlohmann::json doc = nlohmann::json::parse(r.out);
+    ASSERT_EQ(doc["segments"].size(), 3u) << ik;
+    const double expected[3][4] = {{61.16, 79.90, 2.45, 171.06}, {166.68, 75.16, 8.45, -58.16}, {50, 50, 5, 50}};
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 4; ++j)
+        EXPECT_NEAR(doc["segments"][i]["end_joints"][j].get<double>(), expected[i][j], 0.01) << ik;
+    EXPECT_EQ(doc["errors"][0]["code"], 3) << ik;
+  }
+  EXPECT_EQ(run(sample_args() + " --ik plugin:" + GRPVSS_IK_PLUGIN_WRONG_ABI).exit_code, 2);
+}
+
+TEST(TrajectoryCli, BadTimesAreInputErrors) {
+  EXPECT_EQ(run(sample_args() + " --at 1,-2").exit_code, 2);
+  EXPECT_EQ(run(sample_args() + " --step 0").exit_code, 2);
+  EXPECT_EQ(run(sample_args() + " --step 1e-9").exit_code, 2);  // more than 10^6 samples
+  EXPECT_EQ(run(sample_args() + " --cp-speed 0").exit_code, 2);
+  EXPECT_EQ(run("--path " + kData + "path.txt").exit_code, 2);  // --robot missing
+}
+
 TEST(TrajectoryCli, ProfileTableChangesTheTiming) {
   const CliRun r = run(sample_args() + " --json --profile-table " + std::string(GRPVSS_SOURCE_DIR) +
                     "/data/motion/example-table.txt");
