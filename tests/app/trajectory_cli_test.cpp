@@ -12,14 +12,14 @@ namespace {
 
 const std::string kData = std::string(GRPVSS_SOURCE_DIR) + "/data/ibm7545/";
 
-struct Run {
+struct CliRun {
   int exit_code = -1;
   std::string out;
 };
 
-Run run(const std::string& arguments) {
+CliRun run(const std::string& arguments) {
   const std::string command = std::string(GRPVSS_CLI) + " trajectory " + arguments + " 2>/dev/null";
-  Run result;
+  CliRun result;
   FILE* pipe = popen(command.c_str(), "r");
   if (!pipe) return result;
   char buffer[4096];
@@ -35,7 +35,7 @@ std::string sample_args() {
 }
 
 TEST(TrajectoryCli, TextOutputOfTheThesisSample) {
-  const Run r = run(sample_args() + " --at 1.025,2.503,3.5,4.483");
+  const CliRun r = run(sample_args() + " --at 1.025,2.503,3.5,4.483");
   EXPECT_EQ(r.exit_code, 1);  // segment 4 is refused: a thesis error
   EXPECT_NE(r.out.find("ENDING JOINT VALUES     61.16    79.90     2.45   171.06"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("ENDING JOINT VALUES    166.68    75.16     8.45   -58.16"), std::string::npos) << r.out;
@@ -52,7 +52,7 @@ TEST(TrajectoryCli, TextOutputOfTheThesisSample) {
 }
 
 TEST(TrajectoryCli, JsonDocumentCarriesSegmentsSamplesAndErrors) {
-  const Run r = run(sample_args() + " --json --step 10 --timing synchronized");
+  const CliRun r = run(sample_args() + " --json --step 10 --timing synchronized");
   ASSERT_EQ(r.exit_code, 1);
   const nlohmann::json doc = nlohmann::json::parse(r.out);
   EXPECT_EQ(doc["format"], "grpvss-trajectory");
@@ -75,7 +75,7 @@ TEST(TrajectoryCli, JsonDocumentCarriesSegmentsSamplesAndErrors) {
 }
 
 TEST(TrajectoryCli, PathWithoutErrorsExitsZero) {
-  const Run r = run("--robot " + kData + "robot.txt --path " + kData + "path.txt --json");
+  const CliRun r = run("--robot " + kData + "robot.txt --path " + kData + "path.txt --json");
   EXPECT_EQ(r.exit_code, 0);
   const nlohmann::json doc = nlohmann::json::parse(r.out);
   EXPECT_EQ(doc["qualified"], true);
@@ -96,7 +96,7 @@ TEST(TrajectoryCli, UnknownSegmentTypeIsAnInputError) {
 TEST(TrajectoryCli, ZeroLengthCpIsError4) {
   // Home puts the end effector at (25.6, 0, 10.45): a CP "to" that point does not move.
   const std::string path = write_temp("grpvss_zero_cp_path.txt", "1\n3\n25.6,0.,10.45,0.,0.,1.,0.\n");
-  const Run r = run("--robot " + kData + "robot.txt --path " + path);
+  const CliRun r = run("--robot " + kData + "robot.txt --path " + path);
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.out.find("THE ERROR IS TYPE 4 IN SEGMENT 1\nThe movement of the end effector in the CP "
                        "operation of motion segment 1 in the input path file is zero."),
@@ -111,8 +111,32 @@ TEST(TrajectoryCli, BadProfileTableAndBadIkAreInputErrors) {
   EXPECT_EQ(run(sample_args() + " --timing sometimes").exit_code, 2);
 }
 
+TEST(TrajectoryCli, EveryIkChoiceGivesTheSampleEndJoints) {
+  for (const std::string& ik : {std::string("ibm7545"), std::string("numeric"),
+                                std::string("plugin:") + GRPVSS_IK_PLUGIN_GOOD}) {
+    const CliRun r = run(sample_args() + " --json --ik " + ik);
+    ASSERT_EQ(r.exit_code, 1) << ik;
+    const nlohmann::json doc = nlohmann::json::parse(r.out);
+    ASSERT_EQ(doc["segments"].size(), 3u) << ik;
+    const double expected[3][4] = {{61.16, 79.90, 2.45, 171.06}, {166.68, 75.16, 8.45, -58.16}, {50, 50, 5, 50}};
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 4; ++j)
+        EXPECT_NEAR(doc["segments"][i]["end_joints"][j].get<double>(), expected[i][j], 0.01) << ik;
+    EXPECT_EQ(doc["errors"][0]["code"], 3) << ik;
+  }
+  EXPECT_EQ(run(sample_args() + " --ik plugin:" + GRPVSS_IK_PLUGIN_WRONG_ABI).exit_code, 2);
+}
+
+TEST(TrajectoryCli, BadTimesAreInputErrors) {
+  EXPECT_EQ(run(sample_args() + " --at 1,-2").exit_code, 2);
+  EXPECT_EQ(run(sample_args() + " --step 0").exit_code, 2);
+  EXPECT_EQ(run(sample_args() + " --step 1e-9").exit_code, 2);  // more than 10^6 samples
+  EXPECT_EQ(run(sample_args() + " --cp-speed 0").exit_code, 2);
+  EXPECT_EQ(run("--path " + kData + "path.txt").exit_code, 2);  // --robot missing
+}
+
 TEST(TrajectoryCli, ProfileTableChangesTheTiming) {
-  const Run r = run(sample_args() + " --json --profile-table " + std::string(GRPVSS_SOURCE_DIR) +
+  const CliRun r = run(sample_args() + " --json --profile-table " + std::string(GRPVSS_SOURCE_DIR) +
                     "/data/motion/example-table.txt");
   ASSERT_EQ(r.exit_code, 1);
   const nlohmann::json doc = nlohmann::json::parse(r.out);

@@ -68,6 +68,23 @@ TEST(ProfileTable, AppliedToAMoveScalesProgressByTheIncrement) {
   EXPECT_EQ(motion.joints_at(1.0), q_f);
 }
 
+TEST(ProfileTable, SynchronizedTimingStretchesShorterColumns) {
+  // Example table: joints 1, 2, 4 last 8 s, joint 3 lasts 6 s (smoothstep s(u), u = t / 6).
+  auto table = std::make_shared<const ProfileTable>(
+      ProfileTable::read(std::string(GRPVSS_SOURCE_DIR) + "/data/motion/example-table.txt"));
+  const RobotModel robot = testing::cartesian_robot();
+  const Eigen::VectorXd q_s = Eigen::VectorXd::Zero(4), q_f = Eigen::VectorXd::Constant(4, 2.0);
+  const PtpMotion free = PtpMotion::plan(robot, q_s, q_f, q_f, PtpTiming::kIndependent, table);
+  const PtpMotion sync = PtpMotion::plan(robot, q_s, q_f, q_f, PtpTiming::kSynchronized, table);
+  EXPECT_EQ(free.joints()[2].duration(), 6.0);
+  EXPECT_EQ(sync.joints()[2].duration(), 8.0);
+  // Stretched by k = 6/8: at t = 4 s joint 3 is where the table has it at 3 s (s = 0.5),
+  // moving k times slower (ds/dt = 0.25 / s at 3 s in the table).
+  EXPECT_NEAR(sync.joints_at(4.0)[2], 1.0, 1e-12);
+  EXPECT_NEAR(sync.velocities_at(4.0)[2], 2.0 * 0.25 * 0.75, 1e-12);
+  EXPECT_NEAR(free.joints_at(3.0)[2], 1.0, 1e-12);
+}
+
 TEST(ProfileTable, JointCountMustMatchTheRobot) {
   auto table = std::make_shared<const ProfileTable>(ProfileTable::parse(smoothstep_table(3), "t3.txt"));
   const RobotModel robot = testing::cartesian_robot();
