@@ -35,6 +35,16 @@ bool sphere_witness(const Eigen::Vector3d& center_a, double radius_a,
   return true;
 }
 
+// Radii are certified lower bounds: every sum or difference forming one is rounded down.
+double add_down(double a, double b) {
+  geometry::rounding::UpwardRoundingScope upward;
+  return geometry::rounding::add_down(a, b);
+}
+double sub_down(double a, double b) {
+  geometry::rounding::UpwardRoundingScope upward;
+  return geometry::rounding::sub_down(a, b);
+}
+
 double placed_sphere_radius(double radius_L, double placement_error) {
   // |p~ - c~| <= |p - c| + 2 eps for rigidly placed p, c computed with error < eps each.
   namespace r = geometry::rounding;
@@ -100,7 +110,7 @@ void CellProbe::probe_hull(int hull_index, bool with_points, ProbeResult& out) {
   }
   // proof: proofs/two-ball-cover.md#corollary-step (obstacles beyond the margin are farther
   // than Delta + margin from every true point of the hull)
-  state.radius = delta + state.broadphase_margin;
+  state.radius = add_down(delta, state.broadphase_margin);
 
   // Nearest first: a sphere slab is enough for every obstacle whose sphere gap is not below
   // the smallest proven clearance so far; only the others need the pair query.
@@ -144,7 +154,7 @@ void CellProbe::probe_hull(int hull_index, bool with_points, ProbeResult& out) {
     if (evidence.separated) {
       smallest_clearance = std::min(smallest_clearance, evidence.lower_bound);
       // proof: proofs/offset-containment.md#clearance-through-offset
-      const double radius = delta + evidence.lower_bound;
+      const double radius = add_down(delta, evidence.lower_bound);
       if (radius < state.radius) {
         state.radius = radius;
         state.nearest_obstacle = o;
@@ -177,7 +187,7 @@ void CellProbe::probe_hull(int hull_index, bool with_points, ProbeResult& out) {
       raw.witness = *raw_result.witness;
       raw.lower_bound = raw_result.clearance_lower_bound;
       // proof: proofs/two-ball-cover.md#corollary-step (raw radius: lb - eps < true distance)
-      const double radius = std::max(0.0, raw.lower_bound - eps);
+      const double radius = std::max(0.0, sub_down(raw.lower_bound, eps));
       if (radius < state.radius) {
         state.radius = radius;
         state.nearest_obstacle = o;

@@ -128,6 +128,7 @@ class PathVerifier {
   kinematics::Workspace workspace_;
   ProbeResult current_;
   ProbeResult trial_;
+  ProbeResult points_;
   long long probes_ = 0;
   bool any_uncertified_ = false;
   VerificationRun run_;
@@ -336,13 +337,23 @@ double PathVerifier::thesis_next_parameter(const SegmentPath& path, double s,
   return std::min(end, s + increment);
 }
 
+// Smallest allowance / bound ratio over the hulls (>= 1 exactly when certified).
+double transition_slack(const TransitionRecord& transition) {
+  double slack = kInfinity;
+  for (std::size_t i = 0; i < transition.hull_motion_bounds.size(); ++i) {
+    if (transition.hull_motion_bounds[i] > 0.0) {
+      slack = std::min(slack, transition.hull_allowances[i] / transition.hull_motion_bounds[i]);
+    }
+  }
+  return slack;
+}
+
 // Returns false when the path must stop (an error was recorded).
 bool PathVerifier::march_segment(const SegmentPath& path, int segment_number) {
   const double end = path.parameter_end();
   const double min_step = std::max(end * options_.min_step_fraction, 1e-300);
   double s = 0.0;
   double step = end;
-  bool refinement_region = false;
   while (s < end) {
     if (probes_ >= options_.max_probes) {
       add_error(kErrorProbeLimit, segment_number,
@@ -381,48 +392,50 @@ bool PathVerifier::march_segment(const SegmentPath& path, int segment_number) {
       }
     }
     ++probes_;
-    probe_.probe(*q1, /*with_points=*/true, trial_);
+    // Trial configurations skip the (exact, costly) interference points; an accepted step
+    // that interferes is evaluated again with them below.
+    probe_.probe(*q1, /*with_points=*/false, trial_);
     const bool cut = s1 >= end;
     TransitionRecord transition = judge_transition(current_, trial_, cut);
+    const double taken = s1 - s;
     if (!certified()) {
       std::fill(transition.governing.begin(), transition.governing.end(),
                 GoverningTerm::kThesisRule);
       transition.certified = false;
-    } else if (!transition.certified) {
-      double ratio = kInfinity;
-      for (std::size_t i = 0; i < transition.hull_motion_bounds.size(); ++i) {
-        if (transition.hull_motion_bounds[i] > 0.0) {
-          ratio = std::min(ratio, transition.hull_allowances[i] / transition.hull_motion_bounds[i]);
-        }
-      }
-      const bool collision_at_an_end = current_.any_collision || trial_.any_collision;
-      // With a collision at a step end there is nothing to certify; move on at the thesis's
-      // basic resolution (every point at most 2D) so the report still covers the motion.
-      const double two_delta = 2.0 * options_.tolerance;
-      bool basic_resolution_met = true;
-      for (double bound : transition.hull_motion_bounds) basic_resolution_met &= bound <= two_delta;
-      const bool accept_uncertified =
-          (collision_at_an_end && basic_resolution_met) || (s1 - s) <= min_step;
-      if (!accept_uncertified) {
-        const double factor = std::clamp(0.9 * ratio, 0.05, 0.9);
-        step = std::max(min_step, (s1 - s) * (collision_at_an_end ? 0.5 : factor));
-        continue;
-      }
-      if (!collision_at_an_end) any_uncertified_ = true;
-    }
-    // Accepted: the next proposal grows with the slack this step left.
-    if (certified()) {
-      double slack = kInfinity;
-      for (std::size_t i = 0; i < transition.hull_motion_bounds.size(); ++i) {
-        if (transition.hull_motion_bounds[i] > 0.0) {
-          slack = std::min(slack, transition.hull_allowances[i] / transition.hull_motion_bounds[i]);
-        }
-      }
-      step = (s1 - s) * std::clamp(0.9 * slack, 1.0, 4.0);
+      step = taken;
+    } else if (transition.certified) {
+      // Accepted: the next proposal grows with the slack this step left.
+      step = taken * std::clamp(0.9 * transition_slack(transition), 1.0, 4.0);
     } else {
-      step = s1 - s;
+      const bool collision_at_an_end = current_.any_collision || trial_.any_collision;
+      if (collision_at_an_end) {
+        // Nothing to certify next to a collision: move on at the thesis's basic resolution
+        // (every point at most 2D per step) so the report still covers the motion.
+        bool basic_resolution_met = true;
+        for (double bound : transition.hull_motion_bounds) {
+          basic_resolution_met &= bound <= 2.0 * options_.tolerance;
+        }
+        if (!basic_resolution_met && taken > min_step) {
+          step = std::max(min_step, taken * 0.5);
+          continue;
+        }
+        step = taken * 2.0;
+      } else if (taken > min_step) {
+        step = std::max(min_step,
+                        taken * std::clamp(0.9 * transition_slack(transition), 0.05, 0.9));
+        continue;
+      } else {
+        any_uncertified_ = true;  // the step floor was reached: the verdict is UNDECIDED
+        step = taken * 2.0;
+      }
     }
-    refinement_region = trial_.any_expanded_interference || current_.any_expanded_interference;
+    if (trial_.any_expanded_interference) {
+      // Only the points are taken: the radii and evidence the transition was judged on stay.
+      probe_.probe(*q1, /*with_points=*/true, points_);
+      trial_.interference_points = std::move(points_.interference_points);
+    }
+    const bool refinement_region =
+        trial_.any_expanded_interference || current_.any_expanded_interference;
     record_step(trial_, segment_number, s1, path.time_at(s1), &transition,
                 certified() && refinement_region);
     std::swap(current_, trial_);
