@@ -153,6 +153,20 @@ bool point_in_hull_exactly(const Points& pts, const Eigen::Vector3d& x) {
   return true;
 }
 
+int count_points_outside_hull_exactly(const Points& pts, const Points& xs) {
+  const std::vector<Plane> planes = hull_planes(pts);
+  int outside = 0;
+  for (const auto& x : xs) {
+    for (const Plane& pl : planes) {
+      if (pl.n[0] * Z(x.x()) + pl.n[1] * Z(x.y()) + pl.n[2] * Z(x.z()) > pl.c) {
+        ++outside;
+        break;
+      }
+    }
+  }
+  return outside;
+}
+
 std::vector<Points> ibm7545_hulls() {
   std::vector<Points> hulls;
   Points current;

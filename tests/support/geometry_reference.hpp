@@ -38,6 +38,8 @@ int orientation_sign(const Eigen::Vector3d& p, const Eigen::Vector3d& q,
 
 /// Exact: is x in the closed convex hull of pts (independent CGAL hull, exact predicates)?
 bool point_in_hull_exactly(const Points& pts, const Eigen::Vector3d& x);
+/// Exact: how many of xs lie OUTSIDE the closed convex hull of pts (hull built once).
+int count_points_outside_hull_exactly(const Points& pts, const Points& xs);
 
 /// The 16-point hulls of data/ibm7545/{robot,environment}.txt (every line with exactly three
 /// comma-separated numbers, grouped by 16), in file order: 11 robot hulls then 2 obstacles.
