@@ -222,6 +222,32 @@ TEST(ClassifyExact, AgreesWithReferenceOnNearContactWherePlainDoubleFails) {
   EXPECT_GT(double_wrong, 0);
 }
 
+/// Regression case found by the near-contact search (seed 7545, "rotated boxes 8"): two rotated
+/// boxes a hair apart. Plain double SAT says they overlap; they are separated.
+TEST(ClassifyExact, SeparatedPairThatPlainDoubleSatCallsOverlapping) {
+  const Points a{{0x1.a1108db46f91ap-1, 0x1.07da3fcfe9971p+1, 0x1.ef7b9487ae894p-1},
+                 {-0x1.36211d03a992ap+1, 0x1.8b942943af7a4p-1, 0x1.4bdddd37ba01dp+0},
+                 {0x1.9cbef3a6ac1a1p+0, -0x1.3edcdbafe50f8p-3, 0x1.0e6eca9c0e316p-3},
+                 {-0x1.a00b8d3aded4p+0, -0x1.71c60673f812ep+0, 0x1.d7b7b11d920d8p-2},
+                 {0x1.055b70077bff9p+0, 0x1.c837f43bd870cp+0, 0x1.e7d091a1525d5p+0},
+                 {-0x1.1bb7886d07774p+1, 0x1.f93624f773ffp-2, 0x1.1df8524a9a8d4p+1},
+                 {0x1.d1921cd3f050dp+0, -0x1.bd609b67dd7d2p-2, 0x1.11e0a0b0fcdeep+0},
+                 {-0x1.6b38640d9a9d4p+0, -0x1.b94291d7f2d04p+0, 0x1.6600b3a4df9c1p+0}};
+  const Points b{{-0x1.404be50d2cb28p+0, -0x1.80051d2f14768p+1, -0x1.eb567831247a9p+0},
+                 {-0x1.2d8195322e87dp+0, -0x1.f6f22e6720906p+1, -0x1.8e8d28f4d653p+0},
+                 {-0x1.1ce92c764f448p-2, -0x1.6d423c7d26a74p+1, -0x1.bd9726ebe0fe7p+0},
+                 {-0x1.a37fda14ad334p-3, -0x1.e42f4db532c1p+1, -0x1.60cdd7af92d6ep+0},
+                 {-0x1.0254a04d69427p+1, -0x1.cfd5335f00babp+0, 0x1.483e90c75faa6p+0},
+                 {-0x1.f1def0bfd45a2p+0, -0x1.5ed7aae78c773p+1, 0x1.a507e003add1ep+0},
+                 {-0x1.0b97a6ab39a38p+0, -0x1.aa4f71fb251c1p+0, 0x1.75fde20ca3269p+0},
+                 {-0x1.f19aada076f18p-1, -0x1.4c14ca359ea7dp+1, 0x1.d2c73148f14e2p+0}};
+  EXPECT_EQ(double_sat(a, b), Contact::kOverlapping);  // wrong
+  EXPECT_EQ(testing::reference_contact(a, b), Contact::kSeparated);
+  EXPECT_EQ(classify_exact(a, b), Contact::kSeparated);
+  EXPECT_EQ(classify_exact(b, a), Contact::kSeparated);
+  EXPECT_TRUE(interference_points(a, b).empty());
+}
+
 TEST(InterferencePoints, BoxThroughFaceGivesCrossingsAndContainedVertices) {
   const Points a = testing::box({0, 0, 0}, {2, 2, 2});
   const Points b = testing::box({1, 0.5, 0.5}, {3, 1.5, 1.5});
