@@ -3,7 +3,7 @@
 /// exact interference points, separation witnesses and exact distances.
 ///
 /// Filtering discipline (cgal-notes.md): interval arithmetic (Interval_nt<false>) runs only
-/// inside a Protect_FPU_rounding<true> scope; every exact fallback (Gmpzf, Gmpq, MP_Float)
+/// inside a Protect_FPU_rounding<true> scope; every exact fallback (Gmpzf, Gmpq)
 /// runs after that scope has restored round-to-nearest.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -12,7 +12,6 @@
 #include <CGAL/Gmpzf.h>
 #include <CGAL/Homogeneous.h>
 #include <CGAL/Interval_nt.h>
-#include <CGAL/MP_Float.h>
 #include <CGAL/Polytope_distance_d.h>
 #include <CGAL/Polytope_distance_d_traits_3.h>
 
@@ -430,7 +429,7 @@ double certified_lower_bound(const SeparationWitness& w) {
   if (CGAL::sign(gap) != CGAL::POSITIVE) return 0.0;
   const Exact gap2 = gap * gap;
   const Exact norm2 = dot(lift<Exact>(w.normal), lift<Exact>(w.normal));
-  double r = (w.offset_b - w.offset_a) / w.normal.norm() * (1.0 - 0x1p-50);
+  double r = (w.offset_b - w.offset_a) / w.normal.norm();
   if (!std::isfinite(r)) r = std::numeric_limits<double>::max();
   while (r > 0.0 && !(gap2 >= Exact(r) * Exact(r) * norm2)) r = std::nextafter(r, 0.0);
   return r;
@@ -478,7 +477,11 @@ bool check_witness_exactly(const std::vector<Eigen::Vector3d>& a,
 namespace {
 
 using HKernel = CGAL::Homogeneous<double>;
-using DistanceTraits = CGAL::Polytope_distance_d_traits_3<HKernel, CGAL::MP_Float, double>;
+// ET AND NT exact (Gmpzf). Measured: with NT = double (cgal-notes' Homogeneous<double>,
+// MP_Float, double) the filtered pricing stops early on near-contact pairs (distance 1e-9)
+// and reports a squared distance up to 1e-6 relatively TOO LARGE - unsound for a lower bound.
+// See SeparationWitness.RandomWitnessesAreSoundTightAndTamperEvident.
+using DistanceTraits = CGAL::Polytope_distance_d_traits_3<HKernel, CGAL::Gmpzf, CGAL::Gmpzf>;
 using PolytopeDistance = CGAL::Polytope_distance_d<DistanceTraits>;
 
 std::vector<HKernel::Point_3> homogeneous_points(const std::vector<Eigen::Vector3d>& pts) {
@@ -524,10 +527,10 @@ std::optional<SeparationWitness> exact_separation_witness(const std::vector<Eige
   if (CGAL::is_zero(distance.squared_distance_numerator())) return std::nullopt;
 
   // Closest-point direction q - p (common homogeneous denominator).
-  std::vector<CGAL::MP_Float> p(distance.realizing_point_p_coordinates_begin(),
-                                distance.realizing_point_p_coordinates_end());
-  std::vector<CGAL::MP_Float> q(distance.realizing_point_q_coordinates_begin(),
-                                distance.realizing_point_q_coordinates_end());
+  std::vector<Exact> p(distance.realizing_point_p_coordinates_begin(),
+                       distance.realizing_point_p_coordinates_end());
+  std::vector<Exact> q(distance.realizing_point_q_coordinates_begin(),
+                       distance.realizing_point_q_coordinates_end());
   if (p.size() != 4 || q.size() != 4 || p[3] != q[3]) {
     throw std::logic_error("Polytope_distance_d: unexpected realizing point representation");
   }
@@ -566,12 +569,29 @@ double exact_distance_squared_lower(const std::vector<Eigen::Vector3d>& a,
   const auto ha = homogeneous_points(a);
   const auto hb = homogeneous_points(b);
   const PolytopeDistance distance(ha.begin(), ha.end(), hb.begin(), hb.end());
-  const CGAL::MP_Float num = distance.squared_distance_numerator();
-  const CGAL::MP_Float den = distance.squared_distance_denominator();
+  Exact num = distance.squared_distance_numerator();
+  Exact den = distance.squared_distance_denominator();
   if (CGAL::is_zero(num)) return 0.0;
-  CGAL::Protect_FPU_rounding<true> guard;
-  const IV ratio = IV(CGAL::to_interval(num)) / IV(CGAL::to_interval(den));
-  return std::max(0.0, ratio.inf());
+  if (CGAL::sign(den) == CGAL::NEGATIVE) {
+    num = -num;
+    den = -den;
+  }
+  double lower;
+  {
+    CGAL::Protect_FPU_rounding<true> guard;
+    lower = (IV(CGAL::to_interval(num)) / IV(CGAL::to_interval(den))).inf();
+  }
+  // Never trust a conversion: step down until lower * den <= num holds exactly, then up while
+  // the next double still satisfies it (so exactly representable distances come out exact).
+  const double inf = std::numeric_limits<double>::infinity();
+  lower = std::max(0.0, lower);
+  while (lower > 0.0 && Exact(lower) * den > num) lower = std::nextafter(lower, 0.0);
+  for (int step = 0; step < 4; ++step) {
+    const double up = std::nextafter(lower, inf);
+    if (!(Exact(up) * den <= num)) break;
+    lower = up;
+  }
+  return lower;
 }
 
 }  // namespace grpvss::geometry
