@@ -26,7 +26,8 @@ const char* to_string(Contact contact);
 
 /// \brief Exact classification of conv(a) against conv(b).
 ///
-/// Method: exact hulls of both sets, then the separating-axis test over every face normal of
+/// Method: an exact bounding-box test (double comparisons are exact) answers far pairs
+/// without hulls; otherwise exact hulls of both sets, then the separating-axis test over every face normal of
 /// either hull and every edge(A) x edge(B) direction whose Gauss-map arcs cross (the facet
 /// normals of A - B), each projection decided in interval arithmetic with an exact
 /// (big-float) fallback. Separated iff some axis separates strictly; touching iff none does and

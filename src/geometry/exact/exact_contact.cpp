@@ -250,6 +250,27 @@ bool boxes_separate(const std::vector<Eigen::Vector3d>& a, const std::vector<Eig
   return false;
 }
 
+/// Exactly: do the points span 3-D? (Cheap: O(n) filtered predicates, no hull.)
+bool spans_3d(const std::vector<Eigen::Vector3d>& pts) {
+  using P = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
+  std::vector<P> q;
+  q.reserve(pts.size());
+  for (const auto& p : pts) {
+    if (!p.allFinite()) return false;
+    q.emplace_back(p.x(), p.y(), p.z());
+  }
+  const std::size_t n = q.size();
+  std::size_t i1 = 1;
+  while (i1 < n && q[i1] == q[0]) ++i1;
+  if (i1 >= n) return false;
+  std::size_t i2 = 1;
+  while (i2 < n && CGAL::collinear(q[0], q[i1], q[i2])) ++i2;
+  if (i2 >= n) return false;
+  std::size_t i3 = 1;
+  while (i3 < n && CGAL::orientation(q[0], q[i1], q[i2], q[i3]) == CGAL::COPLANAR) ++i3;
+  return i3 < n;
+}
+
 void require_points(const std::vector<Eigen::Vector3d>& pts, const char* what) {
   if (pts.empty()) throw std::invalid_argument(std::string(what) + ": empty point set");
   for (const auto& p : pts) {
@@ -296,10 +317,15 @@ const char* to_string(InterferenceKind kind) {
 Contact classify_exact(const std::vector<Eigen::Vector3d>& a,
                        const std::vector<Eigen::Vector3d>& b) {
   // proof: proofs/interference.md#exact-sat
-  const Hull A(a);
-  const Hull B(b);
+  // Degenerate input must throw whatever the boxes say; spans_3d is the cheap test, the hull
+  // constructor throws the detailed message.
+  if (a.empty() || b.empty() || !spans_3d(a) || !spans_3d(b)) {
+    const Hull A(a);
+    const Hull B(b);
+    throw std::logic_error("spans_3d and ConvexPolytope::from_points disagree");
+  }
   if (boxes_separate(a, b)) return Contact::kSeparated;
-  return classify_hulls(A, B);
+  return classify_hulls(Hull(a), Hull(b));
 }
 
 // ---- interference points -----------------------------------------------------------------------
@@ -323,22 +349,54 @@ struct PointCollector {
   }
 };
 
+/// Edge/face pairs whose edge might meet the face's plane: an interval evaluation of both
+/// end points' plane values drops the pairs with both certainly on the same strict side.
+std::vector<std::pair<int, int>> plane_crossing_candidates(const Hull& edges_of,
+                                                           const Hull& faces_of) {
+  std::vector<std::pair<int, int>> out;
+  const auto& ev = edges_of.poly.vertices();
+  CGAL::Protect_FPU_rounding<true> guard;
+  for (std::size_t f = 0; f < faces_of.poly.faces().size(); ++f) {
+    const IV3 n = faces_of.face_normal<IV>(static_cast<int>(f));
+    const IV3 v0 = lift<IV>(faces_of.vertex(static_cast<int>(f), 0));
+    std::vector<Certain> side;
+    for (const auto& v : ev) side.push_back(sign_of(dot(n, minus(lift<IV>(v), v0))));
+    for (std::size_t e = 0; e < edges_of.poly.edges().size(); ++e) {
+      const Certain s0 = side[edges_of.poly.edges()[e][0]];
+      const Certain s1 = side[edges_of.poly.edges()[e][1]];
+      const bool both_out = s0 == Certain::kPositive && s1 == Certain::kPositive;
+      const bool both_in = s0 == Certain::kNegative && s1 == Certain::kNegative;
+      if (!both_out && !both_in) out.emplace_back(static_cast<int>(e), static_cast<int>(f));
+    }
+  }
+  return out;
+}
+
 /// Edges of `edges_of` meeting faces of `faces_of` (closed polygons), exactly.
 void edge_face_points(const Hull& edges_of, const Hull& faces_of, InterferenceKind kind,
                       PointCollector& out) {
   const auto& ev = edges_of.poly.vertices();
   const auto& fv = faces_of.poly.vertices();
-  for (std::size_t f = 0; f < faces_of.poly.faces().size(); ++f) {
+  const auto candidates = plane_crossing_candidates(edges_of, faces_of);
+  int cached_face = -1;
+  Rational3 n;
+  Rational c;
+  std::vector<Rational3> loop_v, loop_w;
+  for (const auto& [e, f] : candidates) {
     const auto& loop = faces_of.poly.faces()[f];
-    const Rational3 n = faces_of.face_normal<Rational>(static_cast<int>(f));
-    const Rational c = dot(n, lift<Rational>(fv[loop[0]]));
-    // Inside test for a point x in the face plane: (v_{i+1} - v_i) x (x - v_i) . n >= 0.
-    std::vector<Rational3> loop_v, loop_w;
-    for (std::size_t i = 0; i < loop.size(); ++i) {
-      loop_v.push_back(lift<Rational>(fv[loop[i]]));
-      loop_w.push_back(diff<Rational>(fv[loop[(i + 1) % loop.size()]], fv[loop[i]]));
+    if (f != cached_face) {
+      cached_face = f;
+      n = faces_of.face_normal<Rational>(f);
+      c = dot(n, lift<Rational>(fv[loop[0]]));
+      // Inside test for x in the face plane: (v_{i+1} - v_i) x (x - v_i) . n >= 0.
+      loop_v.clear();
+      loop_w.clear();
+      for (std::size_t i = 0; i < loop.size(); ++i) {
+        loop_v.push_back(lift<Rational>(fv[loop[i]]));
+        loop_w.push_back(diff<Rational>(fv[loop[(i + 1) % loop.size()]], fv[loop[i]]));
+      }
     }
-    for (std::size_t e = 0; e < edges_of.poly.edges().size(); ++e) {
+    {
       const Rational3 p = lift<Rational>(ev[edges_of.poly.edges()[e][0]]);
       const Rational3 q = lift<Rational>(ev[edges_of.poly.edges()[e][1]]);
       const Rational sp = dot(n, p) - c;
@@ -370,8 +428,7 @@ void edge_face_points(const Hull& edges_of, const Hull& faces_of, InterferenceKi
       }
       if (empty) continue;
       for (const Rational& t : {lo, hi}) {
-        out.add({p[0] + t * d[0], p[1] + t * d[1], p[2] + t * d[2]}, kind, static_cast<int>(e),
-                static_cast<int>(f));
+        out.add({p[0] + t * d[0], p[1] + t * d[1], p[2] + t * d[2]}, kind, e, f);
       }
     }
   }
@@ -406,6 +463,7 @@ std::vector<InterferencePoint> interference_points(const std::vector<Eigen::Vect
   const Hull B(b);
   std::vector<InterferencePoint> result;
   if (boxes_separate(a, b)) return result;
+  if (classify_hulls(A, B) == Contact::kSeparated) return result;
   PointCollector out;
   edge_face_points(A, B, InterferenceKind::kEdgeOfAOnFaceOfB, out);
   edge_face_points(B, A, InterferenceKind::kEdgeOfBOnFaceOfA, out);
