@@ -61,6 +61,40 @@ TEST(SeparationWitness, HandWrittenWitnessIsCheckedExactly) {
   EXPECT_FALSE(check_witness_exactly(b, a, w, 0.0));                        // roles swapped
 }
 
+/// Regression (pair 27 of the random test below, 1e-9 apart): CGAL Polytope_distance_d with a
+/// double pricing type (cgal-notes.md's Homogeneous<double>, NT = double) reports a squared
+/// distance ABOVE the true one here, which would make an unsound clearance lower bound.
+/// exact_distance_squared_lower and the witness stay below it.
+TEST(SeparationWitness, NearContactPairWhereDoublePricedPolytopeDistanceOverestimates) {
+  const Points a{{0x1.7d8a45f47f513p+0, -0x1.ce76c12ea2b27p-2, -0x1.8232c5d09348fp-1},
+                 {0x1.4216a1b1db8cap-1, -0x1.86671029964eep-3, -0x1.460550bba5252p-2},
+                 {0x1.af944568f9867p+0, -0x1.f71dda0c6708p+0, 0x1.1391291775355p-1},
+                 {0x1.a62aa09acff72p-1, -0x1.b44d0bc5f1254p+0, 0x1.f2c1468a35ebbp-1},
+                 {0x1.7e3a4b59612f8p+1, 0x1.5897d2965c5e9p+0, 0x1.1ff2fe99f7fc2p+0},
+                 {0x1.0ffad0cb986a2p+1, 0x1.9b68a0dcd2416p+0, 0x1.8f8b0d5358574p+0},
+                 {0x1.973f4b139e4a2p+1, -0x1.5742b9530fe66p-3, 0x1.356a7b06fe1dap+1},
+                 {0x1.28ffd085d584cp+1, 0x1.7e8771c13e5f4p-4, 0x1.6d368263ae4b4p+1}};
+  const Points b{{0x1.fecad54e67348p+1, -0x1.5b363f120e64p-3, -0x1.001c5b822a2e8p+0},
+                 {0x1.1f6796db71178p+1, 0x1.4d697cb9744d8p-1, -0x1.e1feb4e9d380ap-2},
+                 {0x1.cdeb350985ad7p+1, -0x1.14b2afa0a0bb2p+0, -0x1.b15fa45a1b16ap-1},
+                 {0x1.dd0fed2d1f20ep+0, -0x1.0a5ca586931f8p-2, -0x1.444c8f9560f3ep-2},
+                 {0x1.09247c08396f1p+2, -0x1.392a4a6fcaddp-3, -0x1.0c8874323e6acp-1},
+                 {0x1.32e5b99d7cc12p+1, 0x1.55ec79e2052f4p-1, 0x1.58742e9619p-8},
+                 {0x1.e16957cb91571p+1, -0x1.1071310c584a4p+0, -0x1.7b5ec3100a48cp-2},
+                 {0x1.020619589b3a1p+1, -0x1.f2ad566ae2b8p-3, 0x1.4627ec1d95e1p-3}};
+  EXPECT_EQ(classify_exact(a, b), Contact::kSeparated);
+  EXPECT_EQ(testing::double_nt_distance_squared_vs_exact(a, b), 1);  // the pitfall
+  const double d2 = exact_distance_squared_lower(a, b);
+  EXPECT_TRUE(testing::reference_distance_squared_at_least(a, b, d2));
+  EXPECT_GT(d2, 0.99e-18);
+  const auto w = exact_separation_witness(a, b);
+  ASSERT_TRUE(w.has_value());
+  const double bound = certified_lower_bound(*w);
+  EXPECT_TRUE(check_witness_exactly(a, b, *w, bound));
+  EXPECT_TRUE(testing::reference_distance_squared_at_least(a, b, bound * bound));
+  EXPECT_GT(bound, 0.99e-9);
+}
+
 /// Random separated pairs (rotated IBM 7545 hulls and rotated boxes, including pairs pushed
 /// to within 1e-9 along the exact closest direction): every witness re-checks exactly, its
 /// bound never exceeds the exact distance (Polytope_distance_d over Gmpq), is close to it, and

@@ -8,6 +8,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Gmpq.h>
 #include <CGAL/Gmpzf.h>
+#include <CGAL/Homogeneous.h>
 #include <CGAL/Polygon_mesh_processing/intersection.h>
 #include <CGAL/Polytope_distance_d.h>
 #include <CGAL/Polytope_distance_d_traits_3.h>
@@ -111,6 +112,33 @@ bool reference_distance_squared_at_least(const Points& a, const Points& b, doubl
   const Distance d(qa.begin(), qa.end(), qb.begin(), qb.end());
   const CGAL::Gmpq dist2 = d.squared_distance_numerator() / d.squared_distance_denominator();
   return dist2 >= CGAL::Gmpq(x);
+}
+
+int double_nt_distance_squared_vs_exact(const Points& a, const Points& b) {
+  // cgal-notes.md's configuration has NT = double for the solver's pricing; ET here is Gmpzf
+  // (instead of MP_Float) so that the result converts to Gmpq exactly.
+  using HK = CGAL::Homogeneous<double>;
+  using Traits = CGAL::Polytope_distance_d_traits_3<HK, Z, double>;
+  std::vector<HK::Point_3> ha, hb;
+  for (const auto& p : a) ha.emplace_back(p.x(), p.y(), p.z(), 1.0);
+  for (const auto& p : b) hb.emplace_back(p.x(), p.y(), p.z(), 1.0);
+  const CGAL::Polytope_distance_d<Traits> fast(ha.begin(), ha.end(), hb.begin(), hb.end());
+  auto to_gmpq = [](const Z& x) {  // m * 2^e, exactly
+    CGAL::Gmpq q(x.man());
+    if (x.exp() >= 0) {
+      mpq_mul_2exp(q.mpq(), q.mpq(), static_cast<mp_bitcnt_t>(x.exp()));
+    } else {
+      mpq_div_2exp(q.mpq(), q.mpq(), static_cast<mp_bitcnt_t>(-x.exp()));
+    }
+    return q;
+  };
+  const CGAL::Gmpq f =
+      to_gmpq(fast.squared_distance_numerator()) / to_gmpq(fast.squared_distance_denominator());
+  const auto qa = q_points(a);
+  const auto qb = q_points(b);
+  const Distance exact(qa.begin(), qa.end(), qb.begin(), qb.end());
+  const CGAL::Gmpq e = exact.squared_distance_numerator() / exact.squared_distance_denominator();
+  return f > e ? 1 : f < e ? -1 : 0;
 }
 
 double reference_distance(const Points& a, const Points& b) {

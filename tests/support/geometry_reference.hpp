@@ -25,6 +25,12 @@ geometry::Contact reference_contact(const Points& a, const Points& b);
 /// Exact: dist(conv a, conv b)^2 >= x (x a double), via Polytope_distance_d<Cartesian<Gmpq>>.
 bool reference_distance_squared_at_least(const Points& a, const Points& b, double x);
 
+/// Exact comparison of the squared distance that CGAL Polytope_distance_d reports when
+/// configured with an inexact pricing type as in cgal-notes.md (Homogeneous<double>, NT =
+/// double; ET = Gmpzf here) against the true one (Cartesian<Gmpq>): -1 below, 0 equal, +1
+/// above the true value.
+int double_nt_distance_squared_vs_exact(const Points& a, const Points& b);
+
 /// Rounded exact distance (for messages and ratios only).
 double reference_distance(const Points& a, const Points& b);
 
