@@ -186,6 +186,9 @@ TEST(ClassifyExact, AgreesWithIndependentReferenceOnRandomPairs) {
   for (const PairCase& c : random_pairs(1988, 1500)) {
     const Contact expected = testing::reference_contact(c.a, c.b);
     ASSERT_EQ(classify_exact(c.a, c.b), expected) << c.label;
+    ASSERT_EQ(classify_exact(ConvexPolytope::from_points(c.b), ConvexPolytope::from_points(c.a)),
+              expected)
+        << c.label;
     ++counts[static_cast<int>(expected)];
   }
   std::printf("random pairs: %d separated, %d touching, %d overlapping\n", counts[0], counts[1],

@@ -12,6 +12,8 @@
 
 #include <Eigen/Core>
 
+#include "grpvss/geometry/convex_polytope.hpp"
+
 namespace grpvss::geometry {
 
 /// \brief How two closed convex bodies A and B meet.
@@ -35,6 +37,10 @@ const char* to_string(Contact contact);
 /// \throws DegenerateHullError if either set does not span 3-D.
 Contact classify_exact(const std::vector<Eigen::Vector3d>& a,
                        const std::vector<Eigen::Vector3d>& b);
+
+/// \brief Same decision on prebuilt exact hulls (saves the hull construction, ~0.3 ms for a
+/// rotated 16-point hull, when one side is reused, e.g. a static obstacle or its offset).
+Contact classify_exact(const ConvexPolytope& a, const ConvexPolytope& b);
 
 /// \brief Which features produced an interference point.
 enum class InterferenceKind {
@@ -68,5 +74,9 @@ struct InterferencePoint {
 /// \throws DegenerateHullError if either set does not span 3-D.
 std::vector<InterferencePoint> interference_points(const std::vector<Eigen::Vector3d>& a,
                                                    const std::vector<Eigen::Vector3d>& b);
+
+/// \brief Same on prebuilt exact hulls; feature indices refer to a and b directly.
+std::vector<InterferencePoint> interference_points(const ConvexPolytope& a,
+                                                   const ConvexPolytope& b);
 
 }  // namespace grpvss::geometry

@@ -79,9 +79,8 @@ Certain sign_of(const IV& x) {
 /// A ConvexPolytope plus the (outward, non-normalized) face normals as exact products of
 /// vertex differences: n_f = (v1 - v0) x (v2 - v0) for the face's first three loop vertices.
 struct Hull {
-  explicit Hull(const std::vector<Eigen::Vector3d>& points)
-      : poly(ConvexPolytope::from_points(points)) {}
-  ConvexPolytope poly;
+  explicit Hull(const ConvexPolytope& p) : poly(p) {}
+  const ConvexPolytope& poly;
   const Eigen::Vector3d& vertex(int f, int k) const {
     return poly.vertices()[poly.faces()[f][k]];
   }
@@ -320,11 +319,17 @@ Contact classify_exact(const std::vector<Eigen::Vector3d>& a,
   // Degenerate input must throw whatever the boxes say; spans_3d is the cheap test, the hull
   // constructor throws the detailed message.
   if (a.empty() || b.empty() || !spans_3d(a) || !spans_3d(b)) {
-    const Hull A(a);
-    const Hull B(b);
+    ConvexPolytope::from_points(a);
+    ConvexPolytope::from_points(b);
     throw std::logic_error("spans_3d and ConvexPolytope::from_points disagree");
   }
   if (boxes_separate(a, b)) return Contact::kSeparated;
+  return classify_exact(ConvexPolytope::from_points(a), ConvexPolytope::from_points(b));
+}
+
+Contact classify_exact(const ConvexPolytope& a, const ConvexPolytope& b) {
+  // proof: proofs/interference.md#exact-sat
+  if (boxes_separate(a.vertices(), b.vertices())) return Contact::kSeparated;
   return classify_hulls(Hull(a), Hull(b));
 }
 
@@ -458,11 +463,16 @@ void vertex_points(const Hull& of, const Hull& in, InterferenceKind kind, PointC
 
 std::vector<InterferencePoint> interference_points(const std::vector<Eigen::Vector3d>& a,
                                                    const std::vector<Eigen::Vector3d>& b) {
+  return interference_points(ConvexPolytope::from_points(a), ConvexPolytope::from_points(b));
+}
+
+std::vector<InterferencePoint> interference_points(const ConvexPolytope& a,
+                                                   const ConvexPolytope& b) {
   // proof: proofs/interference.md#interference-points
   const Hull A(a);
   const Hull B(b);
   std::vector<InterferencePoint> result;
-  if (boxes_separate(a, b)) return result;
+  if (boxes_separate(a.vertices(), b.vertices())) return result;
   if (classify_hulls(A, B) == Contact::kSeparated) return result;
   PointCollector out;
   edge_face_points(A, B, InterferenceKind::kEdgeOfAOnFaceOfB, out);
@@ -599,8 +609,10 @@ std::optional<SeparationWitness> exact_separation_witness(const std::vector<Eige
   if (auto w = witness_along(a, b, n)) return w;
 
   // Fallback: the best exact SAT axis (rounded), for gaps that the rounded direction lost.
-  const Hull A(a);
-  const Hull B(b);
+  const ConvexPolytope pa = ConvexPolytope::from_points(a);
+  const ConvexPolytope pb = ConvexPolytope::from_points(b);
+  const Hull A(pa);
+  const Hull B(pb);
   std::optional<SeparationWitness> best;
   double best_bound = -1.0;
   for (const Axis& axis : candidate_axes(A, B)) {
