@@ -61,6 +61,18 @@ TEST(SeparationWitness, HandWrittenWitnessIsCheckedExactly) {
   EXPECT_FALSE(check_witness_exactly(b, a, w, 0.0));                        // roles swapped
 }
 
+TEST(SeparationWitness, CertifiedLowerBoundIsRoundedDownExactly) {
+  // 1 / |(3, 4, 0)| = 0.2, and the double 0.2 is slightly ABOVE 1/5: the bound is the double
+  // just below it.
+  EXPECT_EQ(certified_lower_bound({{3, 4, 0}, 0.0, 1.0}), std::nextafter(0.2, 0.0));
+  EXPECT_EQ(certified_lower_bound({{0, 0, 0.5}, 1.0, 2.0}), 2.0);  // exact when representable
+  EXPECT_EQ(certified_lower_bound({{1, 0, 0}, 2.0, 1.0}), 0.0);     // no positive bound
+  // The gap 2e308 overflows a double; the largest double is still a valid bound.
+  EXPECT_EQ(certified_lower_bound({{1, 0, 0}, -1e308, 1e308}),
+            std::numeric_limits<double>::max());
+  EXPECT_THROW(certified_lower_bound({{0, 0, 0}, 0.0, 1.0}), std::invalid_argument);
+}
+
 /// Regression (pair 27 of the random test below, 1e-9 apart): CGAL Polytope_distance_d with a
 /// double pricing type (cgal-notes.md's Homogeneous<double>, NT = double) reports a squared
 /// distance ABOVE the true one here, which would make an unsound clearance lower bound.

@@ -279,6 +279,13 @@ void require_points(const std::vector<Eigen::Vector3d>& pts, const char* what) {
 
 // ---- rounding helpers ------------------------------------------------------------------------
 
+/// Next candidate below r > 0: one ulp for the first steps, then geometric, so a badly
+/// rounded start (or an overflowed one) still reaches a valid value quickly.
+double step_down(double r, int iteration) {
+  const double ulp_step = std::nextafter(r, 0.0);
+  return iteration < 8 ? ulp_step : std::min(ulp_step, r * (1.0 - 0x1p-20));
+}
+
 double round_up(const Exact& x) {
   double hi = CGAL::to_interval(x).second;
   while (Exact(hi) < x) hi = std::nextafter(hi, std::numeric_limits<double>::infinity());
@@ -497,9 +504,9 @@ double certified_lower_bound(const SeparationWitness& w) {
   if (CGAL::sign(gap) != CGAL::POSITIVE) return 0.0;
   const Exact gap2 = gap * gap;
   const Exact norm2 = dot(lift<Exact>(w.normal), lift<Exact>(w.normal));
-  double r = (w.offset_b - w.offset_a) / w.normal.norm();
+  double r = (0.5 * w.offset_b - 0.5 * w.offset_a) / w.normal.norm() * 2.0;
   if (!std::isfinite(r)) r = std::numeric_limits<double>::max();
-  while (r > 0.0 && !(gap2 >= Exact(r) * Exact(r) * norm2)) r = std::nextafter(r, 0.0);
+  for (int it = 0; r > 0.0 && !(gap2 >= Exact(r) * Exact(r) * norm2); ++it) r = step_down(r, it);
   return r;
 }
 
@@ -655,7 +662,8 @@ double exact_distance_squared_lower(const std::vector<Eigen::Vector3d>& a,
   // the next double still satisfies it (so exactly representable distances come out exact).
   const double inf = std::numeric_limits<double>::infinity();
   lower = std::max(0.0, lower);
-  while (lower > 0.0 && Exact(lower) * den > num) lower = std::nextafter(lower, 0.0);
+  if (!std::isfinite(lower)) lower = std::numeric_limits<double>::max();
+  for (int it = 0; lower > 0.0 && Exact(lower) * den > num; ++it) lower = step_down(lower, it);
   for (int step = 0; step < 4; ++step) {
     const double up = std::nextafter(lower, inf);
     if (!(Exact(up) * den <= num)) break;
