@@ -472,21 +472,44 @@ void edge_face_points(const Hull& edges_of, const Hull& faces_of, InterferenceKi
 
 /// Vertices of `of` inside closed `in`, exactly (all face planes n.x <= c).
 void vertex_points(const Hull& of, const Hull& in, InterferenceKind kind, PointCollector& out) {
-  std::vector<std::pair<Exact3, Exact>> planes;
-  for (std::size_t f = 0; f < in.poly.faces().size(); ++f) {
-    const Exact3 n = in.face_normal<Exact>(static_cast<int>(f));
-    planes.emplace_back(n, dot(n, lift<Exact>(in.vertex(static_cast<int>(f), 0))));
-  }
-  for (std::size_t v = 0; v < of.poly.vertices().size(); ++v) {
-    const Exact3 x = lift<Exact>(of.poly.vertices()[v]);
-    bool inside = true;
-    for (const auto& [n, c] : planes) {
-      if (dot(n, x) > c) {
-        inside = false;
-        break;
+  const std::size_t faces = in.poly.faces().size();
+  const auto& vs = of.poly.vertices();
+  // Interval pass: 1 certainly outside some face, 0 certainly inside all, -1 undecided.
+  std::vector<int> verdict(vs.size(), 0);
+  {
+    CGAL::Protect_FPU_rounding<true> guard;
+    for (std::size_t f = 0; f < faces; ++f) {
+      const IV3 n = in.face_normal<IV>(static_cast<int>(f));
+      const IV3 v0 = lift<IV>(in.vertex(static_cast<int>(f), 0));
+      for (std::size_t v = 0; v < vs.size(); ++v) {
+        if (verdict[v] == 1) continue;
+        const Certain side = sign_of(dot(n, minus(lift<IV>(vs[v]), v0)));
+        if (side == Certain::kPositive) verdict[v] = 1;
+        else if (side != Certain::kNegative && side != Certain::kZero) verdict[v] = -1;
       }
     }
-    if (inside) out.add(lift<Rational>(of.poly.vertices()[v]), kind, static_cast<int>(v), -1);
+  }
+  std::vector<std::pair<Exact3, Exact>> planes;
+  for (std::size_t v = 0; v < vs.size(); ++v) {
+    if (verdict[v] == 1) continue;
+    if (verdict[v] == -1) {
+      if (planes.empty()) {
+        for (std::size_t f = 0; f < faces; ++f) {
+          const Exact3 n = in.face_normal<Exact>(static_cast<int>(f));
+          planes.emplace_back(n, dot(n, lift<Exact>(in.vertex(static_cast<int>(f), 0))));
+        }
+      }
+      const Exact3 x = lift<Exact>(vs[v]);
+      bool inside = true;
+      for (const auto& [n, c] : planes) {
+        if (dot(n, x) > c) {
+          inside = false;
+          break;
+        }
+      }
+      if (!inside) continue;
+    }
+    out.add(lift<Rational>(vs[v]), kind, static_cast<int>(v), -1);
   }
 }
 
