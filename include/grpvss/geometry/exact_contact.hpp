@@ -12,6 +12,8 @@
 
 #include <Eigen/Core>
 
+#include "grpvss/geometry/convex_polytope.hpp"
+
 namespace grpvss::geometry {
 
 /// \brief How two closed convex bodies A and B meet.
@@ -26,7 +28,8 @@ const char* to_string(Contact contact);
 
 /// \brief Exact classification of conv(a) against conv(b).
 ///
-/// Method: exact hulls of both sets, then the separating-axis test over every face normal of
+/// Method: an exact bounding-box test (double comparisons are exact) answers far pairs
+/// without hulls; otherwise exact hulls of both sets, then the separating-axis test over every face normal of
 /// either hull and every edge(A) x edge(B) direction whose Gauss-map arcs cross (the facet
 /// normals of A - B), each projection decided in interval arithmetic with an exact
 /// (big-float) fallback. Separated iff some axis separates strictly; touching iff none does and
@@ -34,6 +37,10 @@ const char* to_string(Contact contact);
 /// \throws DegenerateHullError if either set does not span 3-D.
 Contact classify_exact(const std::vector<Eigen::Vector3d>& a,
                        const std::vector<Eigen::Vector3d>& b);
+
+/// \brief Same decision on prebuilt exact hulls (saves the hull construction, ~0.3 ms for a
+/// rotated 16-point hull, when one side is reused, e.g. a static obstacle or its offset).
+Contact classify_exact(const ConvexPolytope& a, const ConvexPolytope& b);
 
 /// \brief Which features produced an interference point.
 enum class InterferenceKind {
@@ -67,5 +74,9 @@ struct InterferencePoint {
 /// \throws DegenerateHullError if either set does not span 3-D.
 std::vector<InterferencePoint> interference_points(const std::vector<Eigen::Vector3d>& a,
                                                    const std::vector<Eigen::Vector3d>& b);
+
+/// \brief Same on prebuilt exact hulls; feature indices refer to a and b directly.
+std::vector<InterferencePoint> interference_points(const ConvexPolytope& a,
+                                                   const ConvexPolytope& b);
 
 }  // namespace grpvss::geometry

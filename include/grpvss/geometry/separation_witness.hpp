@@ -37,21 +37,27 @@ bool check_witness_exactly(const std::vector<Eigen::Vector3d>& a,
                            const std::vector<Eigen::Vector3d>& b,
                            const SeparationWitness& witness, double claimed_lower_bound);
 
-/// \brief A witness for a separated pair (nullopt if conv(a) and conv(b) touch or overlap).
+/// \brief A witness for a separated pair: nullopt if conv(a) and conv(b) touch or overlap, and
+/// also when they are separated by less than the witness format can express (no double slab
+/// with offset_a < offset_b exists along any tried direction: gaps of the order of the
+/// rounding of n.x, ~1e-16 |n| |x|). Use classify_exact() for the decision itself.
 ///
-/// Direction: the exact closest-point direction (CGAL Polytope_distance_d, exact arithmetic)
-/// rounded to double; offsets are then the exact support values rounded outward. If rounding
-/// leaves no gap (distance ~1e-300), the best exact separating axis of the SAT is tried.
+/// Direction: the exact closest-point direction (CGAL Polytope_distance_d with exact Gmpzf
+/// arithmetic throughout) rounded to double; offsets are then the exact support values
+/// rounded outward. If rounding leaves no gap, the best exact separating axis of the SAT is
+/// tried (that fallback builds the hulls).
 /// The witness always satisfies check_witness_exactly(a, b, w, certified_lower_bound(w)).
 /// Its certified_lower_bound is close to the true distance (relative loss ~1e-15) when the
 /// closest-point direction succeeded.
-/// \throws DegenerateHullError if either set does not span 3-D.
+/// \throws std::invalid_argument for an empty set or a non-finite point; DegenerateHullError
+///         only if the SAT fallback is needed and a set does not span 3-D.
 std::optional<SeparationWitness> exact_separation_witness(const std::vector<Eigen::Vector3d>& a,
                                                           const std::vector<Eigen::Vector3d>& b);
 
 /// \brief A double d with d <= dist(conv(a), conv(b))^2 (exact squared distance from
-/// Polytope_distance_d, rounded down). 0 for touching or overlapping sets. Never exceeds the
-/// true squared distance.
+/// Polytope_distance_d, rounded down and re-checked exactly: d * den <= num). 0 for touching or
+/// overlapping sets. Never exceeds the true squared distance. Any non-empty finite sets.
+/// \throws std::invalid_argument for an empty set or a non-finite point.
 double exact_distance_squared_lower(const std::vector<Eigen::Vector3d>& a,
                                     const std::vector<Eigen::Vector3d>& b);
 

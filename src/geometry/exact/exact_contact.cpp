@@ -3,7 +3,7 @@
 /// exact interference points, separation witnesses and exact distances.
 ///
 /// Filtering discipline (cgal-notes.md): interval arithmetic (Interval_nt<false>) runs only
-/// inside a Protect_FPU_rounding<true> scope; every exact fallback (Gmpzf, Gmpq, MP_Float)
+/// inside a Protect_FPU_rounding<true> scope; every exact fallback (Gmpzf, Gmpq)
 /// runs after that scope has restored round-to-nearest.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -12,7 +12,6 @@
 #include <CGAL/Gmpzf.h>
 #include <CGAL/Homogeneous.h>
 #include <CGAL/Interval_nt.h>
-#include <CGAL/MP_Float.h>
 #include <CGAL/Polytope_distance_d.h>
 #include <CGAL/Polytope_distance_d_traits_3.h>
 
@@ -80,9 +79,8 @@ Certain sign_of(const IV& x) {
 /// A ConvexPolytope plus the (outward, non-normalized) face normals as exact products of
 /// vertex differences: n_f = (v1 - v0) x (v2 - v0) for the face's first three loop vertices.
 struct Hull {
-  explicit Hull(const std::vector<Eigen::Vector3d>& points)
-      : poly(ConvexPolytope::from_points(points)) {}
-  ConvexPolytope poly;
+  explicit Hull(const ConvexPolytope& p) : poly(p) {}
+  const ConvexPolytope& poly;
   const Eigen::Vector3d& vertex(int f, int k) const {
     return poly.vertices()[poly.faces()[f][k]];
   }
@@ -251,6 +249,27 @@ bool boxes_separate(const std::vector<Eigen::Vector3d>& a, const std::vector<Eig
   return false;
 }
 
+/// Exactly: do the points span 3-D? (Cheap: O(n) filtered predicates, no hull.)
+bool spans_3d(const std::vector<Eigen::Vector3d>& pts) {
+  using P = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
+  std::vector<P> q;
+  q.reserve(pts.size());
+  for (const auto& p : pts) {
+    if (!p.allFinite()) return false;
+    q.emplace_back(p.x(), p.y(), p.z());
+  }
+  const std::size_t n = q.size();
+  std::size_t i1 = 1;
+  while (i1 < n && q[i1] == q[0]) ++i1;
+  if (i1 >= n) return false;
+  std::size_t i2 = 1;
+  while (i2 < n && CGAL::collinear(q[0], q[i1], q[i2])) ++i2;
+  if (i2 >= n) return false;
+  std::size_t i3 = 1;
+  while (i3 < n && CGAL::orientation(q[0], q[i1], q[i2], q[i3]) == CGAL::COPLANAR) ++i3;
+  return i3 < n;
+}
+
 void require_points(const std::vector<Eigen::Vector3d>& pts, const char* what) {
   if (pts.empty()) throw std::invalid_argument(std::string(what) + ": empty point set");
   for (const auto& p : pts) {
@@ -259,6 +278,13 @@ void require_points(const std::vector<Eigen::Vector3d>& pts, const char* what) {
 }
 
 // ---- rounding helpers ------------------------------------------------------------------------
+
+/// Next candidate below r > 0: one ulp for the first steps, then geometric, so a badly
+/// rounded start (or an overflowed one) still reaches a valid value quickly.
+double step_down(double r, int iteration) {
+  const double ulp_step = std::nextafter(r, 0.0);
+  return iteration < 8 ? ulp_step : std::min(ulp_step, r * (1.0 - 0x1p-20));
+}
 
 double round_up(const Exact& x) {
   double hi = CGAL::to_interval(x).second;
@@ -297,10 +323,21 @@ const char* to_string(InterferenceKind kind) {
 Contact classify_exact(const std::vector<Eigen::Vector3d>& a,
                        const std::vector<Eigen::Vector3d>& b) {
   // proof: proofs/interference.md#exact-sat
-  const Hull A(a);
-  const Hull B(b);
+  // Degenerate input must throw whatever the boxes say; spans_3d is the cheap test, the hull
+  // constructor throws the detailed message.
+  if (a.empty() || b.empty() || !spans_3d(a) || !spans_3d(b)) {
+    ConvexPolytope::from_points(a);
+    ConvexPolytope::from_points(b);
+    throw std::logic_error("spans_3d and ConvexPolytope::from_points disagree");
+  }
   if (boxes_separate(a, b)) return Contact::kSeparated;
-  return classify_hulls(A, B);
+  return classify_exact(ConvexPolytope::from_points(a), ConvexPolytope::from_points(b));
+}
+
+Contact classify_exact(const ConvexPolytope& a, const ConvexPolytope& b) {
+  // proof: proofs/interference.md#exact-sat
+  if (boxes_separate(a.vertices(), b.vertices())) return Contact::kSeparated;
+  return classify_hulls(Hull(a), Hull(b));
 }
 
 // ---- interference points -----------------------------------------------------------------------
@@ -324,22 +361,54 @@ struct PointCollector {
   }
 };
 
+/// Edge/face pairs whose edge might meet the face's plane: an interval evaluation of both
+/// end points' plane values drops the pairs with both certainly on the same strict side.
+std::vector<std::pair<int, int>> plane_crossing_candidates(const Hull& edges_of,
+                                                           const Hull& faces_of) {
+  std::vector<std::pair<int, int>> out;
+  const auto& ev = edges_of.poly.vertices();
+  CGAL::Protect_FPU_rounding<true> guard;
+  for (std::size_t f = 0; f < faces_of.poly.faces().size(); ++f) {
+    const IV3 n = faces_of.face_normal<IV>(static_cast<int>(f));
+    const IV3 v0 = lift<IV>(faces_of.vertex(static_cast<int>(f), 0));
+    std::vector<Certain> side;
+    for (const auto& v : ev) side.push_back(sign_of(dot(n, minus(lift<IV>(v), v0))));
+    for (std::size_t e = 0; e < edges_of.poly.edges().size(); ++e) {
+      const Certain s0 = side[edges_of.poly.edges()[e][0]];
+      const Certain s1 = side[edges_of.poly.edges()[e][1]];
+      const bool both_out = s0 == Certain::kPositive && s1 == Certain::kPositive;
+      const bool both_in = s0 == Certain::kNegative && s1 == Certain::kNegative;
+      if (!both_out && !both_in) out.emplace_back(static_cast<int>(e), static_cast<int>(f));
+    }
+  }
+  return out;
+}
+
 /// Edges of `edges_of` meeting faces of `faces_of` (closed polygons), exactly.
 void edge_face_points(const Hull& edges_of, const Hull& faces_of, InterferenceKind kind,
                       PointCollector& out) {
   const auto& ev = edges_of.poly.vertices();
   const auto& fv = faces_of.poly.vertices();
-  for (std::size_t f = 0; f < faces_of.poly.faces().size(); ++f) {
+  const auto candidates = plane_crossing_candidates(edges_of, faces_of);
+  int cached_face = -1;
+  Rational3 n;
+  Rational c;
+  std::vector<Rational3> loop_v, loop_w;
+  for (const auto& [e, f] : candidates) {
     const auto& loop = faces_of.poly.faces()[f];
-    const Rational3 n = faces_of.face_normal<Rational>(static_cast<int>(f));
-    const Rational c = dot(n, lift<Rational>(fv[loop[0]]));
-    // Inside test for a point x in the face plane: (v_{i+1} - v_i) x (x - v_i) . n >= 0.
-    std::vector<Rational3> loop_v, loop_w;
-    for (std::size_t i = 0; i < loop.size(); ++i) {
-      loop_v.push_back(lift<Rational>(fv[loop[i]]));
-      loop_w.push_back(diff<Rational>(fv[loop[(i + 1) % loop.size()]], fv[loop[i]]));
+    if (f != cached_face) {
+      cached_face = f;
+      n = faces_of.face_normal<Rational>(f);
+      c = dot(n, lift<Rational>(fv[loop[0]]));
+      // Inside test for x in the face plane: (v_{i+1} - v_i) x (x - v_i) . n >= 0.
+      loop_v.clear();
+      loop_w.clear();
+      for (std::size_t i = 0; i < loop.size(); ++i) {
+        loop_v.push_back(lift<Rational>(fv[loop[i]]));
+        loop_w.push_back(diff<Rational>(fv[loop[(i + 1) % loop.size()]], fv[loop[i]]));
+      }
     }
-    for (std::size_t e = 0; e < edges_of.poly.edges().size(); ++e) {
+    {
       const Rational3 p = lift<Rational>(ev[edges_of.poly.edges()[e][0]]);
       const Rational3 q = lift<Rational>(ev[edges_of.poly.edges()[e][1]]);
       const Rational sp = dot(n, p) - c;
@@ -371,8 +440,7 @@ void edge_face_points(const Hull& edges_of, const Hull& faces_of, InterferenceKi
       }
       if (empty) continue;
       for (const Rational& t : {lo, hi}) {
-        out.add({p[0] + t * d[0], p[1] + t * d[1], p[2] + t * d[2]}, kind, static_cast<int>(e),
-                static_cast<int>(f));
+        out.add({p[0] + t * d[0], p[1] + t * d[1], p[2] + t * d[2]}, kind, e, f);
       }
     }
   }
@@ -402,11 +470,17 @@ void vertex_points(const Hull& of, const Hull& in, InterferenceKind kind, PointC
 
 std::vector<InterferencePoint> interference_points(const std::vector<Eigen::Vector3d>& a,
                                                    const std::vector<Eigen::Vector3d>& b) {
+  return interference_points(ConvexPolytope::from_points(a), ConvexPolytope::from_points(b));
+}
+
+std::vector<InterferencePoint> interference_points(const ConvexPolytope& a,
+                                                   const ConvexPolytope& b) {
   // proof: proofs/interference.md#interference-points
   const Hull A(a);
   const Hull B(b);
   std::vector<InterferencePoint> result;
-  if (boxes_separate(a, b)) return result;
+  if (boxes_separate(a.vertices(), b.vertices())) return result;
+  if (classify_hulls(A, B) == Contact::kSeparated) return result;
   PointCollector out;
   edge_face_points(A, B, InterferenceKind::kEdgeOfAOnFaceOfB, out);
   edge_face_points(B, A, InterferenceKind::kEdgeOfBOnFaceOfA, out);
@@ -430,9 +504,9 @@ double certified_lower_bound(const SeparationWitness& w) {
   if (CGAL::sign(gap) != CGAL::POSITIVE) return 0.0;
   const Exact gap2 = gap * gap;
   const Exact norm2 = dot(lift<Exact>(w.normal), lift<Exact>(w.normal));
-  double r = (w.offset_b - w.offset_a) / w.normal.norm() * (1.0 - 0x1p-50);
+  double r = (0.5 * w.offset_b - 0.5 * w.offset_a) / w.normal.norm() * 2.0;
   if (!std::isfinite(r)) r = std::numeric_limits<double>::max();
-  while (r > 0.0 && !(gap2 >= Exact(r) * Exact(r) * norm2)) r = std::nextafter(r, 0.0);
+  for (int it = 0; r > 0.0 && !(gap2 >= Exact(r) * Exact(r) * norm2); ++it) r = step_down(r, it);
   return r;
 }
 
@@ -478,7 +552,11 @@ bool check_witness_exactly(const std::vector<Eigen::Vector3d>& a,
 namespace {
 
 using HKernel = CGAL::Homogeneous<double>;
-using DistanceTraits = CGAL::Polytope_distance_d_traits_3<HKernel, CGAL::MP_Float, double>;
+// ET AND NT exact (Gmpzf). Measured: with NT = double (cgal-notes' Homogeneous<double>,
+// MP_Float, double) the filtered pricing stops early on near-contact pairs (distance 1e-9)
+// and reports a squared distance up to 1e-6 relatively TOO LARGE - unsound for a lower bound.
+// See SeparationWitness.RandomWitnessesAreSoundTightAndTamperEvident.
+using DistanceTraits = CGAL::Polytope_distance_d_traits_3<HKernel, CGAL::Gmpzf, CGAL::Gmpzf>;
 using PolytopeDistance = CGAL::Polytope_distance_d<DistanceTraits>;
 
 std::vector<HKernel::Point_3> homogeneous_points(const std::vector<Eigen::Vector3d>& pts) {
@@ -524,10 +602,10 @@ std::optional<SeparationWitness> exact_separation_witness(const std::vector<Eige
   if (CGAL::is_zero(distance.squared_distance_numerator())) return std::nullopt;
 
   // Closest-point direction q - p (common homogeneous denominator).
-  std::vector<CGAL::MP_Float> p(distance.realizing_point_p_coordinates_begin(),
-                                distance.realizing_point_p_coordinates_end());
-  std::vector<CGAL::MP_Float> q(distance.realizing_point_q_coordinates_begin(),
-                                distance.realizing_point_q_coordinates_end());
+  std::vector<Exact> p(distance.realizing_point_p_coordinates_begin(),
+                       distance.realizing_point_p_coordinates_end());
+  std::vector<Exact> q(distance.realizing_point_q_coordinates_begin(),
+                       distance.realizing_point_q_coordinates_end());
   if (p.size() != 4 || q.size() != 4 || p[3] != q[3]) {
     throw std::logic_error("Polytope_distance_d: unexpected realizing point representation");
   }
@@ -538,8 +616,10 @@ std::optional<SeparationWitness> exact_separation_witness(const std::vector<Eige
   if (auto w = witness_along(a, b, n)) return w;
 
   // Fallback: the best exact SAT axis (rounded), for gaps that the rounded direction lost.
-  const Hull A(a);
-  const Hull B(b);
+  const ConvexPolytope pa = ConvexPolytope::from_points(a);
+  const ConvexPolytope pb = ConvexPolytope::from_points(b);
+  const Hull A(pa);
+  const Hull B(pb);
   std::optional<SeparationWitness> best;
   double best_bound = -1.0;
   for (const Axis& axis : candidate_axes(A, B)) {
@@ -566,12 +646,30 @@ double exact_distance_squared_lower(const std::vector<Eigen::Vector3d>& a,
   const auto ha = homogeneous_points(a);
   const auto hb = homogeneous_points(b);
   const PolytopeDistance distance(ha.begin(), ha.end(), hb.begin(), hb.end());
-  const CGAL::MP_Float num = distance.squared_distance_numerator();
-  const CGAL::MP_Float den = distance.squared_distance_denominator();
+  Exact num = distance.squared_distance_numerator();
+  Exact den = distance.squared_distance_denominator();
   if (CGAL::is_zero(num)) return 0.0;
-  CGAL::Protect_FPU_rounding<true> guard;
-  const IV ratio = IV(CGAL::to_interval(num)) / IV(CGAL::to_interval(den));
-  return std::max(0.0, ratio.inf());
+  if (CGAL::sign(den) == CGAL::NEGATIVE) {
+    num = -num;
+    den = -den;
+  }
+  double lower;
+  {
+    CGAL::Protect_FPU_rounding<true> guard;
+    lower = (IV(CGAL::to_interval(num)) / IV(CGAL::to_interval(den))).inf();
+  }
+  // Never trust a conversion: step down until lower * den <= num holds exactly, then up while
+  // the next double still satisfies it (so exactly representable distances come out exact).
+  const double inf = std::numeric_limits<double>::infinity();
+  lower = std::max(0.0, lower);
+  if (!std::isfinite(lower)) lower = std::numeric_limits<double>::max();
+  for (int it = 0; lower > 0.0 && Exact(lower) * den > num; ++it) lower = step_down(lower, it);
+  for (int step = 0; step < 4; ++step) {
+    const double up = std::nextafter(lower, inf);
+    if (!(Exact(up) * den <= num)) break;
+    lower = up;
+  }
+  return lower;
 }
 
 }  // namespace grpvss::geometry
