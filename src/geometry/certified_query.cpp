@@ -114,12 +114,11 @@ CertifiedPairResult from_exact(const std::vector<Vector3d>& a, const std::vector
       result.clearance_lower_bound = s->lower_bound;
       return result;
     }
-    // Only for gaps below what double normals can resolve (about 1e-15 of the extent).
+    // Only for gaps below what double normals can resolve (about 1e-15 of the extent). The
+    // exact core may still find no double slab (gap below the witness format's resolution):
+    // the pair stays kSeparated (decided exactly) with no witness and clearance 0.
     result.witness = exact_separation_witness(a, b);
-    if (!result.witness) {
-      throw std::logic_error("certified_pair_query: exact core separated a pair without witness");
-    }
-    result.clearance_lower_bound = certified_lower_bound(*result.witness);
+    if (result.witness) result.clearance_lower_bound = certified_lower_bound(*result.witness);
   }
   return result;
 }
@@ -148,7 +147,7 @@ std::optional<CertifiedSeparation> certify_separation(const std::vector<Vector3d
                                                       const std::vector<Vector3d>& b,
                                                       const Vector3d& normal_AB) {
   // proof: proofs/fast-path.md#certified-separation
-  if (!normal_AB.allFinite() || normal_AB.isZero()) return std::nullopt;
+  if (!normal_AB.allFinite() || (normal_AB.array() == 0.0).all()) return std::nullopt;
   const UpwardRoundingScope upward;
   const double* n = normal_AB.data();
   double offset_a = -std::numeric_limits<double>::infinity();

@@ -36,8 +36,11 @@ const char* to_string(DecidedBy decided_by);
 /// \brief The answer of certified_pair_query().
 struct CertifiedPairResult {
   Contact contact = Contact::kOverlapping;
-  /// Present iff contact == kSeparated; passes check_witness_exactly(a, b, *witness,
-  /// clearance_lower_bound). Normal points from A to B.
+  /// Present only if contact == kSeparated; passes check_witness_exactly(a, b, *witness,
+  /// clearance_lower_bound). Normal points from A to B. Absent for a separated pair only when
+  /// the gap is below what a double slab can express (~1e-16 of the coordinates; see
+  /// exact_separation_witness()): then decided_by == kExactFallback, the separation rests on
+  /// classify_exact() alone and clearance_lower_bound == 0.
   std::optional<SeparationWitness> witness;
   /// Proven \f$0 \le\f$ clearance_lower_bound \f$\le \mathrm{dist}(\mathrm{conv}A,
   /// \mathrm{conv}B)\f$; 0 unless separated.
