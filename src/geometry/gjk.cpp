@@ -185,10 +185,10 @@ GjkResult gjk(const std::vector<Vector3d>& a, const std::vector<Vector3d>& b,
   GjkResult result;
   // n separates A (below) from B (above), so the first useful support direction of A - B is
   // -v = n; without a warm start use the direction from a[0] to b[0].
-  Vector3d direction = (warm_start_normal != nullptr && !warm_start_normal->isZero())
-                           ? *warm_start_normal
-                           : Vector3d(b[0] - a[0]);
-  if (direction.isZero()) direction = Vector3d::UnitX();
+  // Exact zero tests: Eigen's isZero() is fuzzy (|x| <= 1e-12) and tiny vectors matter here.
+  const bool warm = warm_start_normal != nullptr && !(warm_start_normal->array() == 0.0).all();
+  Vector3d direction = warm ? *warm_start_normal : Vector3d(b[0] - a[0]);
+  if ((direction.array() == 0.0).all()) direction = Vector3d::UnitX();
   Simplex simplex;
   simplex.v[0] = support(a, b, direction);
   simplex.weight[0] = 1.0;
