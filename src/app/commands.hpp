@@ -12,5 +12,6 @@ constexpr int kExitFinding = 1;
 constexpr int kExitInputError = 2;
 
 void register_trajectory_command(CLI::App& app, int& exit_code);
+void register_expansion_audit_command(CLI::App& app, int& exit_code);
 
 }  // namespace grpvss::app

@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   int exit_code = grpvss::app::kExitOk;
   grpvss::app::register_trajectory_command(app, exit_code);
+  grpvss::app::register_expansion_audit_command(app, exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
