@@ -43,7 +43,8 @@ bool contains_ball_exactly(const ConvexPolytope& p, double radius);
 /// \p hull, q a vertex of P_r (these are the rounded vertices of the exact rational sum,
 /// plus any sum that rounding pushed onto the hull). The candidate is accepted only if
 /// contains_ball_sum_exactly(candidate, hull, radius); otherwise P is inflated to
-/// r' = r (1 + 2^-40) + 2^-60 (repeatedly) and the sum rebuilt. Build offsets ONCE (per link
+/// \f$r' = r + 2^k (2^{-40} r + 8\,\mathrm{ulp}(\max|h|))\f$, k = 0, 1, ..., and the sum
+/// rebuilt (the check is always against the requested r). Build offsets ONCE (per link
 /// hull in its link frame, per obstacle in the world); never rotate an offset in floating point.
 /// \throws std::invalid_argument unless radius is finite and > 0;
 ///         std::logic_error if no candidate verifies after several inflations.

@@ -1,0 +1,577 @@
+/// \file
+/// \brief CGAL translation unit 2 of 2: exact contact classification (filtered SAT),
+/// exact interference points, separation witnesses and exact distances.
+///
+/// Filtering discipline (cgal-notes.md): interval arithmetic (Interval_nt<false>) runs only
+/// inside a Protect_FPU_rounding<true> scope; every exact fallback (Gmpzf, Gmpq, MP_Float)
+/// runs after that scope has restored round-to-nearest.
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/FPU.h>
+#include <CGAL/Gmpq.h>
+#include <CGAL/Gmpzf.h>
+#include <CGAL/Homogeneous.h>
+#include <CGAL/Interval_nt.h>
+#include <CGAL/MP_Float.h>
+#include <CGAL/Polytope_distance_d.h>
+#include <CGAL/Polytope_distance_d_traits_3.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "grpvss/geometry/convex_polytope.hpp"
+#include "grpvss/geometry/exact_contact.hpp"
+#include "grpvss/geometry/separation_witness.hpp"
+
+namespace grpvss::geometry {
+
+namespace {
+
+using IV = CGAL::Interval_nt<false>;  // needs a Protect_FPU_rounding<true> scope
+using Exact = CGAL::Gmpzf;            // exact +, -, * of doubles
+using Rational = CGAL::Gmpq;          // exact division (interference points only)
+using IV3 = std::array<IV, 3>;
+using Exact3 = std::array<Exact, 3>;
+using Rational3 = std::array<Rational, 3>;
+
+// ---- small exact / interval vector helpers ---------------------------------------------------
+
+template <class T>
+std::array<T, 3> cross(const std::array<T, 3>& u, const std::array<T, 3>& w) {
+  return {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
+}
+template <class T>
+T dot(const std::array<T, 3>& u, const std::array<T, 3>& w) {
+  return u[0] * w[0] + u[1] * w[1] + u[2] * w[2];
+}
+template <class T>
+std::array<T, 3> lift(const Eigen::Vector3d& v) {
+  return {T(v.x()), T(v.y()), T(v.z())};
+}
+template <class T>
+std::array<T, 3> minus(const std::array<T, 3>& u, const std::array<T, 3>& w) {
+  return {u[0] - w[0], u[1] - w[1], u[2] - w[2]};
+}
+template <class T>
+std::array<T, 3> diff(const Eigen::Vector3d& q, const Eigen::Vector3d& p) {
+  return minus(lift<T>(q), lift<T>(p));
+}
+template <class T>
+bool is_zero3(const std::array<T, 3>& u) {
+  return CGAL::is_zero(u[0]) && CGAL::is_zero(u[1]) && CGAL::is_zero(u[2]);
+}
+
+enum class Certain { kNegative, kZero, kPositive, kUnknown };
+Certain sign_of(const IV& x) {
+  if (x.inf() > 0) return Certain::kPositive;
+  if (x.sup() < 0) return Certain::kNegative;
+  if (x.inf() == 0 && x.sup() == 0) return Certain::kZero;
+  return Certain::kUnknown;
+}
+
+// ---- exact hull data --------------------------------------------------------------------------
+
+/// A ConvexPolytope plus the (outward, non-normalized) face normals as exact products of
+/// vertex differences: n_f = (v1 - v0) x (v2 - v0) for the face's first three loop vertices.
+struct Hull {
+  explicit Hull(const std::vector<Eigen::Vector3d>& points)
+      : poly(ConvexPolytope::from_points(points)) {}
+  ConvexPolytope poly;
+  const Eigen::Vector3d& vertex(int f, int k) const {
+    return poly.vertices()[poly.faces()[f][k]];
+  }
+  template <class T>
+  std::array<T, 3> face_normal(int f) const {
+    return cross(diff<T>(vertex(f, 1), vertex(f, 0)), diff<T>(vertex(f, 2), vertex(f, 0)));
+  }
+  template <class T>
+  std::array<T, 3> edge_direction(int e) const {
+    const auto& ed = poly.edges()[e];
+    return diff<T>(poly.vertices()[ed[1]], poly.vertices()[ed[0]]);
+  }
+};
+
+/// Candidate separating axis: a face normal of A, of B, or edge(A) x edge(B).
+struct Axis {
+  enum Kind { kFaceA, kFaceB, kEdges } kind;
+  int i;
+  int j;
+};
+
+template <class T>
+std::array<T, 3> axis_vector(const Axis& axis, const Hull& A, const Hull& B) {
+  switch (axis.kind) {
+    case Axis::kFaceA: return A.face_normal<T>(axis.i);
+    case Axis::kFaceB: return B.face_normal<T>(axis.i);
+    case Axis::kEdges: return cross(A.edge_direction<T>(axis.i), B.edge_direction<T>(axis.j));
+  }
+  throw std::logic_error("bad axis kind");
+}
+
+enum class AxisVerdict { kSeparates, kTouches, kOverlaps, kUnknown };
+
+/// Interval projections; must run under Protect_FPU_rounding<true>.
+AxisVerdict interval_verdict(const IV3& n, const Hull& A, const Hull& B) {
+  auto range = [&n](const std::vector<Eigen::Vector3d>& pts, double& lo_min, double& hi_min,
+                    double& lo_max, double& hi_max) {
+    lo_min = hi_min = lo_max = hi_max = 0.0;
+    bool first = true;
+    for (const auto& p : pts) {
+      const IV d = dot(n, lift<IV>(p));
+      if (first) {
+        lo_min = lo_max = d.inf();
+        hi_min = hi_max = d.sup();
+        first = false;
+      } else {
+        lo_min = std::min(lo_min, d.inf());
+        hi_min = std::min(hi_min, d.sup());
+        lo_max = std::max(lo_max, d.inf());
+        hi_max = std::max(hi_max, d.sup());
+      }
+    }
+  };
+  double a_lo_min, a_hi_min, a_lo_max, a_hi_max, b_lo_min, b_hi_min, b_lo_max, b_hi_max;
+  range(A.poly.vertices(), a_lo_min, a_hi_min, a_lo_max, a_hi_max);
+  range(B.poly.vertices(), b_lo_min, b_hi_min, b_lo_max, b_hi_max);
+  // max A in [a_lo_max, a_hi_max], min B in [b_lo_min, b_hi_min], etc.
+  if (a_hi_max < b_lo_min || b_hi_max < a_lo_min) return AxisVerdict::kSeparates;
+  if (a_lo_max > b_hi_min && b_lo_max > a_hi_min) return AxisVerdict::kOverlaps;
+  return AxisVerdict::kUnknown;
+}
+
+/// Exact projections (round-to-nearest mode; Gmpzf is exact anyway).
+AxisVerdict exact_verdict(const Exact3& n, const Hull& A, const Hull& B) {
+  if (is_zero3(n)) return AxisVerdict::kOverlaps;  // no axis: decides nothing
+  auto range = [&n](const std::vector<Eigen::Vector3d>& pts, Exact& lo, Exact& hi) {
+    lo = hi = dot(n, lift<Exact>(pts.front()));
+    for (std::size_t i = 1; i < pts.size(); ++i) {
+      const Exact d = dot(n, lift<Exact>(pts[i]));
+      if (d < lo) lo = d;
+      if (d > hi) hi = d;
+    }
+  };
+  Exact a_min, a_max, b_min, b_max;
+  range(A.poly.vertices(), a_min, a_max);
+  range(B.poly.vertices(), b_min, b_max);
+  if (a_max < b_min || b_max < a_min) return AxisVerdict::kSeparates;
+  if (a_max == b_min || b_max == a_min) return AxisVerdict::kTouches;
+  return AxisVerdict::kOverlaps;
+}
+
+/// Gauss-map test (Gregorius, "The Separating Axis Test between Convex Polyhedra", GDC 2013):
+/// do the arcs of edge eA (between A's face normals a, b) and of edge eB (between B's NEGATED
+/// face normals c, d) cross in their interiors? Only then is eA x eB a facet normal of A - B.
+/// Returns false only when intervals PROVE no crossing (keeping extra axes is always sound).
+/// Must run under Protect_FPU_rounding<true>.
+bool may_be_minkowski_face(const IV3& a, const IV3& b, const IV3& c, const IV3& d) {
+  const IV3 bxa = cross(b, a);
+  const IV3 dxc = cross(d, c);
+  const Certain cba = sign_of(dot(c, bxa));
+  const Certain dba = sign_of(dot(d, bxa));
+  const Certain adc = sign_of(dot(a, dxc));
+  const Certain bdc = sign_of(dot(b, dxc));
+  const auto u = Certain::kUnknown;
+  if (cba == u || dba == u || adc == u || bdc == u) return true;
+  const auto s = [](Certain x) { return x == Certain::kPositive ? 1 : x == Certain::kNegative ? -1 : 0; };
+  return s(cba) * s(dba) < 0 && s(adc) * s(bdc) < 0 && s(cba) * s(bdc) > 0;
+}
+
+/// Face normals of A, of B, then the edge pairs that may be facets of A - B.
+/// proof: proofs/interference.md#exact-sat (facet normals of A - B are among these).
+std::vector<Axis> candidate_axes(const Hull& A, const Hull& B) {
+  std::vector<Axis> axes;
+  const int fa = static_cast<int>(A.poly.faces().size());
+  const int fb = static_cast<int>(B.poly.faces().size());
+  for (int f = 0; f < fa; ++f) axes.push_back({Axis::kFaceA, f, -1});
+  for (int f = 0; f < fb; ++f) axes.push_back({Axis::kFaceB, f, -1});
+  CGAL::Protect_FPU_rounding<true> guard;
+  std::vector<IV3> na, nb;
+  for (int f = 0; f < fa; ++f) na.push_back(A.face_normal<IV>(f));
+  for (int f = 0; f < fb; ++f) {
+    const IV3 n = B.face_normal<IV>(f);
+    nb.push_back({-n[0], -n[1], -n[2]});
+  }
+  const auto& efa = A.poly.edge_faces();
+  const auto& efb = B.poly.edge_faces();
+  for (std::size_t i = 0; i < efa.size(); ++i) {
+    for (std::size_t j = 0; j < efb.size(); ++j) {
+      if (may_be_minkowski_face(na[efa[i][0]], na[efa[i][1]], nb[efb[j][0]], nb[efb[j][1]])) {
+        axes.push_back({Axis::kEdges, static_cast<int>(i), static_cast<int>(j)});
+      }
+    }
+  }
+  return axes;
+}
+
+Contact classify_hulls(const Hull& A, const Hull& B) {
+  const std::vector<Axis> axes = candidate_axes(A, B);
+  std::vector<Axis> undecided;
+  bool separated = false;
+  {
+    CGAL::Protect_FPU_rounding<true> guard;
+    for (const Axis& axis : axes) {
+      const AxisVerdict v = interval_verdict(axis_vector<IV>(axis, A, B), A, B);
+      if (v == AxisVerdict::kSeparates) {
+        separated = true;
+        break;
+      }
+      if (v == AxisVerdict::kUnknown) undecided.push_back(axis);
+    }
+  }  // round-to-nearest restored before the exact fallback
+  if (separated) return Contact::kSeparated;
+  bool touching = false;
+  for (const Axis& axis : undecided) {
+    const AxisVerdict v = exact_verdict(axis_vector<Exact>(axis, A, B), A, B);
+    if (v == AxisVerdict::kSeparates) return Contact::kSeparated;
+    if (v == AxisVerdict::kTouches) touching = true;
+  }
+  return touching ? Contact::kTouching : Contact::kOverlapping;
+}
+
+/// Exact bounding-box separation (pure double comparisons are exact).
+bool boxes_separate(const std::vector<Eigen::Vector3d>& a, const std::vector<Eigen::Vector3d>& b) {
+  Eigen::Vector3d a_min = a.front(), a_max = a.front(), b_min = b.front(), b_max = b.front();
+  for (const auto& p : a) {
+    a_min = a_min.cwiseMin(p);
+    a_max = a_max.cwiseMax(p);
+  }
+  for (const auto& p : b) {
+    b_min = b_min.cwiseMin(p);
+    b_max = b_max.cwiseMax(p);
+  }
+  for (int k = 0; k < 3; ++k) {
+    if (a_max[k] < b_min[k] || b_max[k] < a_min[k]) return true;
+  }
+  return false;
+}
+
+void require_points(const std::vector<Eigen::Vector3d>& pts, const char* what) {
+  if (pts.empty()) throw std::invalid_argument(std::string(what) + ": empty point set");
+  for (const auto& p : pts) {
+    if (!p.allFinite()) throw std::invalid_argument(std::string(what) + ": non-finite point");
+  }
+}
+
+// ---- rounding helpers ------------------------------------------------------------------------
+
+double round_up(const Exact& x) {
+  double hi = CGAL::to_interval(x).second;
+  while (Exact(hi) < x) hi = std::nextafter(hi, std::numeric_limits<double>::infinity());
+  return hi;
+}
+double round_down(const Exact& x) {
+  double lo = CGAL::to_interval(x).first;
+  while (Exact(lo) > x) lo = std::nextafter(lo, -std::numeric_limits<double>::infinity());
+  return lo;
+}
+
+}  // namespace
+
+// ---- classification ----------------------------------------------------------------------------
+
+const char* to_string(Contact contact) {
+  switch (contact) {
+    case Contact::kSeparated: return "separated";
+    case Contact::kTouching: return "touching";
+    case Contact::kOverlapping: return "overlapping";
+  }
+  return "?";
+}
+
+const char* to_string(InterferenceKind kind) {
+  switch (kind) {
+    case InterferenceKind::kEdgeOfAOnFaceOfB: return "edge-of-A/face-of-B";
+    case InterferenceKind::kEdgeOfBOnFaceOfA: return "edge-of-B/face-of-A";
+    case InterferenceKind::kVertexOfAInB: return "vertex-of-A-in-B";
+    case InterferenceKind::kVertexOfBInA: return "vertex-of-B-in-A";
+  }
+  return "?";
+}
+
+Contact classify_exact(const std::vector<Eigen::Vector3d>& a,
+                       const std::vector<Eigen::Vector3d>& b) {
+  // proof: proofs/interference.md#exact-sat
+  const Hull A(a);
+  const Hull B(b);
+  if (boxes_separate(a, b)) return Contact::kSeparated;
+  return classify_hulls(A, B);
+}
+
+// ---- interference points -----------------------------------------------------------------------
+
+namespace {
+
+struct PointCollector {
+  std::vector<std::pair<Rational3, InterferencePoint>> found;
+
+  void add(const Rational3& x, InterferenceKind kind, int first, int second) {
+    for (const auto& [y, ip] : found) {
+      if (ip.kind == kind && y == x) return;
+    }
+    InterferencePoint ip;
+    ip.point = Eigen::Vector3d(CGAL::to_double(x[0]), CGAL::to_double(x[1]),
+                               CGAL::to_double(x[2]));
+    ip.kind = kind;
+    ip.feature_first = first;
+    ip.feature_second = second;
+    found.emplace_back(x, ip);
+  }
+};
+
+/// Edges of `edges_of` meeting faces of `faces_of` (closed polygons), exactly.
+void edge_face_points(const Hull& edges_of, const Hull& faces_of, InterferenceKind kind,
+                      PointCollector& out) {
+  const auto& ev = edges_of.poly.vertices();
+  const auto& fv = faces_of.poly.vertices();
+  for (std::size_t f = 0; f < faces_of.poly.faces().size(); ++f) {
+    const auto& loop = faces_of.poly.faces()[f];
+    const Rational3 n = faces_of.face_normal<Rational>(static_cast<int>(f));
+    const Rational c = dot(n, lift<Rational>(fv[loop[0]]));
+    // Inside test for a point x in the face plane: (v_{i+1} - v_i) x (x - v_i) . n >= 0.
+    std::vector<Rational3> loop_v, loop_w;
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+      loop_v.push_back(lift<Rational>(fv[loop[i]]));
+      loop_w.push_back(diff<Rational>(fv[loop[(i + 1) % loop.size()]], fv[loop[i]]));
+    }
+    for (std::size_t e = 0; e < edges_of.poly.edges().size(); ++e) {
+      const Rational3 p = lift<Rational>(ev[edges_of.poly.edges()[e][0]]);
+      const Rational3 q = lift<Rational>(ev[edges_of.poly.edges()[e][1]]);
+      const Rational sp = dot(n, p) - c;
+      const Rational sq = dot(n, q) - c;
+      const int gp = CGAL::sign(sp), gq = CGAL::sign(sq);
+      if (gp * gq > 0) continue;
+      const Rational3 d = minus(q, p);
+      // Parameter range t in [lo, hi] of p + t d inside the face.
+      Rational lo(0), hi(1);
+      if (gp != 0 || gq != 0) {
+        lo = hi = sp / (sp - sq);
+      }
+      bool empty = false;
+      for (std::size_t i = 0; i < loop.size() && !empty; ++i) {
+        const Rational alpha = dot(cross(loop_w[i], minus(p, loop_v[i])), n);
+        const Rational beta = dot(cross(loop_w[i], d), n);
+        // alpha + beta t >= 0
+        if (CGAL::is_zero(beta)) {
+          if (alpha < 0) empty = true;
+        } else {
+          const Rational t = -alpha / beta;
+          if (beta > 0) {
+            if (t > lo) lo = t;
+          } else if (t < hi) {
+            hi = t;
+          }
+          if (lo > hi) empty = true;
+        }
+      }
+      if (empty) continue;
+      for (const Rational& t : {lo, hi}) {
+        out.add({p[0] + t * d[0], p[1] + t * d[1], p[2] + t * d[2]}, kind, static_cast<int>(e),
+                static_cast<int>(f));
+      }
+    }
+  }
+}
+
+/// Vertices of `of` inside closed `in`, exactly (all face planes n.x <= c).
+void vertex_points(const Hull& of, const Hull& in, InterferenceKind kind, PointCollector& out) {
+  std::vector<std::pair<Exact3, Exact>> planes;
+  for (std::size_t f = 0; f < in.poly.faces().size(); ++f) {
+    const Exact3 n = in.face_normal<Exact>(static_cast<int>(f));
+    planes.emplace_back(n, dot(n, lift<Exact>(in.vertex(static_cast<int>(f), 0))));
+  }
+  for (std::size_t v = 0; v < of.poly.vertices().size(); ++v) {
+    const Exact3 x = lift<Exact>(of.poly.vertices()[v]);
+    bool inside = true;
+    for (const auto& [n, c] : planes) {
+      if (dot(n, x) > c) {
+        inside = false;
+        break;
+      }
+    }
+    if (inside) out.add(lift<Rational>(of.poly.vertices()[v]), kind, static_cast<int>(v), -1);
+  }
+}
+
+}  // namespace
+
+std::vector<InterferencePoint> interference_points(const std::vector<Eigen::Vector3d>& a,
+                                                   const std::vector<Eigen::Vector3d>& b) {
+  // proof: proofs/interference.md#interference-points
+  const Hull A(a);
+  const Hull B(b);
+  std::vector<InterferencePoint> result;
+  if (boxes_separate(a, b)) return result;
+  PointCollector out;
+  edge_face_points(A, B, InterferenceKind::kEdgeOfAOnFaceOfB, out);
+  edge_face_points(B, A, InterferenceKind::kEdgeOfBOnFaceOfA, out);
+  vertex_points(A, B, InterferenceKind::kVertexOfAInB, out);
+  vertex_points(B, A, InterferenceKind::kVertexOfBInA, out);
+  for (auto& [x, ip] : out.found) result.push_back(ip);
+  return result;
+}
+
+// ---- separation witnesses -------------------------------------------------------------------------
+
+double certified_lower_bound(const SeparationWitness& w) {
+  // proof: proofs/interference.md#separation-witness
+  if (!w.normal.allFinite() || w.normal.isZero(0.0)) {
+    throw std::invalid_argument("separation witness needs a finite non-zero normal");
+  }
+  if (!std::isfinite(w.offset_a) || !std::isfinite(w.offset_b)) {
+    throw std::invalid_argument("separation witness needs finite offsets");
+  }
+  const Exact gap = Exact(w.offset_b) - Exact(w.offset_a);
+  if (CGAL::sign(gap) != CGAL::POSITIVE) return 0.0;
+  const Exact gap2 = gap * gap;
+  const Exact norm2 = dot(lift<Exact>(w.normal), lift<Exact>(w.normal));
+  double r = (w.offset_b - w.offset_a) / w.normal.norm() * (1.0 - 0x1p-50);
+  if (!std::isfinite(r)) r = std::numeric_limits<double>::max();
+  while (r > 0.0 && !(gap2 >= Exact(r) * Exact(r) * norm2)) r = std::nextafter(r, 0.0);
+  return r;
+}
+
+bool check_witness_exactly(const std::vector<Eigen::Vector3d>& a,
+                           const std::vector<Eigen::Vector3d>& b, const SeparationWitness& w,
+                           double claimed_lower_bound) {
+  // proof: proofs/interference.md#separation-witness
+  if (a.empty() || b.empty()) return false;
+  if (!w.normal.allFinite() || w.normal.isZero(0.0)) return false;
+  if (!std::isfinite(w.offset_a) || !std::isfinite(w.offset_b)) return false;
+  if (std::isnan(claimed_lower_bound) || w.offset_a > w.offset_b) return false;
+  for (const auto& p : a) if (!p.allFinite()) return false;
+  for (const auto& p : b) if (!p.allFinite()) return false;
+
+  const Exact3 n = lift<Exact>(w.normal);
+  std::vector<std::size_t> unsure_a, unsure_b;
+  bool violated = false;
+  {
+    CGAL::Protect_FPU_rounding<true> guard;
+    const IV3 ni = lift<IV>(w.normal);
+    for (std::size_t i = 0; i < a.size() && !violated; ++i) {
+      const IV d = dot(ni, lift<IV>(a[i]));
+      if (d.inf() > w.offset_a) violated = true;
+      else if (d.sup() > w.offset_a) unsure_a.push_back(i);
+    }
+    for (std::size_t i = 0; i < b.size() && !violated; ++i) {
+      const IV d = dot(ni, lift<IV>(b[i]));
+      if (d.sup() < w.offset_b) violated = true;
+      else if (d.inf() < w.offset_b) unsure_b.push_back(i);
+    }
+  }
+  if (violated) return false;
+  const Exact oa(w.offset_a), ob(w.offset_b);
+  for (std::size_t i : unsure_a) if (dot(n, lift<Exact>(a[i])) > oa) return false;
+  for (std::size_t i : unsure_b) if (dot(n, lift<Exact>(b[i])) < ob) return false;
+  if (claimed_lower_bound <= 0.0) return true;  // gap >= 0 >= claimed * |n|
+  if (std::isinf(claimed_lower_bound)) return false;
+  const Exact gap = ob - oa;
+  const Exact claimed(claimed_lower_bound);
+  return gap * gap >= claimed * claimed * dot(n, n);
+}
+
+namespace {
+
+using HKernel = CGAL::Homogeneous<double>;
+using DistanceTraits = CGAL::Polytope_distance_d_traits_3<HKernel, CGAL::MP_Float, double>;
+using PolytopeDistance = CGAL::Polytope_distance_d<DistanceTraits>;
+
+std::vector<HKernel::Point_3> homogeneous_points(const std::vector<Eigen::Vector3d>& pts) {
+  std::vector<HKernel::Point_3> out;
+  out.reserve(pts.size());
+  for (const auto& p : pts) out.emplace_back(p.x(), p.y(), p.z(), 1.0);
+  return out;
+}
+
+/// The witness along direction n (double): exact support values rounded outward.
+std::optional<SeparationWitness> witness_along(const std::vector<Eigen::Vector3d>& a,
+                                               const std::vector<Eigen::Vector3d>& b,
+                                               const Eigen::Vector3d& n) {
+  if (!n.allFinite() || n.isZero(0.0)) return std::nullopt;
+  const Exact3 ne = lift<Exact>(n);
+  Exact max_a = dot(ne, lift<Exact>(a.front()));
+  for (const auto& p : a) {
+    const Exact d = dot(ne, lift<Exact>(p));
+    if (d > max_a) max_a = d;
+  }
+  Exact min_b = dot(ne, lift<Exact>(b.front()));
+  for (const auto& p : b) {
+    const Exact d = dot(ne, lift<Exact>(p));
+    if (d < min_b) min_b = d;
+  }
+  SeparationWitness w{n, round_up(max_a), round_down(min_b)};
+  if (!std::isfinite(w.offset_a) || !std::isfinite(w.offset_b) || !(w.offset_a < w.offset_b)) {
+    return std::nullopt;
+  }
+  return w;
+}
+
+}  // namespace
+
+std::optional<SeparationWitness> exact_separation_witness(const std::vector<Eigen::Vector3d>& a,
+                                                          const std::vector<Eigen::Vector3d>& b) {
+  // proof: proofs/interference.md#separation-witness
+  require_points(a, "exact_separation_witness");
+  require_points(b, "exact_separation_witness");
+  const auto ha = homogeneous_points(a);
+  const auto hb = homogeneous_points(b);
+  const PolytopeDistance distance(ha.begin(), ha.end(), hb.begin(), hb.end());
+  if (CGAL::is_zero(distance.squared_distance_numerator())) return std::nullopt;
+
+  // Closest-point direction q - p (common homogeneous denominator).
+  std::vector<CGAL::MP_Float> p(distance.realizing_point_p_coordinates_begin(),
+                                distance.realizing_point_p_coordinates_end());
+  std::vector<CGAL::MP_Float> q(distance.realizing_point_q_coordinates_begin(),
+                                distance.realizing_point_q_coordinates_end());
+  if (p.size() != 4 || q.size() != 4 || p[3] != q[3]) {
+    throw std::logic_error("Polytope_distance_d: unexpected realizing point representation");
+  }
+  const double sign = CGAL::sign(p[3]) == CGAL::NEGATIVE ? -1.0 : 1.0;
+  Eigen::Vector3d n(CGAL::to_double(q[0] - p[0]), CGAL::to_double(q[1] - p[1]),
+                    CGAL::to_double(q[2] - p[2]));
+  n *= sign;
+  if (auto w = witness_along(a, b, n)) return w;
+
+  // Fallback: the best exact SAT axis (rounded), for gaps that the rounded direction lost.
+  const Hull A(a);
+  const Hull B(b);
+  std::optional<SeparationWitness> best;
+  double best_bound = -1.0;
+  for (const Axis& axis : candidate_axes(A, B)) {
+    const Exact3 ne = axis_vector<Exact>(axis, A, B);
+    const Eigen::Vector3d nd(CGAL::to_double(ne[0]), CGAL::to_double(ne[1]),
+                             CGAL::to_double(ne[2]));
+    for (const Eigen::Vector3d& dir : {nd, Eigen::Vector3d(-nd)}) {
+      if (auto w = witness_along(a, b, dir)) {
+        const double bound = certified_lower_bound(*w);
+        if (bound > best_bound) {
+          best_bound = bound;
+          best = w;
+        }
+      }
+    }
+  }
+  return best;
+}
+
+double exact_distance_squared_lower(const std::vector<Eigen::Vector3d>& a,
+                                    const std::vector<Eigen::Vector3d>& b) {
+  require_points(a, "exact_distance_squared_lower");
+  require_points(b, "exact_distance_squared_lower");
+  const auto ha = homogeneous_points(a);
+  const auto hb = homogeneous_points(b);
+  const PolytopeDistance distance(ha.begin(), ha.end(), hb.begin(), hb.end());
+  const CGAL::MP_Float num = distance.squared_distance_numerator();
+  const CGAL::MP_Float den = distance.squared_distance_denominator();
+  if (CGAL::is_zero(num)) return 0.0;
+  CGAL::Protect_FPU_rounding<true> guard;
+  const IV ratio = IV(CGAL::to_interval(num)) / IV(CGAL::to_interval(den));
+  return std::max(0.0, ratio.inf());
+}
+
+}  // namespace grpvss::geometry
