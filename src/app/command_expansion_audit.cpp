@@ -18,8 +18,8 @@ namespace {
 
 constexpr int kJsonFormatVersion = 1;
 
-nlohmann::json to_json(const geometry::ExpansionMeasure& m) {
-  nlohmann::json j;
+nlohmann::ordered_json to_json(const geometry::ExpansionMeasure& m) {
+  nlohmann::ordered_json j;
   j["method"] = geometry::to_string(m.method);
   j["applicable"] = m.applicable;
   if (!m.applicable) return j;
@@ -37,15 +37,15 @@ nlohmann::json to_json(const geometry::ExpansionMeasure& m) {
   return j;
 }
 
-nlohmann::json to_json(const geometry::ExpansionAudit& audit, const std::string& robot_path) {
-  nlohmann::json j;
+nlohmann::ordered_json to_json(const geometry::ExpansionAudit& audit, const std::string& robot_path) {
+  nlohmann::ordered_json j;
   j["format_version"] = kJsonFormatVersion;
   j["robot"] = robot_path;
   j["tolerance"] = audit.tolerance;
   j["hull_count"] = audit.hulls.size();
-  nlohmann::json hulls = nlohmann::json::array();
+  nlohmann::ordered_json hulls = nlohmann::ordered_json::array();
   for (const auto& row : audit.hulls) {
-    nlohmann::json h;
+    nlohmann::ordered_json h;
     h["link"] = row.link;
     h["hull"] = row.hull;
     h["source_line"] = row.source_line;
@@ -53,7 +53,7 @@ nlohmann::json to_json(const geometry::ExpansionAudit& audit, const std::string&
     h["vertex_count"] = row.vertex_count;
     h["volume"] = row.volume;
     h["ball_sum_volume"] = row.ball_sum_volume;
-    h["expansions"] = nlohmann::json::array();
+    h["expansions"] = nlohmann::ordered_json::array();
     for (const auto& m : row.expansions) h["expansions"].push_back(to_json(m));
     hulls.push_back(std::move(h));
   }
@@ -72,7 +72,8 @@ void print_table(const geometry::ExpansionAudit& audit, const std::string& robot
              "worst point (link frame)", "verts", "volume", "inflation", "gap");
   for (const auto& row : audit.hulls) {
     fmt::print("{:>4} {:>4} {:>5}  {:<20} {:>8} {:>12}  {:<30} {:>5} {:>10.4f} {:>9} {:>10}\n",
-               row.link, row.hull, row.source_line, "original", "", "", "", row.vertex_count,
+               row.link, row.hull, row.source_line, "original", "", "",
+               fmt::format("ball-sum volume {:.4f}", row.ball_sum_volume), row.vertex_count,
                row.volume, "", "");
     for (const auto& m : row.expansions) {
       if (!m.applicable) {
