@@ -13,12 +13,23 @@ constexpr std::size_t kMaxQuotedField = 40;
 
 bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
 
-/// The field as it appears in messages: quoted, cut to a readable length.
+/// The field as it appears in messages: quoted, cut to a readable length, control and
+/// non-ASCII bytes written as \xNN so a message is always printable.
 std::string quoted(std::string_view field) {
-  if (field.size() > kMaxQuotedField) {
-    return "'" + std::string(field.substr(0, kMaxQuotedField)) + "...'";
+  const bool cut = field.size() > kMaxQuotedField;
+  std::string text = "'";
+  for (const char c : field.substr(0, kMaxQuotedField)) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte < 0x20 || byte >= 0x7f) {
+      static constexpr char kHex[] = "0123456789abcdef";
+      text += "\\x";
+      text += kHex[byte >> 4];
+      text += kHex[byte & 0xf];
+    } else {
+      text += c;
+    }
   }
-  return "'" + std::string(field) + "'";
+  return text + (cut ? "...'" : "'");
 }
 
 /// from_chars rejects a leading '+'; users coming from FORTRAN write it.
@@ -83,6 +94,11 @@ long long parse_integer_field(std::string_view field, const std::string& file_na
 
 NumberReader::NumberReader(std::string_view text, std::string file_name)
     : text_(text), file_name_(std::move(file_name)) {
+  // Editors on Windows may prepend a UTF-8 byte-order mark; it is not content.
+  constexpr std::string_view kByteOrderMark = "\xEF\xBB\xBF";
+  if (text_.substr(0, kByteOrderMark.size()) == kByteOrderMark) {
+    text_.remove_prefix(kByteOrderMark.size());
+  }
   int lines = 0;
   for (const char c : text_) lines += (c == '\n');
   if (!text_.empty() && text_.back() != '\n') ++lines;
@@ -157,9 +173,10 @@ void NumberReader::consume() {
   line_ = peek_end_line_ - 1;
 }
 
-NumberReader::RawLine NumberReader::next_or_fail(const std::string& expected) {
+NumberReader::RawLine NumberReader::next_or_fail(const std::string& expected,
+                                                std::string_view what) {
   RawLine raw;
-  if (!peek(raw, expected)) fail(end_line_, expected, "end of file");
+  if (!peek(raw, what)) fail(end_line_, expected, "end of file");
   consume();
   return raw;
 }
@@ -170,7 +187,7 @@ bool NumberReader::at_end() {
 }
 
 NumberLine NumberReader::read_numbers(std::string_view what) {
-  const RawLine raw = next_or_fail("numbers for " + std::string(what));
+  const RawLine raw = next_or_fail("numbers for " + std::string(what), what);
   NumberLine result;
   result.line = raw.line;
   result.values.reserve(raw.fields.size());
@@ -182,7 +199,7 @@ NumberLine NumberReader::read_numbers(std::string_view what) {
 
 NumberLine NumberReader::read_numbers(std::size_t count, std::string_view what) {
   const std::string expected = plural(count, "number") + " for " + std::string(what);
-  const RawLine raw = next_or_fail(expected);
+  const RawLine raw = next_or_fail(expected, what);
   if (raw.fields.size() != count) fail(raw.line, expected, plural(raw.fields.size(), "number"));
   NumberLine result;
   result.line = raw.line;
@@ -200,7 +217,7 @@ double NumberReader::read_number(std::string_view what) {
 long long NumberReader::read_integer(std::string_view what, long long minimum,
                                      long long maximum) {
   const std::string expected = "an integer for " + std::string(what);
-  const RawLine raw = next_or_fail(expected);
+  const RawLine raw = next_or_fail(expected, what);
   if (raw.fields.size() != 1) {
     fail(raw.line, "a single integer for " + std::string(what),
          plural(raw.fields.size(), "field"));

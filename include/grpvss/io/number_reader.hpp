@@ -5,7 +5,8 @@
 ///
 /// Syntax of one line: numbers separated by commas and/or blanks (spaces, tabs), a trailing
 /// comma allowed, empty fields (`1,,2`) rejected. `#` starts a comment that runs to the end of
-/// the line. Lines that are blank after removing the comment are skipped. A number is what
+/// the line. Lines that are blank after removing the comment are skipped. A leading UTF-8
+/// byte-order mark is ignored. A number is what
 /// `std::from_chars` reads in general format (`2.`, `.5`, `1e3`, with an optional leading `+`);
 /// it must be finite and satisfy \f$|x| \le 10^9\f$. Lines are at most 4096 characters long.
 /// Every failure throws grpvss::InputError naming the file, the 1-based line, what was
@@ -75,7 +76,7 @@ class NumberReader {
   /// Consumes the line last returned by peek().
   void consume();
   /// peek() + consume(), failing with "found end of file" when the text is exhausted.
-  RawLine next_or_fail(const std::string& expected);
+  RawLine next_or_fail(const std::string& expected, std::string_view what);
 
   std::string_view text_;
   std::string file_name_;
