@@ -1,0 +1,147 @@
+#include "grpvss/geometry/minkowski_offset.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <set>
+#include <string>
+
+#include "support/geometry_reference.hpp"
+
+namespace grpvss::geometry {
+namespace {
+
+using testing::Points;
+
+TEST(MinkowskiOffset, ShapesContainTheBallExactlyAndInflateAsStated) {
+  for (double r : {1.0, 0.5, 0.1, 1e-3, 3.7}) {
+    const ConvexPolytope cube = offset_shape_polytope(r, OffsetShape::kCube);
+    const ConvexPolytope rbco = offset_shape_polytope(r, OffsetShape::kRhombicuboctahedron);
+    EXPECT_EQ(cube.vertices().size(), 8u);
+    EXPECT_EQ(cube.faces().size(), 6u);
+    EXPECT_EQ(rbco.vertices().size(), 24u);
+    EXPECT_EQ(rbco.faces().size(), 26u);  // 6 + 12 squares, 8 triangles
+    EXPECT_TRUE(contains_ball_exactly(cube, r));
+    EXPECT_TRUE(contains_ball_exactly(rbco, r));
+    double circum = 0.0;
+    for (const auto& v : rbco.vertices()) circum = std::max(circum, v.norm());
+    EXPECT_LE(circum, 1.16 * r);
+    // The ball is tight: a slightly larger ball pokes out of both shapes.
+    EXPECT_FALSE(contains_ball_exactly(cube, r * (1 + 1e-12)));
+    EXPECT_FALSE(contains_ball_exactly(rbco, r * (1 + 1e-12)));
+  }
+}
+
+TEST(MinkowskiOffset, CubeOffsetOfABoxIsTheGrownBox) {
+  const ConvexPolytope hull = ConvexPolytope::from_points(testing::box({0, 0, 0}, {1, 2, 3}));
+  const ConvexPolytope grown = minkowski_offset(hull, 0.5, OffsetShape::kCube);
+  std::set<std::array<double, 3>> got, expected;
+  for (const auto& v : grown.vertices()) got.insert({v.x(), v.y(), v.z()});
+  for (const auto& v : testing::box({-0.5, -0.5, -0.5}, {1.5, 2.5, 3.5})) {
+    expected.insert({v.x(), v.y(), v.z()});
+  }
+  EXPECT_EQ(got, expected);
+  EXPECT_EQ(grown.volume(), 2.0 * 3.0 * 4.0);
+  EXPECT_TRUE(contains_ball_sum_exactly(grown, hull, 0.5));
+  // Tight: the faces touch hull (+) B(0, 0.5); any larger radius fails, by exactly the excess.
+  EXPECT_FALSE(contains_ball_sum_exactly(grown, hull, 0.5 + 0x1p-40));
+  const auto report = ball_sum_containment_report(grown, hull.vertices(), 0.625);
+  EXPECT_FALSE(report.contained);
+  EXPECT_DOUBLE_EQ(report.worst_protrusion, 0.125);
+}
+
+TEST(MinkowskiOffset, RhombicuboctahedronOffsetOfABoxHasTheTwentySixNormals) {
+  const ConvexPolytope hull = ConvexPolytope::from_points(testing::box({0, 0, 0}, {1, 2, 3}));
+  const ConvexPolytope grown = minkowski_offset(hull, 0.25, OffsetShape::kRhombicuboctahedron);
+  ASSERT_EQ(grown.faces().size(), 26u);
+  std::set<std::array<int, 3>> normals;
+  for (const auto& n : grown.face_normals()) {
+    const double m = n.cwiseAbs().maxCoeff();
+    std::array<int, 3> k{};
+    for (int i = 0; i < 3; ++i) {
+      const double s = n[i] / m;
+      k[i] = static_cast<int>(std::lround(s));
+      EXPECT_NEAR(s, k[i], 1e-9);
+    }
+    normals.insert(k);
+  }
+  EXPECT_EQ(normals.size(), 26u);
+  EXPECT_TRUE(contains_ball_sum_exactly(grown, hull, 0.25));
+  // Tighter than the cube offset.
+  EXPECT_LT(grown.volume(), minkowski_offset(hull, 0.25, OffsetShape::kCube).volume());
+}
+
+/// Every IBM 7545 hull, in its own frame and randomly rotated: both offsets verify exactly and
+/// contain sampled points of hull (+) B(0, r) (checked with an independent exact predicate).
+TEST(MinkowskiOffset, Ibm7545OffsetsContainSampledBallSumPoints) {
+  std::mt19937_64 rng(20240611);
+  std::normal_distribution<double> g(0.0, 1.0);
+  const auto hulls = testing::ibm7545_hulls();
+  for (std::size_t i = 0; i < hulls.size(); ++i) {
+    for (int pose = 0; pose < 2; ++pose) {
+      const Points pts = pose == 0 ? hulls[i]
+                                   : testing::transformed(hulls[i], testing::random_rotation(rng),
+                                                          {10.0, -3.0, 7.0});
+      const ConvexPolytope hull = ConvexPolytope::from_points(pts);
+      for (OffsetShape shape : {OffsetShape::kCube, OffsetShape::kRhombicuboctahedron}) {
+        for (double r : {0.5, 1e-3}) {
+          SCOPED_TRACE("hull " + std::to_string(i) + " pose " + std::to_string(pose) + " r " +
+                       std::to_string(r));
+          const ConvexPolytope grown = minkowski_offset(hull, r, shape);
+          ASSERT_TRUE(contains_ball_sum_exactly(grown, hull, r));
+          const auto report = ball_sum_containment_report(grown, hull.vertices(), r);
+          EXPECT_TRUE(report.contained);
+          EXPECT_LE(report.worst_protrusion, 1e-12);
+          Points xs;
+          for (int s = 0; s < 40; ++s) {
+            Eigen::Vector3d u(g(rng), g(rng), g(rng));
+            u.normalize();
+            // Shrink by 1e-9 so the rounded sample is certainly inside the ball sum.
+            const Eigen::Vector3d x =
+                hull.vertices()[s % hull.vertices().size()] + (r * (1.0 - 1e-9)) * u;
+            xs.push_back(x);
+          }
+          EXPECT_EQ(testing::count_points_outside_hull_exactly(grown.vertices(), xs), 0);
+          // Negative control: both shapes have an axis face at distance r, so 0.1% beyond the
+          // x-extreme vertex is outside.
+          Eigen::Vector3d x_max = hull.vertices().front();
+          for (const auto& v : hull.vertices()) if (v.x() > x_max.x()) x_max = v;
+          EXPECT_EQ(testing::count_points_outside_hull_exactly(
+                        grown.vertices(), {x_max + Eigen::Vector3d(1.001 * r, 0, 0)}),
+                    1);
+        }
+      }
+    }
+  }
+}
+
+TEST(MinkowskiOffset, ContainmentCheckRejectsAShrunkOuterHull) {
+  const auto hulls = testing::ibm7545_hulls();
+  const ConvexPolytope hull = ConvexPolytope::from_points(hulls[3]);
+  const ConvexPolytope grown = minkowski_offset(hull, 0.5, OffsetShape::kRhombicuboctahedron);
+  // Pull every vertex of the offset 1e-6 toward the centroid: no longer contains the sum.
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+  for (const auto& v : grown.vertices()) centroid += v;
+  centroid /= static_cast<double>(grown.vertices().size());
+  Points shrunk;
+  for (const auto& v : grown.vertices()) shrunk.push_back(v + 1e-6 * (centroid - v).normalized());
+  const ConvexPolytope smaller = ConvexPolytope::from_points(shrunk);
+  EXPECT_FALSE(contains_ball_sum_exactly(smaller, hull, 0.5));
+  const auto report = ball_sum_containment_report(smaller, hull.vertices(), 0.5);
+  EXPECT_FALSE(report.contained);
+  EXPECT_GT(report.worst_protrusion, 0.0);
+  EXPECT_LT(report.worst_protrusion, 1e-5);
+  EXPECT_TRUE(contains_ball_sum_exactly(smaller, hull, 0.5 - 1e-5));
+}
+
+TEST(MinkowskiOffset, InvalidRadiusIsRejected) {
+  const ConvexPolytope hull = ConvexPolytope::from_points(testing::box({0, 0, 0}, {1, 1, 1}));
+  EXPECT_THROW(minkowski_offset(hull, 0.0, OffsetShape::kCube), std::invalid_argument);
+  EXPECT_THROW(minkowski_offset(hull, -1.0, OffsetShape::kCube), std::invalid_argument);
+  EXPECT_THROW(minkowski_offset(hull, std::nan(""), OffsetShape::kCube), std::invalid_argument);
+  EXPECT_THROW(contains_ball_sum_exactly(hull, hull, -0.5), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace grpvss::geometry
