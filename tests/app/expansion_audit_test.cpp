@@ -176,6 +176,27 @@ TEST(ExpansionAuditCli, ThesisVerdictsPerHullAsDocumented) {
   EXPECT_EQ(expansion(audit05.at("hulls")[10], "thesis-single").at("origin_on_cap_plane"), 8);
 }
 
+TEST(ExpansionAuditCli, TextTableHasOneBlockPerHullAndFlagsTheMisses) {
+  const CommandResult r = run_cli("expansion-audit --robot " + kRobot + " --tolerance 0.5");
+  ASSERT_EQ(r.exit_code, 0);
+  auto count = [&](const std::string& needle) {
+    int n = 0;
+    for (std::size_t at = r.out.find(needle); at != std::string::npos;
+         at = r.out.find(needle, at + 1)) {
+      ++n;
+    }
+    return n;
+  };
+  EXPECT_EQ(count(" original "), 11);
+  EXPECT_EQ(count(" thesis-single "), 11);
+  EXPECT_EQ(count(" thesis-double "), 11);
+  EXPECT_EQ(count(" cube "), 11);
+  EXPECT_EQ(count(" rhombicuboctahedron "), 11);
+  // Misses at D = 0.5: 3 in single (hulls 0/0, 0/1, 4/0) + 4 in double (also 1/1).
+  EXPECT_EQ(count("      NO "), 7);
+  EXPECT_NE(r.out.find("1.2869e-02"), std::string::npos);  // the frustum's miss
+}
+
 TEST(ExpansionAuditCli, BadRobotFileIsAnInputError) {
   EXPECT_EQ(run_cli("expansion-audit --robot /nonexistent/robot.txt --tolerance 0.5").exit_code,
             2);

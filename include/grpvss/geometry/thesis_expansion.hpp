@@ -27,9 +27,11 @@
 ///   \f$(P_0-P_3)\cdot(P_4-P_3)\le 0\f$ "or" \f$(P_0-P_3)\cdot(P_1-P_3)\le 0\f$. Read
 ///   literally the "or" picks "+" whenever either product is 0, i.e. whenever P4 (or P1) is
 ///   collinear with the edge, which happens on every rectangle-with-midpoints cap of the
-///   IBM 7545 data and would offset half of those edges INWARD. We read it as "use the
-///   non-degenerate test": the product with the larger magnitude decides (for a strictly
-///   convex corner both agree).
+///   IBM 7545 data. We read it as "use the non-degenerate test": the product with the larger
+///   magnitude decides (at a strictly convex corner both agree). With Newell's N,
+///   \f$(P_3-P_2)\times N\f$ already points out of a convex cap, so "+" is selected either
+///   way; the literal reading would go wrong only for an N oriented independently of the
+///   vertex order (then half of the edges next to a midpoint would move INWARD).
 /// - Eq. 4-2: \f$P_l = P_0 \pm \frac{N}{\|N\|}\Delta\f$, a step of \f$\Delta\f$ out of the cap
 ///   plane; together with Eq. 4-1 the line is \f$\sqrt2\Delta\f$ from the edge, as the text
 ///   says. Sign rule of the text: "+" if (1) P3 and the origin are on different sides of the
