@@ -55,6 +55,7 @@ struct EdgeOffsetResult {
   OffsetLine<Scalar> line;
   bool origin_on_plane = false;
   bool degenerate_in_plane_sign = false;
+  bool in_plane_minus = false;
 };
 
 /// Edge P2 -> P3 with P1 before P2 and P4 after P3 (all on the same cap), N the cap normal,
@@ -80,6 +81,7 @@ EdgeOffsetResult<Scalar> offset_edge(const Vec3<Scalar>& p1, const Vec3<Scalar>&
   const Scalar test_prev = step_plus.dot(p1 - p3);
   const Scalar decisive = std::abs(test_next) >= std::abs(test_prev) ? test_next : test_prev;
   result.degenerate_in_plane_sign = test_next == Scalar(0) && test_prev == Scalar(0);
+  result.in_plane_minus = !(decisive <= Scalar(0));
   const Vec3<Scalar> p0 = decisive <= Scalar(0) ? Vec3<Scalar>(p3 + step_plus)
                                                  : Vec3<Scalar>(p3 - step_plus);
 
@@ -181,6 +183,7 @@ ThesisExpansion<Scalar> expand_prism_as_thesis(const HullPoints& hull, double de
     lines[k] = edge.line;
     result.origin_on_cap_plane += edge.origin_on_plane ? 1 : 0;
     result.degenerate_in_plane_sign += edge.degenerate_in_plane_sign ? 1 : 0;
+    result.in_plane_minus += edge.in_plane_minus ? 1 : 0;
   }
   for (int k = 0; k < kThesisPrismVertexCount; ++k) {
     // Vertex k joins edge (k-1, k) [base built at k] and edge (k, k+1) [base built at k+1].

@@ -1,9 +1,11 @@
 // The thesis's expansion (Eq. 4-1 .. 4-12) against hand-computed and closed-form references.
 #include "grpvss/geometry/thesis_expansion.hpp"
+#include "grpvss/io/robot_file.hpp"
 
 #include <array>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
@@ -58,6 +60,7 @@ void expect_box_expanded_exactly() {
   EXPECT_EQ(result.max_midpoint_gap, Scalar(0));
   EXPECT_EQ(result.origin_on_cap_plane, 0);
   EXPECT_EQ(result.degenerate_in_plane_sign, 0);
+  EXPECT_EQ(result.in_plane_minus, 0);
 }
 
 TEST(ThesisExpansion, BoxPrismExpandsToHandComputedVerticesInDouble) {
@@ -174,6 +177,25 @@ TEST(ThesisExpansion, SinglePrecisionDeviatesAtFloatRoundingLevelOnly) {
   EXPECT_LT(single.max_midpoint_gap, 1e-5f);
   EXPECT_LT(twice.max_midpoint_gap, 1e-13);
   EXPECT_GT(static_cast<double>(single.max_midpoint_gap), 1e3 * twice.max_midpoint_gap);
+}
+
+TEST(ThesisExpansion, NewellNormalMakesEq41SelectPlusOnEveryIbm7545Cap) {
+  // docs/expansion-audit.md: (P3-P2) x N points out of a convex cap when N is Newell's normal,
+  // so the ambiguous "or" of Eq. 4-1's sign rule never matters on this data.
+  const RobotModel robot =
+      io::read_robot_file(std::string(GRPVSS_SOURCE_DIR) + "/data/ibm7545/robot.txt");
+  int hulls = 0;
+  for (const Link& link : robot.links) {
+    for (const HullPoints& hull : link.hulls) {
+      ++hulls;
+      EXPECT_EQ(expand_prism_as_thesis<float>(hull, 0.5).in_plane_minus, 0);
+      EXPECT_EQ(expand_prism_as_thesis<double>(hull, 1.0).in_plane_minus, 0);
+      EXPECT_EQ(expand_prism_as_thesis<double>(hull, 1.0).degenerate_in_plane_sign, 0);
+    }
+  }
+  EXPECT_EQ(hulls, 11);
+  const auto clockwise = expand_prism_as_thesis<double>(box_prism(1.0, 4.0, false), 0.5);
+  EXPECT_EQ(clockwise.in_plane_minus, 0);
 }
 
 TEST(ThesisExpansion, RejectsWrongVertexCountAndNonPositiveTolerance) {

@@ -87,6 +87,9 @@ struct ThesisExpansion {
   /// Number of Eq. 4-2 sign decisions (one per edge, 16 in all) taken with the origin on the
   /// cap plane, where the text's rule falls through to "-".
   int origin_on_cap_plane = 0;
+  /// Number of Eq. 4-1 sign decisions (one per edge) that selected "-". With Newell's N this
+  /// is 0 for every convex cap: \f$(P_3-P_2)\times N\f$ already points outward.
+  int in_plane_minus = 0;
   /// Number of Eq. 4-1 sign decisions where both of the text's dot products were exactly 0
   /// (P1, P2, P3, P4 collinear); "+" was then taken.
   int degenerate_in_plane_sign = 0;
