@@ -14,5 +14,6 @@ constexpr int kExitInputError = 2;
 void register_trajectory_command(CLI::App& app, int& exit_code);
 void register_verify_command(CLI::App& app, int& exit_code);
 void register_check_certificate_command(CLI::App& app, int& exit_code);
+void register_expansion_audit_command(CLI::App& app, int& exit_code);
 
 }  // namespace grpvss::app
