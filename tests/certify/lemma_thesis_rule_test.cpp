@@ -239,4 +239,27 @@ TEST(LemmaThesisRule, StraightSegmentConeLemmaOnRandomWedges) {
   }
 }
 
+// proofs/thesis-rule.md#lemma-dmin: on a circular arc of angle <= pi every point is within chord
+// distance of the start (so a chord <= D_min keeps the whole arc in the closed D_min ball); for
+// angles above pi it is not.
+TEST(LemmaThesisRule, DminBallContainsArcsUpToHalfTurn) {
+  std::mt19937 rng(909);
+  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  for (int trial = 0; trial < 2000; ++trial) {
+    const double radius = 0.1 + 10 * u01(rng), angle = M_PI * u01(rng);
+    const Vec3 start{radius, 0, 0};
+    const double chord = 2 * radius * std::sin(angle / 2);
+    for (int k = 0; k <= 200; ++k) {
+      const double a = angle * k / 200;
+      const Vec3 p{radius * std::cos(a), radius * std::sin(a), 0};
+      EXPECT_LE(lemma_ref::norm(lemma_ref::sub(p, start)), chord * (1 + 1e-12) + 1e-12) << "trial " << trial;
+    }
+  }
+  // A 270 degree turn: chord = sqrt(2) R, but the half-turn point is 2R from the start.
+  const double radius = 1.0, angle = 1.5 * M_PI;
+  const double chord = 2 * radius * std::sin(angle / 2);
+  const Vec3 half_turn{-radius, 0, 0}, start{radius, 0, 0};
+  EXPECT_GT(lemma_ref::norm(lemma_ref::sub(half_turn, start)), chord + 0.5);
+}
+
 }  // namespace
