@@ -1,0 +1,110 @@
+// Checks proofs/two-ball-cover.md: a path of length <= r_k + r_k1 stays in the union of the
+// closed balls around its end points; slightly longer paths can leave them; touching is possible
+// under non-strict inequalities.
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "certify/lemma_reference.hpp"
+
+namespace {
+
+using lemma_ref::Vec3;
+
+std::vector<Vec3> random_polyline(std::mt19937& rng, int segments) {
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::vector<Vec3> points{{u(rng), u(rng), u(rng)}};
+  for (int s = 0; s < segments; ++s) {
+    const double len = 0.05 + std::abs(u(rng));
+    Vec3 dir{u(rng), u(rng), u(rng)};
+    dir = lemma_ref::scale(dir, len / lemma_ref::norm(dir));
+    points.push_back(lemma_ref::add(points.back(), dir));
+  }
+  return points;
+}
+
+// Dense samples along a polyline (the vertices included).
+std::vector<Vec3> densify(const std::vector<Vec3>& poly, int per_segment) {
+  std::vector<Vec3> out;
+  for (std::size_t s = 0; s + 1 < poly.size(); ++s)
+    for (int k = 0; k < per_segment; ++k)
+      out.push_back(lemma_ref::add(poly[s], lemma_ref::scale(lemma_ref::sub(poly[s + 1], poly[s]),
+                                                              static_cast<double>(k) / per_segment)));
+  out.push_back(poly.back());
+  return out;
+}
+
+double length_of(const std::vector<Vec3>& poly) {
+  double l = 0.0;
+  for (std::size_t s = 0; s + 1 < poly.size(); ++s) l += lemma_ref::norm(lemma_ref::sub(poly[s + 1], poly[s]));
+  return l;
+}
+
+TEST(LemmaTwoBallCover, ShortPathsStayInTheTwoBalls) {
+  std::mt19937 rng(42);
+  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  int checked = 0;
+  for (int trial = 0; trial < 500; ++trial) {
+    std::vector<Vec3> path;
+    if (trial % 2 == 0) {
+      path = densify(random_polyline(rng, 1 + trial % 7), 50);
+    } else {
+      // A helix arc: a curved path like a point on a rotating link.
+      const double radius = 0.2 + u01(rng), pitch = u01(rng), turns = 0.1 + 2.0 * u01(rng);
+      for (int k = 0; k <= 2000; ++k) {
+        const double a = 2.0 * M_PI * turns * k / 2000.0;
+        path.push_back({radius * std::cos(a), radius * std::sin(a), pitch * a});
+      }
+    }
+    const double ell = length_of(path);
+    // Split the length budget at random, sometimes with spare length.
+    const double r_k = ell * u01(rng);
+    const double r_k1 = (ell - r_k) * (1.0 + 0.1 * (trial % 3));
+    ASSERT_LE(ell, r_k + r_k1 + 1e-12 * ell);
+    for (const Vec3& p : path) {
+      const double d0 = lemma_ref::norm(lemma_ref::sub(p, path.front()));
+      const double d1 = lemma_ref::norm(lemma_ref::sub(p, path.back()));
+      EXPECT_TRUE(d0 <= r_k * (1.0 + 1e-12) + 1e-12 || d1 <= r_k1 * (1.0 + 1e-12) + 1e-12)
+          << "trial " << trial << " d0 " << d0 << " r_k " << r_k << " d1 " << d1 << " r_k1 " << r_k1;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 100000);
+}
+
+TEST(LemmaTwoBallCover, LongerPathLeavesTheBalls) {
+  // Straight path of length 2, radii summing to 1.98: the point at arc length 1 is outside both.
+  const Vec3 x0{0.0, 0.0, 0.0}, x1{2.0, 0.0, 0.0};
+  const double r_k = 0.99, r_k1 = 0.99;
+  bool found_outside = false;
+  for (int k = 0; k <= 1000; ++k) {
+    const Vec3 p = lemma_ref::scale(x1, k / 1000.0);
+    const double d0 = lemma_ref::norm(lemma_ref::sub(p, x0)), d1 = lemma_ref::norm(lemma_ref::sub(p, x1));
+    if (d0 > r_k && d1 > r_k1) found_outside = true;
+  }
+  EXPECT_TRUE(found_outside);
+}
+
+TEST(LemmaTwoBallCover, TangentFlatObstacleShowsWhyStrictnessIsNeeded) {
+  // proofs/two-ball-cover.md#strictness: distances equal to the radii and length equal to their
+  // sum allow contact with the flat square {x = 1, |y| <= 1, |z| <= 1}.
+  using lemma_ref::Q;
+  const Q r_k = 1, r_k1 = 1;
+  const Q x0 = 0, x1 = 2;  // on the x axis
+  const Q ell = x1 - x0;
+  // Distance of each end to the square is |x - 1| (the square spans the y,z range around 0).
+  const Q dist0 = 1 - x0, dist1 = x1 - 1;
+  EXPECT_EQ(dist0, r_k);
+  EXPECT_EQ(dist1, r_k1);
+  EXPECT_EQ(ell, r_k + r_k1);  // closed-ball hypothesis holds...
+  const Q midpoint = (x0 + x1) / 2;
+  EXPECT_EQ(midpoint, 1);  // ...and the path point (1,0,0) lies on the obstacle.
+  // Neither strictness condition S1 (ell < r_k + r_k1) nor S2 (dist > r) holds.
+  EXPECT_FALSE(ell < r_k + r_k1);
+  EXPECT_FALSE(dist0 > r_k && dist1 > r_k1);
+}
+
+}  // namespace
