@@ -107,6 +107,34 @@ TEST(Ibm7545Trajectory, ThesisCpStepsLieOnTheLineAndMatchOurIk) {
   }
 }
 
+// Segment 3 (PTP(JCS)) steps of A.3: the time of each step is recovered from joint 1 alone
+// (closed form of its trapezoid: a = 2, v = 3, d = 1.8 deg/s^2, deg/s), then the other joints
+// must match the thesis: independent per-joint trapezoids in this segment too.
+TEST(Ibm7545Trajectory, ThesisPtpJcsStepsOfSegment3) {
+  const Sample sample;
+  const Trajectory trajectory = sample.plan(PtpTiming::kIndependent);
+  const SegmentTrajectory& ptp = trajectory.segments()[2];
+  const double start_1 = ptp.q_start[0] * 180 / M_PI;  // 166.68
+  const double distance_1 = start_1 - 50.0;
+  const double t_f = 1.5 + (distance_1 - 2.25 - 2.5) / 3.0 + 3.0 / 1.8;
+  struct Step {
+    double t;
+    double joints[4];
+  };
+  const Step steps[] = {
+      {std::sqrt(start_1 - 165.16), {165.16, 73.64, 8.14, -56.64}},                   // step 46
+      {1.5 + (start_1 - 160.84 - 2.25) / 3.0, {160.84, 69.32, 7.71, -52.32}},         // step 47
+      {t_f - std::sqrt(2.0 * (52.34 - 50.0) / 1.8), {52.34, 50.00, 5.00, 50.00}},     // step 82
+      {t_f, {50.00, 50.00, 5.00, 50.00}},                                             // step 83
+  };
+  EXPECT_NEAR(ptp.duration, t_f, 1e-9);
+  for (const Step& step : steps) {
+    const std::vector<double> shown =
+        report::display_joints(sample.robot, *trajectory.joints_at(ptp.start_time + step.t));
+    for (int j = 0; j < 4; ++j) EXPECT_NEAR(shown[j], step.joints[j], 0.02) << "t = " << step.t << " joint " << j + 1;
+  }
+}
+
 TEST(Ibm7545Trajectory, SynchronizedSegmentsEndTogetherAtTheSameJoints) {
   const Sample sample;
   const Trajectory independent = sample.plan(PtpTiming::kIndependent);
