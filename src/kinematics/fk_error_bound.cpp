@@ -34,7 +34,10 @@ struct State {
     const double rounding = g * (std::sqrt(3.0) * (1 + r) * f.lambda + T);
     const double e_next = e + r * f.lambda + f.tau + rounding;
     const double T_next = (1 + r) * f.lambda + T + rounding;
-    r = (1 + r) * (1 + f.delta) * (1 + 3 * g) - 1;
+    // (1 + r)(1 + delta)(1 + 3g) - 1 expanded: only sums of non-negative terms, so evaluating
+    // it in double loses no relative accuracy (no cancellation against the 1).
+    const double h = 3 * g;
+    r = r + f.delta + h + r * f.delta + r * h + f.delta * h + r * f.delta * h;
     e = e_next;
     T = T_next;
   }

@@ -53,8 +53,8 @@ class Ibm7545Ik final : public InverseKinematics {
     const DhParameters& dh3 = joints_[2].dh;
     const DhParameters& dh4 = joints_[3].dh;
 
-    // z = d1 - (d3 + q3) - d4 (alpha_2 = 180 deg turns z2 down).
-    const double q3 = dh1.d - dh4.d - dh3.d - p.z();
+    // z = d1 + d2 - (d3 + q3) - d4 (alpha_2 = 180 deg turns z2 down).
+    const double q3 = dh1.d + dh2.d - dh4.d - dh3.d - p.z();
     if (q3 < joints_[2].minimum - kLimitSlack || q3 > joints_[2].maximum + kLimitSlack) {
       return {IkStatus::kOutOfWorkspace, {}};
     }

@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cstdio>
 #include <random>
+#include <string>
 
 #include <boost/multiprecision/cpp_bin_float.hpp>
 #include <gtest/gtest.h>
 
+#include "grpvss/io/robot_file.hpp"
 #include "grpvss/kinematics/forward_kinematics.hpp"
 #include "support/kinematics_reference.hpp"
 #include "support/random_configurations.hpp"
@@ -69,6 +71,13 @@ TEST(FkErrorBound, HoldsAgainst50DigitReferenceIbm7545) {
 
 TEST(FkErrorBound, HoldsAgainst50DigitReferencePuma560) {
   check_bound(test::make_puma560_model(), 42);
+}
+
+// The same on the robots as read from data/ (thesis hulls, octagonal prisms).
+TEST(FkErrorBound, HoldsOnRobotFiles) {
+  for (const char* file : {"data/ibm7545/robot.txt", "data/puma560/robot.txt"}) {
+    check_bound(io::read_robot_file(std::string(GRPVSS_SOURCE_DIR) + "/" + file), 43);
+  }
 }
 
 TEST(FkErrorBound, GrowsWithCoordinatesAndRejectsBadInput) {
