@@ -1,6 +1,5 @@
 #include "grpvss/report/thesis_output.hpp"
 
-#include <iterator>
 #include <stdexcept>
 #include <variant>
 

@@ -420,6 +420,16 @@ void collect_property_names(const json& schema, std::set<std::string>& names) {
   if (schema.contains("items")) collect_property_names(schema["items"], names);
 }
 
+TEST(JsonReport, SchemaDocumentExampleSatisfiesTheSchema) {
+  const std::string doc = test::read_text_file(kSourceDir + "/docs/report-schema.md");
+  const std::size_t begin = doc.find("```json\n");
+  ASSERT_NE(begin, std::string::npos);
+  const std::size_t end = doc.find("```", begin + 8);
+  const json example = json::parse(doc.substr(begin + 8, end - begin - 8));
+  const auto violations = test::check_json_structure(example, load_schema());
+  EXPECT_TRUE(violations.empty()) << ::testing::PrintToString(violations);
+}
+
 TEST(JsonReport, SchemaDocumentNamesEveryField) {
   std::set<std::string> names;
   collect_property_names(load_schema(), names);
