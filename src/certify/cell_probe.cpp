@@ -182,12 +182,17 @@ void CellProbe::probe_hull(int hull_index, bool with_points, ProbeResult& out) {
     raw.expanded = false;
     const geometry::CertifiedPairResult raw_result =
         geometry::certified_pair_query(placed_raw_, cell.obstacles_W()[o], nullptr);
-    if (raw_result.contact == geometry::Contact::kSeparated && raw_result.witness) {
-      raw.separated = true;
-      raw.witness = *raw_result.witness;
-      raw.lower_bound = raw_result.clearance_lower_bound;
+    if (raw_result.contact == geometry::Contact::kSeparated) {
       // proof: proofs/two-ball-cover.md#corollary-step (raw radius: lb - eps < true distance)
-      const double radius = std::max(0.0, sub_down(raw.lower_bound, eps));
+      // A gap too small for any double witness (~1e-16) proves nothing usable: radius 0.
+      double radius = 0.0;
+      if (raw_result.witness) {
+        raw.separated = true;
+        raw.witness = *raw_result.witness;
+        raw.lower_bound = raw_result.clearance_lower_bound;
+        radius = std::max(0.0, sub_down(raw.lower_bound, eps));
+        out.evidence.push_back(raw);
+      }
       if (radius < state.radius) {
         state.radius = radius;
         state.nearest_obstacle = o;
@@ -197,8 +202,8 @@ void CellProbe::probe_hull(int hull_index, bool with_points, ProbeResult& out) {
       out.any_collision = true;
       state.radius = 0.0;
       state.nearest_obstacle = o;
+      out.evidence.push_back(raw);
     }
-    out.evidence.push_back(raw);
   }
 }
 

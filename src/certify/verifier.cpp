@@ -1,6 +1,8 @@
 #include "grpvss/certify/verifier.hpp"
 
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -88,7 +90,11 @@ class PathVerifier {
         options_(options),
         cell_(robot, environment, make_cell_options(options)),
         probe_(cell_),
-        workspace_(robot) {}
+        workspace_(robot) {
+    for (const HullPoints& hull : robot.links.back().hulls) {
+      for (const auto& p_L : hull.points) end_link_reach_ = std::max(end_link_reach_, p_L.norm());
+    }
+  }
 
   VerificationRun run();
 
@@ -116,6 +122,9 @@ class PathVerifier {
                                double previous_step);
   std::vector<double> thesis_allowed_displacements(const Eigen::VectorXd& q);
   void add_error(int code, int segment, std::string message);
+  int last_step_index() const {
+    return run_.result.steps.empty() ? 0 : run_.result.steps.back().index;
+  }
   void finish();
 
   const RobotModel& robot_;
@@ -129,6 +138,7 @@ class PathVerifier {
   ProbeResult current_;
   ProbeResult trial_;
   ProbeResult points_;
+  double end_link_reach_ = 1.0;  ///< max |p_L| over the last link's hulls (at least 1)
   long long probes_ = 0;
   bool any_uncertified_ = false;
   VerificationRun run_;
@@ -139,7 +149,7 @@ void PathVerifier::add_error(int code, int segment, std::string message) {
   PathError error;
   error.code = code;
   error.segment = segment;
-  error.step = run_.result.steps.empty() ? 0 : run_.result.steps.back().index;
+  error.step = last_step_index();
   error.message = std::move(message);
   run_.result.errors.push_back(error);
 }
@@ -170,7 +180,8 @@ void PathVerifier::record_step(const ProbeResult& probe, int segment, double par
                                double path_time, const TransitionRecord* incoming,
                                bool refinement) {
   StepRecord step;
-  step.index = static_cast<int>(run_.result.steps.size());
+  const bool is_start = incoming == nullptr && !run_.result.start;
+  step.index = is_start ? 0 : static_cast<int>(run_.result.steps.size()) + 1;
   step.segment = segment;
   step.path_time = path_time;
   step.segment_parameter = parameter;
@@ -201,6 +212,10 @@ void PathVerifier::record_step(const ProbeResult& probe, int segment, double par
   step.unexpanded_collides = probe.any_collision;
   step.refinement = refinement;
   if (probe.any_collision && !run_.result.collision_step) run_.result.collision_step = step.index;
+  if (is_start) {
+    run_.result.start = std::move(step);
+    return;
+  }
   run_.result.steps.push_back(std::move(step));
 
   if (segment_certificate_ != nullptr) {
@@ -256,13 +271,19 @@ bool PathVerifier::near_singularity(const Eigen::VectorXd& q) {
 // fails is subdivided by the caller; a jump that survives subdivision is error 7.
 bool PathVerifier::cp_model_holds(const SegmentPath& path, double s0, const Eigen::VectorXd& q0,
                                   double s1, const Eigen::VectorXd& q1) {
+  // Position: the tolerance (times a fraction). Orientation: the angle that moves the farthest
+  // point of the last link's hulls by that much (a joint-4 wrap of 360 degrees moves no
+  // origin but sweeps the whole tool).
   const double limit = options_.cp_deviation_fraction * options_.tolerance;
+  const double angle_limit = limit / end_link_reach_;
   for (const double fraction : {0.25, 0.5, 0.75}) {
     const Eigen::VectorXd q_mid = q0 + fraction * (q1 - q0);
-    const Eigen::Vector3d p_joint_linear =
-        kinematics::end_effector_pose(cell_.chain(), q_mid).translation();
-    const Eigen::Vector3d p_line = path.line().pose_at(s0 + fraction * (s1 - s0)).translation();
-    if ((p_joint_linear - p_line).norm() > limit) return false;
+    const Eigen::Isometry3d X_WE_joint_linear = kinematics::end_effector_pose(cell_.chain(), q_mid);
+    const Eigen::Isometry3d X_WE_line = path.line().pose_at(s0 + fraction * (s1 - s0));
+    if ((X_WE_joint_linear.translation() - X_WE_line.translation()).norm() > limit) return false;
+    const Eigen::AngleAxisd rotation_error(X_WE_line.linear().transpose() *
+                                           X_WE_joint_linear.linear());
+    if (std::abs(rotation_error.angle()) > angle_limit) return false;
   }
   return true;
 }
@@ -398,6 +419,11 @@ bool PathVerifier::march_segment(const SegmentPath& path, int segment_number) {
     const bool cut = s1 >= end;
     TransitionRecord transition = judge_transition(current_, trial_, cut);
     const double taken = s1 - s;
+    if (std::getenv("GRPVSS_DEBUG_STEPS")) {
+      fprintf(stderr, "seg %d s=%.9g taken=%.3g cert=%d col=%d/%d exp=%d/%d slack=%.3g\n", segment_number, s, taken,
+              (int)transition.certified, (int)current_.any_collision, (int)trial_.any_collision,
+              (int)current_.any_expanded_interference, (int)trial_.any_expanded_interference, transition_slack(transition));
+    }
     if (!certified()) {
       std::fill(transition.governing.begin(), transition.governing.end(),
                 GoverningTerm::kThesisRule);
@@ -451,7 +477,11 @@ void PathVerifier::finish() {
     LinkClearanceSummary summary;
     summary.link = link;
     summary.min_clearance = kInfinity;
-    for (const StepRecord& step : result.steps) {
+    std::vector<const StepRecord*> all_steps;
+    if (result.start) all_steps.push_back(&*result.start);
+    for (const StepRecord& step : result.steps) all_steps.push_back(&step);
+    for (const StepRecord* step_pointer : all_steps) {
+      const StepRecord& step = *step_pointer;
       if (step.links[link].clearance < summary.min_clearance) {
         summary.min_clearance = step.links[link].clearance;
         summary.step = step.index;
@@ -460,6 +490,7 @@ void PathVerifier::finish() {
     result.link_clearances.push_back(summary);
   }
   bool any_expanded = false;
+  if (result.start) any_expanded |= result.start->expanded_interferes;
   for (const StepRecord& step : result.steps) any_expanded |= step.expanded_interferes;
   if (result.collision_step) {
     result.verdict = Verdict::kCollision;
@@ -529,7 +560,7 @@ VerificationRun PathVerifier::run() {
       segment_certificate.parameter_end = path.parameter_end();
       // Every segment's certificate starts with its start configuration (the previous end).
       segment_certificate.steps.push_back(
-          certificate_step(current_, result.steps.back().index, 0.0));
+          certificate_step(current_, last_step_index(), 0.0));
       run_.certificate.segments.push_back(std::move(segment_certificate));
       segment_certificate_ = &run_.certificate.segments.back();
     }
@@ -549,7 +580,7 @@ VerificationRun PathVerifier::run() {
       SegmentRecord refused;
       refused.number = error.segment;
       refused.input = program_.segments[error.segment - 1];
-      refused.start_q = result.steps.back().q;
+      refused.start_q = result.steps.empty() ? result.start->q : result.steps.back().q;
       refused.simulated = false;
       result.segments.push_back(std::move(refused));
     }

@@ -94,7 +94,7 @@ TEST(Verifier, ObstacleOnTheSweepIsACollisionWithTheCollidingConfiguration) {
   const VerificationRun result = run(cell, 0.5, ResolutionMode::kCertified);
   EXPECT_EQ(result.result.verdict, Verdict::kCollision);
   ASSERT_TRUE(result.result.collision_step.has_value());
-  const StepRecord& colliding = result.result.steps.at(*result.result.collision_step);
+  const StepRecord& colliding = result.result.steps.at(*result.result.collision_step - 1);
   EXPECT_TRUE(colliding.unexpanded_collides);
   // The arm's box (half-width 0.5) overlaps the obstacle (half-width 1) within 60 +- ~7 deg.
   EXPECT_NEAR(colliding.q[0] * 180.0 / M_PI, 60.0, 8.0);

@@ -101,6 +101,9 @@ struct VerificationResult {
   Verdict verdict = Verdict::kClear;
   std::string path_file_label;  ///< printed in "... INPUT FROM FILE <label>"
   std::vector<SegmentRecord> segments;
+  /// The configuration the path starts from (home), evaluated like every step; index 0.
+  /// Not part of `steps`, whose indices run 1, 2, ... as the thesis numbers them.
+  std::optional<StepRecord> start;
   std::vector<StepRecord> steps;
   std::vector<PathError> errors;
   std::vector<LinkClearanceSummary> link_clearances;
