@@ -43,8 +43,9 @@ void print_summary(const certify::VerificationRun& run, const VerifyArguments& a
   }
   for (const certify::LinkClearanceSummary& link : result.link_clearances) {
     if (link.link == 0) continue;
-    fmt::print("link {}: smallest certified clearance {:.4f} at step {}\n", link.link,
-               link.min_clearance, link.step);
+    fmt::print("link {}: smallest certified clearance {:.4f} at step {}{}\n", link.link,
+               link.min_clearance, link.step,
+               link.obstacle >= 0 ? fmt::format(" (obstacle {})", link.obstacle) : "");
   }
   if (!args.out.empty()) fmt::print("thesis output file: {}\n", args.out);
   if (!args.json.empty()) fmt::print("JSON report: {}\n", args.json);

@@ -68,6 +68,18 @@ double ProbeResult::link_radius(const RobotCell& cell, int link) const {
   return smallest;
 }
 
+int ProbeResult::link_nearest_obstacle(const RobotCell& cell, int link) const {
+  double smallest = kInfinity;
+  int nearest = -1;
+  for (std::size_t i = 0; i < hulls.size(); ++i) {
+    if (cell.hulls()[i].link == link && hulls[i].radius < smallest) {
+      smallest = hulls[i].radius;
+      nearest = hulls[i].nearest_obstacle;
+    }
+  }
+  return nearest;
+}
+
 CellProbe::CellProbe(const RobotCell& cell)
     : cell_(&cell),
       workspace_(cell.robot()),

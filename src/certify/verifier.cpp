@@ -188,6 +188,7 @@ void PathVerifier::record_step(const ProbeResult& probe, int segment, double par
   step.links.assign(robot_.links.size(), LinkStepRecord{});
   for (int link = 0; link < static_cast<int>(robot_.links.size()); ++link) {
     step.links[link].clearance = probe.link_radius(cell_, link);
+    step.links[link].nearest_obstacle = probe.link_nearest_obstacle(cell_, link);
   }
   if (incoming != nullptr) {
     // Per link: the hull whose bound uses the largest share of its allowance governs.
@@ -478,6 +479,7 @@ void PathVerifier::finish() {
       if (step.links[link].clearance < summary.min_clearance) {
         summary.min_clearance = step.links[link].clearance;
         summary.step = step.index;
+        summary.obstacle = step.links[link].nearest_obstacle;
       }
     }
     result.link_clearances.push_back(summary);

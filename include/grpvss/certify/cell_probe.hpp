@@ -50,6 +50,8 @@ struct ProbeResult {
 
   /// Smallest hull radius of a link (the link's certified clearance at this configuration).
   double link_radius(const RobotCell& cell, int link) const;
+  /// The obstacle that governs link_radius (-1 when no obstacle is within the margins).
+  int link_nearest_obstacle(const RobotCell& cell, int link) const;
 };
 
 /// \brief Per-query buffers and warm starts (workspace side of the model/workspace split).

@@ -53,6 +53,7 @@ struct LinkStepRecord {
   GoverningTerm governing = GoverningTerm::kTolerance;
   double clearance = 0.0;      ///< certified lower bound of dist(link, obstacles) at this step
                                ///< (unexpanded link, raw obstacles); 0 when interfering
+  int nearest_obstacle = -1;   ///< the obstacle that governs `clearance` (-1: none nearby)
 };
 
 struct StepRecord {
