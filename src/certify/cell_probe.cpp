@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <tuple>
 
 #include "grpvss/geometry/certified_query.hpp"
 #include "grpvss/geometry/directed_rounding.hpp"
@@ -95,6 +96,13 @@ void CellProbe::probe(const Eigen::VectorXd& q, bool with_points, ProbeResult& o
   out.any_collision = false;
   kinematics::forward_kinematics(cell_->chain(), q, workspace_);
   for (int i = 0; i < static_cast<int>(cell_->hulls().size()); ++i) probe_hull(i, with_points, out);
+  // Reports must be byte-identical across runs: the exact core's point order may follow
+  // memory addresses, so the points get one canonical order here.
+  std::sort(out.interference_points.begin(), out.interference_points.end(),
+            [](const InterferencePoint& a, const InterferencePoint& b) {
+              return std::tie(a.link, a.hull, a.obstacle, a.kind, a.p_W.x(), a.p_W.y(), a.p_W.z()) <
+                     std::tie(b.link, b.hull, b.obstacle, b.kind, b.p_W.x(), b.p_W.y(), b.p_W.z());
+            });
 }
 
 void CellProbe::probe_hull(int hull_index, bool with_points, ProbeResult& out) {
