@@ -559,9 +559,10 @@ VerificationRun PathVerifier::run() {
       run_.certificate.segments.push_back(std::move(segment_certificate));
       segment_certificate_ = &run_.certificate.segments.back();
     }
-    const int first_step = static_cast<int>(result.steps.size());
+    const int first_step = last_step_index() + 1;
     keep_going = march_segment(path, segment.number);
-    record.last_step = static_cast<int>(result.steps.size()) - 1;
+    // Step indices of this segment (0, 0 when it produced none).
+    record.last_step = last_step_index();
     record.first_step = record.last_step >= first_step ? first_step : 0;
     if (record.first_step == 0) record.last_step = 0;
     record.simulated = keep_going;

@@ -81,3 +81,27 @@ TEST_F(Ibm7545Sample, OutputSampleSegmentFourIsRefusedWithErrorThreeInThesisMode
 
 }  // namespace
 }  // namespace grpvss::certify
+
+namespace grpvss::certify {
+namespace {
+
+TEST_F(Ibm7545Sample, SegmentRecordsNameTheirFirstAndLastSteps) {
+  load("path.txt");
+  const VerificationRun certified = run(ResolutionMode::kCertified);
+  const auto& segments = certified.result.segments;
+  ASSERT_GE(segments.size(), 3u);
+  int expected_first = 1;
+  for (const SegmentRecord& segment : segments) {
+    if (segment.first_step == 0) continue;
+    EXPECT_EQ(segment.first_step, expected_first) << "segment " << segment.number;
+    for (const StepRecord& step : certified.result.steps) {
+      const bool inside = step.index >= segment.first_step && step.index <= segment.last_step;
+      EXPECT_EQ(inside, step.segment == segment.number) << "step " << step.index;
+    }
+    expected_first = segment.last_step + 1;
+  }
+  EXPECT_EQ(segments.back().last_step, certified.result.steps.back().index);
+}
+
+}  // namespace
+}  // namespace grpvss::certify
