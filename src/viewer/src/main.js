@@ -70,11 +70,26 @@ function frameCamera() {
   world.add(grid);
   const axes = new THREE.AxesHelper(radius * 0.25);
   world.add(axes);
-  controls.target.copy(center);
-  const direction = new THREE.Vector3(1.0, -1.25, 0.75).normalize();
-  camera.position.copy(center).addScaledVector(direction, radius * 2.3);
+  viewRadius = radius;
+  viewCenter.copy(center);
   camera.near = radius / 100;
   camera.far = radius * 50;
+  thesisView();
+}
+
+// The thesis's default view (A.2: ANGLEX, ANGLEY, ANGLEZ = -75, 0, 170 deg; the world frame
+// turned from the screen frame S, x right, y up, z out of the screen): the eye looks along
+// -z_S, so it sits at R^T z_S from the centre, R = Rx(ax) Ry(ay) Rz(az). Same as `grpvss render`.
+const viewCenter = new THREE.Vector3();
+let viewRadius = 50;
+function thesisView() {
+  const deg = Math.PI / 180;
+  const R_SW = new THREE.Matrix4().makeRotationX(-75 * deg)
+    .multiply(new THREE.Matrix4().makeRotationY(0))
+    .multiply(new THREE.Matrix4().makeRotationZ(170 * deg));
+  const eye_W = new THREE.Vector3(0, 0, 1).applyMatrix4(R_SW.transpose()).normalize();
+  controls.target.copy(viewCenter);
+  camera.position.copy(viewCenter).addScaledVector(eye_W, viewRadius * 2.4);
   camera.updateProjectionMatrix();
   controls.update();
 }
@@ -271,6 +286,7 @@ $('next-interference').addEventListener('click', () => {
     if (steps[i].interference_points.length > 0) { showStep(i); return; }
   }
 });
+$('reset-view').addEventListener('click', () => { thesisView(); render(); });
 $('mode').addEventListener('change', (e) => { state.mode = e.target.value; });
 $('speed').addEventListener('change', (e) => { state.speed = Number(e.target.value); });
 $('display').addEventListener('change', (e) => { state.display = e.target.value; applyDisplay(); render(); });

@@ -88,6 +88,11 @@ export function drawClearancePlot(canvas, steps, current, linkCount) {
     }
     g.stroke();
   }
+  g.textAlign = 'left';
+  for (let link = 1; link < linkCount; ++link) {
+    g.fillStyle = LINK_COLORS[link % LINK_COLORS.length];
+    g.fillText(`link ${link}`, left + plotW - 4 - (linkCount - link) * 40, top + 11);
+  }
   const X = px(steps[current].path_time);
   g.strokeStyle = '#1d3557';
   g.setLineDash([3, 3]);

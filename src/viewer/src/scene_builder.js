@@ -9,7 +9,7 @@ export const COLORS = {
   expandedWire: 0xe09f3e,
   expandedFill: 0xf3c77b,
   obstacleWire: 0x2f4f2f,
-  obstacleFill: 0x8fbf8f,
+  obstacleFill: 0x5fae5f,
   star: 0xe01010,
 };
 
@@ -89,7 +89,7 @@ export function buildScene(scene) {
   const obstacleWires = [];
   for (const obstacle of scene.obstacles) {
     const shape = polytope(obstacle.vertices_W, obstacle.faces, obstacle.edges,
-      COLORS.obstacleWire, COLORS.obstacleFill, 0.55);
+      COLORS.obstacleWire, COLORS.obstacleFill, 0.75);
     root.add(shape.fill, shape.wire);
     obstacleFills.push(shape.fill);
     obstacleWires.push(shape.wire);
