@@ -128,7 +128,7 @@ std::string render(const json& report, int step_index, const SvgView& view) {
   for (const json& point : step.at("interference_points")) body += star(project(point3(point.at("point"))));
 
   const int size = view.pixels;
-  const int caption = 40;
+  const int caption = 54;
   std::string svg = fmt::format(
       "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
       "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{0}\" height=\"{1}\" "
@@ -136,21 +136,22 @@ std::string render(const json& report, int step_index, const SvgView& view) {
       "<style>.link{{fill:none;stroke:#1d3557;stroke-width:1}}"
       ".obstacle{{fill:none;stroke:#2f6f2f;stroke-width:1}}"
       ".star{{fill:#e01010;stroke:#600000;stroke-width:0.5}}"
-      "text{{font-family:monospace;font-size:12px;fill:#111}}</style>\n"
+      "text{{font-family:monospace;font-size:11px;fill:#111}}</style>\n"
       "<rect x=\"0\" y=\"-{2}\" width=\"{0}\" height=\"{1}\" fill=\"#ffffff\"/>\n"
       "<rect x=\"0\" y=\"0\" width=\"{0}\" height=\"{0}\" fill=\"none\" stroke=\"#999\"/>\n",
       size, size + caption, caption);
+  svg += fmt::format("<text x=\"6\" y=\"-40\">GRPVSS {} - verdict {}</text>\n",
+                     xml_escape(report.at("robot").at("name").get<std::string>()),
+                     xml_escape(report.at("verdict").get<std::string>()));
   svg += fmt::format(
-      "<text x=\"6\" y=\"-24\">GRPVSS {} - step {} - t = {} s - segment {} - interference points: {}</text>\n",
-      xml_escape(report.at("robot").at("name").get<std::string>()), step_index,
-      fmt::format("{:.3f}", step.at("path_time").get<double>()), step.at("segment").get<int>(),
-      step.at("interference_points").size());
+      "<text x=\"6\" y=\"-25\">step {} - t = {} s - segment {} - interference points: {}</text>\n",
+      step_index, fmt::format("{:.3f}", step.at("path_time").get<double>()),
+      step.at("segment").get<int>(), step.at("interference_points").size());
   svg += fmt::format(
-      "<text x=\"6\" y=\"-8\">ANGLEX {} ANGLEY {} ANGLEZ {} SCALE {} SHIFT {},{},{} WINDOW {}..{} - verdict {}</text>\n",
+      "<text x=\"6\" y=\"-10\">ANGLEX {} ANGLEY {} ANGLEZ {} SCALE {} SHIFT {},{},{} WINDOW {}..{}</text>\n",
       number(view.angle_x_deg), number(view.angle_y_deg), number(view.angle_z_deg),
       number(view.scale), number(view.shift[0]), number(view.shift[1]), number(view.shift[2]),
-      number(view.window_min), number(view.window_max),
-      xml_escape(report.at("verdict").get<std::string>()));
+      number(view.window_min), number(view.window_max));
   svg += fmt::format("<svg x=\"0\" y=\"0\" width=\"{0}\" height=\"{0}\" viewBox=\"0 0 {0} {0}\" overflow=\"hidden\">\n", size);
   svg += body;
   svg += "</svg>\n</svg>\n";
