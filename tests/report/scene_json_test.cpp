@@ -4,6 +4,7 @@
 #include <set>
 #include <stdexcept>
 
+#include <Eigen/Geometry>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
