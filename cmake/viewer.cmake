@@ -21,10 +21,8 @@ if(GRPVSS_NODE AND EXISTS ${GRPVSS_ESBUILD} AND EXISTS ${GRPVSS_VIEWER_DIR}/node
     VERBATIM)
 else()
   set(GRPVSS_VIEWER_AVAILABLE OFF)
-  message(WARNING "grpvss: src/viewer/node_modules missing (run `npm ci` in src/viewer or "
-                  "scripts/setup.sh): HTML reports are disabled in this build")
-  file(MAKE_DIRECTORY ${GRPVSS_VIEWER_OUT})
-  file(WRITE ${GRPVSS_VIEWER_BUNDLE} "")
+  message(FATAL_ERROR "grpvss: node or src/viewer/node_modules missing: run scripts/setup.sh "
+                      "(it runs `npm ci` in src/viewer), then configure again")
 endif()
 add_custom_command(
   OUTPUT ${GRPVSS_VIEWER_ASSETS}
