@@ -510,46 +510,73 @@ void edge_face_points(const Hull& edges_of, const Hull& faces_of, InterferenceKi
   const auto& ev = edges_of.poly.vertices();
   const auto& fv = faces_of.poly.vertices();
   const auto& edges = edges_of.poly.edges();
+  // Exact plane sides by CGAL's filtered orientation predicate: n.(p - v_0) with
+  // n = (v_1 - v_0) x (v_2 - v_0) is det[v_1 - v_0, v_2 - v_0, p - v_0] = orientation(v0, v1, v2, p).
+  using EpickPoint = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
+  std::vector<EpickPoint> ep;
+  ep.reserve(ev.size());
+  for (const auto& v : ev) ep.emplace_back(v.x(), v.y(), v.z());
+  // Bounding boxes of the edges (exact double compares drop edges far from a face).
+  std::vector<Eigen::Vector3d> edge_lo(edges.size()), edge_hi(edges.size());
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    edge_lo[e] = ev[edges[e][0]].cwiseMin(ev[edges[e][1]]);
+    edge_hi[e] = ev[edges[e][0]].cwiseMax(ev[edges[e][1]]);
+  }
   std::vector<IV> value(ev.size());
+  std::vector<char> have_value(ev.size());
   std::vector<int> side(ev.size());
   for (std::size_t f = 0; f < faces_of.poly.faces().size(); ++f) {
     FaceSides face(faces_of, ev, static_cast<int>(f));
     const auto& loop = face.loop();
+    Eigen::Vector3d face_lo = fv[loop[0]], face_hi = fv[loop[0]];
+    for (int i : loop) {
+      face_lo = face_lo.cwiseMin(fv[i]);
+      face_hi = face_hi.cwiseMax(fv[i]);
+    }
+    const EpickPoint f0(fv[loop[0]].x(), fv[loop[0]].y(), fv[loop[0]].z());
+    const EpickPoint f1(fv[loop[1]].x(), fv[loop[1]].y(), fv[loop[1]].z());
+    const EpickPoint f2(fv[loop[2]].x(), fv[loop[2]].y(), fv[loop[2]].z());
+    bool any_positive = false, any_nonpositive = false;
+    for (std::size_t v = 0; v < ev.size(); ++v) {
+      side[v] = static_cast<int>(CGAL::orientation(f0, f1, f2, ep[v]));
+      (side[v] > 0 ? any_positive : any_nonpositive) = true;
+    }
+    if (!any_nonpositive) continue;  // every edge strictly beyond the face plane
+    if (!any_positive && std::find(side.begin(), side.end(), 0) == side.end()) {
+      continue;  // every edge strictly behind it
+    }
+    std::fill(have_value.begin(), have_value.end(), 0);
     IV3 n;
+    IV3 v0_iv;
     std::vector<IV3> m_iv;
     std::vector<IV3> v_iv;
-    std::vector<std::size_t> unsure;
     {
       CGAL::Protect_FPU_rounding<true> guard;
       n = faces_of.face_normal<IV>(static_cast<int>(f));
-      const IV3 v0 = lift<IV>(fv[loop[0]]);
-      for (std::size_t v = 0; v < ev.size(); ++v) {
-        value[v] = dot(n, minus(lift<IV>(ev[v]), v0));
-        const Certain c = sign_of(value[v]);
-        side[v] = certain_int(c);
-        if (c == Certain::kUnknown) unsure.push_back(v);
-      }
-    }
-    for (std::size_t v : unsure) side[v] = exact_sign(face.side(v));
-    bool any = false;
-    for (std::size_t e = 0; e < edges.size() && !any; ++e) {
-      any = side[edges[e][0]] * side[edges[e][1]] <= 0;
-    }
-    if (!any) continue;  // the face plane misses every edge
-    {
-      CGAL::Protect_FPU_rounding<true> guard;
+      v0_iv = lift<IV>(fv[loop[0]]);
       for (std::size_t k = 0; k < loop.size(); ++k) {
         const IV3 vk = lift<IV>(fv[loop[k]]);
         v_iv.push_back(vk);
         m_iv.push_back(cross(n, minus(lift<IV>(fv[loop[(k + 1) % loop.size()]]), vk)));
       }
     }
+    const auto interval_value = [&](int v) -> const IV& {
+      if (!have_value[v]) {
+        value[v] = dot(n, minus(lift<IV>(ev[v]), v0_iv));  // caller holds the rounding guard
+        have_value[v] = 1;
+      }
+      return value[v];
+    };
     for (std::size_t e = 0; e < edges.size(); ++e) {
       const int i0 = edges[e][0];
       const int i1 = edges[e][1];
       const int s0 = side[i0];
       const int s1 = side[i1];
       if (s0 * s1 > 0) continue;
+      if ((edge_hi[e].array() < face_lo.array()).any() ||
+          (face_hi.array() < edge_lo[e].array()).any()) {
+        continue;  // disjoint bounding boxes (exact double compares)
+      }
       if (s0 == 0 && s1 == 0) {
         coplanar_edge_points(face, faces_of, ev[i0], ev[i1], kind, static_cast<int>(e),
                              static_cast<int>(f), out);
@@ -570,8 +597,10 @@ void edge_face_points(const Hull& edges_of, const Hull& faces_of, InterferenceKi
         } else {
           const IV3 p = lift<IV>(ev[i0]);
           const IV3 q = lift<IV>(ev[i1]);
-          for (int k = 0; k < 3; ++k) num[k] = value[i0] * q[k] - value[i1] * p[k];
-          den = value[i0] - value[i1];
+          const IV& sp = interval_value(i0);
+          const IV& sq = interval_value(i1);
+          for (int k = 0; k < 3; ++k) num[k] = sp * q[k] - sq * p[k];
+          den = sp - sq;
         }
         const int sd = at_end ? 1 : s0;  // sign(D) = sign(s_p - s_q) = s_p
         for (std::size_t k = 0; k < loop.size() && !outside; ++k) {
