@@ -3,7 +3,7 @@
 /// exact interference points, separation witnesses and exact distances.
 ///
 /// Filtering discipline (cgal-notes.md): interval arithmetic (Interval_nt<false>) runs only
-/// inside a Protect_FPU_rounding<true> scope; every exact fallback (Gmpzf, Gmpq)
+/// inside a Protect_FPU_rounding<true> scope; every exact fallback (Gmpzf, Mpzf, Gmpq)
 /// runs after that scope has restored round-to-nearest.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
