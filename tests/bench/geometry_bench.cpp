@@ -181,6 +181,30 @@ void BM_InterferencePoints(benchmark::State& state) {
 }
 BENCHMARK(BM_InterferencePoints)->Unit(benchmark::kMicrosecond);
 
+// Same pair on prebuilt exact hulls (a static obstacle, or an offset built once): the
+// interference computation alone, without the two convex_hull_3 calls.
+void BM_InterferencePointsPrebuilt(benchmark::State& state) {
+  const auto [a, b] = make_pair(kOverlappingPair);
+  const ConvexPolytope pa = ConvexPolytope::from_points(a);
+  const ConvexPolytope pb = ConvexPolytope::from_points(b);
+  std::size_t count = 0;
+  for (auto _ : state) {
+    const auto points = interference_points(pa, pb);
+    count = points.size();
+    benchmark::DoNotOptimize(points.data());
+  }
+  state.SetLabel("overlapping, prebuilt hulls, " + std::to_string(count) + " points");
+}
+BENCHMARK(BM_InterferencePointsPrebuilt)->Unit(benchmark::kMicrosecond);
+
+// Exact hull of one rotated 16-point prism (the per-call cost of the point-set overloads).
+void BM_HullFromPoints(benchmark::State& state) {
+  const auto [a, b] = make_pair(kOverlappingPair);
+  for (auto _ : state) benchmark::DoNotOptimize(ConvexPolytope::from_points(a));
+  state.SetLabel("rotated 16-point prism");
+}
+BENCHMARK(BM_HullFromPoints)->Unit(benchmark::kMicrosecond);
+
 // ---------------------------------------------------------------- one configuration
 struct Scene {
   RobotHulls robot;

@@ -7,10 +7,14 @@
 #include <cstdio>
 #include <limits>
 #include <random>
+#include <map>
+#include <set>
 #include <string>
 
 #include "grpvss/geometry/convex_polytope.hpp"
+#include "grpvss/geometry/gjk.hpp"
 #include "support/geometry_reference.hpp"
+#include "support/random_shapes.hpp"
 
 namespace grpvss::geometry {
 namespace {
@@ -319,6 +323,57 @@ TEST(InterferencePoints, NonEmptyExactlyWhenNotSeparatedAndPointsLieInBoth) {
     }
   }
   EXPECT_GT(nonempty, 50);
+}
+
+TEST(InterferencePoints, FaceSharingBoxesGiveExactlyTheCornersOfTheirIntersection) {
+  // Every edge of either box lies in a face plane of the other or crosses at a corner: the
+  // coplanar-edge and end-point-on-plane paths, and duplicate removal within each kind.
+  const Points a = testing::box({0, 0, 0}, {2, 2, 2});
+  const Points b = testing::box({1, 0, 0}, {3, 2, 2});
+  std::set<std::array<double, 3>> corners;
+  for (double x : {1.0, 2.0}) {
+    for (double y : {0.0, 2.0}) {
+      for (double z : {0.0, 2.0}) corners.insert({x, y, z});
+    }
+  }
+  std::set<std::array<double, 3>> seen;
+  std::map<InterferenceKind, std::set<std::array<double, 3>>> per_kind;
+  std::map<InterferenceKind, int> count;
+  for (const auto& ip : interference_points(a, b)) {
+    const std::array<double, 3> x{ip.point.x(), ip.point.y(), ip.point.z()};
+    EXPECT_EQ(corners.count(x), 1u) << x[0] << " " << x[1] << " " << x[2];
+    seen.insert(x);
+    per_kind[ip.kind].insert(x);
+    ++count[ip.kind];
+  }
+  EXPECT_EQ(seen, corners);
+  for (const auto& [kind, points] : per_kind) {
+    EXPECT_EQ(static_cast<int>(points.size()), count[kind]) << "duplicate in " << to_string(kind);
+  }
+}
+
+TEST(InterferencePoints, ExactVertexContactOfRotatedPrismsIsThatVertexOnly) {
+  // B is A reflected through its extreme vertex v (exact on a 2^-20 grid): A and B meet in v
+  // alone. Intervals cannot decide any of the sign tests at v; the exact fallback must, and
+  // every reported point must be v bit for bit.
+  for (std::uint64_t seed = 1; seed <= 24; ++seed) {
+    std::mt19937_64 rng(seed);
+    Points a = test::random_prism(rng, Eigen::Vector3d::Zero(), 2.0);
+    for (auto& p : a) {
+      for (int k = 0; k < 3; ++k) p[k] = std::ldexp(std::round(std::ldexp(p[k], 20)), -20);
+    }
+    const Eigen::Vector3d n = Eigen::Vector3d(1.0, 0.5, 0.25).normalized();
+    const Eigen::Vector3d v = a[support_index(a, n)];
+    Points b;
+    for (const auto& p : a) b.push_back(2.0 * v - p);
+    ASSERT_EQ(classify_exact(a, b), Contact::kTouching) << seed;
+    const auto points = interference_points(a, b);
+    ASSERT_FALSE(points.empty()) << seed;
+    for (const auto& ip : points) EXPECT_EQ(ip.point, v) << seed << " " << to_string(ip.kind);
+    // Pushed 2^-30 apart along n they separate; 2^-30 together they overlap.
+    EXPECT_TRUE(interference_points(a, test::translated(b, std::ldexp(1.0, -30) * n)).empty());
+    EXPECT_FALSE(interference_points(a, test::translated(b, -std::ldexp(1.0, -30) * n)).empty());
+  }
 }
 
 }  // namespace

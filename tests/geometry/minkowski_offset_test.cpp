@@ -143,5 +143,37 @@ TEST(MinkowskiOffset, InvalidRadiusIsRejected) {
   EXPECT_THROW(contains_ball_sum_exactly(hull, hull, -0.5), std::invalid_argument);
 }
 
+TEST(MinkowskiOffset, FilteredContainmentAgreesWithExactReferenceNearTheThreshold) {
+  // Rotated IBM 7545 hulls and their offsets: radii within a few 2^-48 of the largest radius
+  // the offset holds, where the interval filter cannot decide and the exact fallback must,
+  // plus radii far from it, where the filter decides alone. Both must match the reference.
+  std::mt19937_64 rng(2026);
+  const auto hulls = testing::ibm7545_hulls();
+  int near_true = 0, near_false = 0;
+  for (int trial = 0; trial < 6; ++trial) {
+    const auto pts = testing::transformed(hulls[trial % hulls.size()], testing::random_rotation(rng),
+                                          Eigen::Vector3d(1.5, -2.25, 0.75));
+    const ConvexPolytope hull = ConvexPolytope::from_points(pts);
+    const auto shape = trial % 2 == 0 ? OffsetShape::kCube : OffsetShape::kRhombicuboctahedron;
+    const ConvexPolytope grown = minkowski_offset(hull, 0.5, shape);
+    const auto report = ball_sum_containment_report(grown, hull.vertices(), 0.5);
+    const double threshold = 0.5 - report.worst_protrusion;
+    for (int k = -6; k <= 6; ++k) {
+      const double r = threshold * (1.0 + k * 0x1p-48);
+      const bool expected = testing::reference_contains_ball_sum(grown.vertices(), hull.vertices(), r);
+      EXPECT_EQ(contains_ball_sum_exactly(grown, hull, r), expected) << trial << " " << k;
+      (expected ? near_true : near_false) += 1;
+    }
+    for (const double r : {0.25, 0.5, 0.75, 1.5}) {
+      EXPECT_EQ(contains_ball_sum_exactly(grown, hull, r),
+                testing::reference_contains_ball_sum(grown.vertices(), hull.vertices(), r))
+          << trial << " " << r;
+    }
+  }
+  // The radii straddle the threshold: both answers occur.
+  EXPECT_GT(near_true, 0);
+  EXPECT_GT(near_false, 0);
+}
+
 }  // namespace
 }  // namespace grpvss::geometry

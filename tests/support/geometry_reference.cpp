@@ -195,6 +195,21 @@ int count_points_outside_hull_exactly(const Points& pts, const Points& xs) {
   return outside;
 }
 
+bool reference_contains_ball_sum(const Points& outer, const Points& inner, double radius) {
+  const Z r(radius);
+  for (const Plane& pl : hull_planes(outer)) {
+    Z max_h = pl.n[0] * Z(inner[0].x()) + pl.n[1] * Z(inner[0].y()) + pl.n[2] * Z(inner[0].z());
+    for (const auto& h : inner) {
+      const Z d = pl.n[0] * Z(h.x()) + pl.n[1] * Z(h.y()) + pl.n[2] * Z(h.z());
+      if (d > max_h) max_h = d;
+    }
+    const Z g = pl.c - max_h;
+    if (CGAL::sign(g) == CGAL::NEGATIVE) return false;
+    if (g * g < r * r * (pl.n[0] * pl.n[0] + pl.n[1] * pl.n[1] + pl.n[2] * pl.n[2])) return false;
+  }
+  return true;
+}
+
 std::vector<Points> ibm7545_hulls() {
   std::vector<Points> hulls;
   Points current;

@@ -47,6 +47,9 @@ bool point_in_hull_exactly(const Points& pts, const Eigen::Vector3d& x);
 /// Exact: how many of xs lie OUTSIDE the closed convex hull of pts (hull built once).
 int count_points_outside_hull_exactly(const Points& pts, const Points& xs);
 
+/// Exact: does conv(outer) contain conv(inner) (+) B(0, radius)? Every triangle plane of an
+/// independent CGAL hull of outer, decided in Gmpzf by squaring (no filter).
+bool reference_contains_ball_sum(const Points& outer, const Points& inner, double radius);
 /// The 16-point hulls of data/ibm7545/{robot,environment}.txt (every line with exactly three
 /// comma-separated numbers, grouped by 16), in file order: 11 robot hulls then 2 obstacles.
 std::vector<Points> ibm7545_hulls();

@@ -3,7 +3,7 @@
 /// exact interference points, separation witnesses and exact distances.
 ///
 /// Filtering discipline (cgal-notes.md): interval arithmetic (Interval_nt<false>) runs only
-/// inside a Protect_FPU_rounding<true> scope; every exact fallback (Gmpzf, Gmpq)
+/// inside a Protect_FPU_rounding<true> scope; every exact fallback (Gmpzf, Mpzf, Gmpq)
 /// runs after that scope has restored round-to-nearest.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -12,6 +12,7 @@
 #include <CGAL/Gmpzf.h>
 #include <CGAL/Homogeneous.h>
 #include <CGAL/Interval_nt.h>
+#include <CGAL/Mpzf.h>
 #include <CGAL/Polytope_distance_d.h>
 #include <CGAL/Polytope_distance_d_traits_3.h>
 
@@ -344,128 +345,302 @@ Contact classify_exact(const ConvexPolytope& a, const ConvexPolytope& b) {
 
 namespace {
 
-struct PointCollector {
-  std::vector<std::pair<Rational3, InterferencePoint>> found;
+using Fast = CGAL::Mpzf;  // exact +, -, * of doubles, small values on the stack (no malloc)
+using Fast3 = std::array<Fast, 3>;
 
-  void add(const Rational3& x, InterferenceKind kind, int first, int second) {
+/// An exact rational point num / den (den > 0), plus its round-to-nearest double image.
+struct ExactPoint {
+  Fast3 num;
+  Fast den;
+  Eigen::Vector3d rounded;
+};
+
+/// num / den (den > 0) rounded to the nearest double (ties upward), decided exactly: q is the
+/// answer iff (q + prev(q)) / 2 <= num / den < (q + next(q)) / 2, tested by cross-multiplying.
+/// Deterministic in the exact value, so different roundings prove different exact values.
+double round_to_nearest(const Fast& num, const Fast& den) {
+  if (CGAL::is_zero(num)) return 0.0;
+  const double inf = std::numeric_limits<double>::infinity();
+  double q = CGAL::to_double(num) / CGAL::to_double(den);
+  if (!std::isfinite(q)) {
+    q = CGAL::to_double(Rational(static_cast<Rational>(num)) / static_cast<Rational>(den));
+  }
+  const Fast twice_num = num + num;
+  for (int step = 0; step < 64; ++step) {
+    const double below = std::nextafter(q, -inf);
+    const double above = std::nextafter(q, inf);
+    if (twice_num < (Fast(q) + Fast(below)) * den) {
+      q = below;
+    } else if (!(twice_num < (Fast(q) + Fast(above)) * den)) {
+      q = above;
+    } else {
+      return q;
+    }
+  }
+  throw std::logic_error("round_to_nearest did not converge");
+}
+
+struct PointCollector {
+  std::vector<std::pair<ExactPoint, InterferencePoint>> found;
+
+  void add(ExactPoint x, InterferenceKind kind, int first, int second) {
+    if (x.den == Fast(1)) {
+      for (int k = 0; k < 3; ++k) x.rounded[k] = CGAL::to_double(x.num[k]);
+    } else {
+      for (int k = 0; k < 3; ++k) x.rounded[k] = round_to_nearest(x.num[k], x.den);
+    }
     for (const auto& [y, ip] : found) {
-      if (ip.kind == kind && y == x) return;
+      // Equal exact points round equally, so only equal roundings need the exact test.
+      if (ip.kind != kind || y.rounded != x.rounded) continue;
+      bool same = true;
+      for (int k = 0; k < 3 && same; ++k) same = x.num[k] * y.den == y.num[k] * x.den;
+      if (same) return;
     }
     InterferencePoint ip;
-    ip.point = Eigen::Vector3d(CGAL::to_double(x[0]), CGAL::to_double(x[1]),
-                               CGAL::to_double(x[2]));
+    ip.point = x.rounded;
     ip.kind = kind;
     ip.feature_first = first;
     ip.feature_second = second;
-    found.emplace_back(x, ip);
+    found.emplace_back(std::move(x), ip);
   }
 };
 
-/// Edge/face pairs whose edge might meet the face (closed polygon). Interval arithmetic drops
-/// the pairs whose end points are certainly on the same strict side of the face plane, and
-/// the proper crossings whose crossing point is certainly outside one of the face's edges.
-/// Dropping only what intervals prove keeps the exact pass complete.
-std::vector<std::pair<int, int>> edge_face_candidates(const Hull& edges_of, const Hull& faces_of) {
-  std::vector<std::pair<int, int>> out;
-  const auto& ev = edges_of.poly.vertices();
-  const auto& fv = faces_of.poly.vertices();
-  CGAL::Protect_FPU_rounding<true> guard;
-  for (std::size_t f = 0; f < faces_of.poly.faces().size(); ++f) {
-    const auto& loop = faces_of.poly.faces()[f];
-    const IV3 n = faces_of.face_normal<IV>(static_cast<int>(f));
-    const IV3 v0 = lift<IV>(fv[loop[0]]);
-    std::vector<IV> value;
-    for (const auto& v : ev) value.push_back(dot(n, minus(lift<IV>(v), v0)));
-    for (std::size_t e = 0; e < edges_of.poly.edges().size(); ++e) {
-      const int i0 = edges_of.poly.edges()[e][0];
-      const int i1 = edges_of.poly.edges()[e][1];
-      const Certain s0 = sign_of(value[i0]);
-      const Certain s1 = sign_of(value[i1]);
-      if ((s0 == Certain::kPositive && s1 == Certain::kPositive) ||
-          (s0 == Certain::kNegative && s1 == Certain::kNegative)) {
-        continue;
-      }
-      const bool proper = (s0 == Certain::kPositive && s1 == Certain::kNegative) ||
-                          (s0 == Certain::kNegative && s1 == Certain::kPositive);
-      if (proper) {
-        // Crossing parameter t = s_p / (s_p - s_q) (denominator certainly non-zero).
-        const IV t = value[i0] / (value[i0] - value[i1]);
-        const IV3 p = lift<IV>(ev[i0]);
-        const IV3 d = minus(lift<IV>(ev[i1]), p);
-        bool outside = false;
-        for (std::size_t i = 0; i < loop.size() && !outside; ++i) {
-          const IV3 vi = lift<IV>(fv[loop[i]]);
-          const IV3 wi = minus(lift<IV>(fv[loop[(i + 1) % loop.size()]]), vi);
-          const IV alpha = dot(cross(wi, minus(p, vi)), n);
-          const IV beta = dot(cross(wi, d), n);
-          outside = sign_of(alpha + beta * t) == Certain::kNegative;
-        }
-        if (outside) continue;
-      }
-      out.emplace_back(static_cast<int>(e), static_cast<int>(f));
-    }
+ExactPoint exact_vertex(const Eigen::Vector3d& v) {
+  return {lift<Fast>(v), Fast(1), v};
+}
+
+/// Per face of `faces_of`: the exact sign of n_f . (v - v_0) for every vertex v of
+/// `edges_of`, and of the in-face edge tests. Interval arithmetic decides what it can; the
+/// exact (Mpzf) values are built only for the undecided cases.
+class FaceSides {
+ public:
+  FaceSides(const Hull& faces_of, const std::vector<Eigen::Vector3d>& points, int face)
+      : faces_of_(faces_of), points_(points), face_(face),
+        loop_(faces_of.poly.faces()[face]), exact_side_(points.size()),
+        have_exact_side_(points.size(), 0) {}
+
+  const std::vector<int>& loop() const { return loop_; }
+  const Fast3& normal() {
+    if (!normal_) normal_ = faces_of_.face_normal<Fast>(face_);
+    return *normal_;
   }
-  return out;
+  /// Exact n . (p - v_0) for point index i.
+  const Fast& side(std::size_t i) {
+    if (!have_exact_side_[i]) {
+      exact_side_[i] = dot(normal(), diff<Fast>(points_[i], faces_of_.vertex(face_, 0)));
+      have_exact_side_[i] = 1;
+    }
+    return exact_side_[i];
+  }
+  /// Exact m_k = n x w_k, w_k the k-th loop edge: x in the face plane is inside the face iff
+  /// m_k . (x - v_k) >= 0 for every k.
+  const Fast3& edge_normal(std::size_t k) {
+    if (edge_normals_.empty()) {
+      const auto& fv = faces_of_.poly.vertices();
+      for (std::size_t i = 0; i < loop_.size(); ++i) {
+        edge_normals_.push_back(
+            cross(normal(), diff<Fast>(fv[loop_[(i + 1) % loop_.size()]], fv[loop_[i]])));
+      }
+    }
+    return edge_normals_[k];
+  }
+
+ private:
+  const Hull& faces_of_;
+  const std::vector<Eigen::Vector3d>& points_;
+  int face_;
+  const std::vector<int>& loop_;
+  std::optional<Fast3> normal_;
+  std::vector<Fast> exact_side_;
+  std::vector<char> have_exact_side_;
+  std::vector<Fast3> edge_normals_;
+};
+
+int exact_sign(const Fast& x) { return static_cast<int>(CGAL::sign(x)); }
+int certain_int(Certain c) { return c == Certain::kPositive ? 1 : c == Certain::kNegative ? -1 : 0; }
+
+/// Edge p + t d (t in [0, 1]) lying in the face's plane: the end points of its part inside
+/// the closed face, exactly (t = tn / td with td > 0). Rare, so no filter.
+void coplanar_edge_points(FaceSides& face, const Hull& faces_of, const Eigen::Vector3d& p_d,
+                          const Eigen::Vector3d& q_d, InterferenceKind kind, int e, int f,
+                          PointCollector& out) {
+  const auto& fv = faces_of.poly.vertices();
+  const Fast3 p = lift<Fast>(p_d);
+  const Fast3 d = diff<Fast>(q_d, p_d);
+  Fast lo_n(0), lo_d(1), hi_n(1), hi_d(1);
+  const auto& loop = face.loop();
+  for (std::size_t k = 0; k < loop.size(); ++k) {
+    const Fast3& m = face.edge_normal(k);
+    const Fast alpha = dot(m, minus(p, lift<Fast>(fv[loop[k]])));
+    const Fast beta = dot(m, d);
+    // alpha + beta t >= 0
+    const int sb = exact_sign(beta);
+    if (sb == 0) {
+      if (exact_sign(alpha) < 0) return;
+    } else if (sb > 0) {  // t >= -alpha / beta
+      const Fast tn = -alpha;
+      if (tn * lo_d > lo_n * beta) {
+        lo_n = tn;
+        lo_d = beta;
+      }
+    } else {  // t <= alpha / -beta
+      const Fast td = -beta;
+      if (alpha * hi_d < hi_n * td) {
+        hi_n = alpha;
+        hi_d = td;
+      }
+    }
+    if (lo_n * hi_d > hi_n * lo_d) return;
+  }
+  for (const auto& [tn, td] : {std::make_pair(lo_n, lo_d), std::make_pair(hi_n, hi_d)}) {
+    ExactPoint x;
+    for (int k = 0; k < 3; ++k) x.num[k] = p[k] * td + tn * d[k];
+    x.den = td;
+    out.add(std::move(x), kind, e, f);
+  }
 }
 
 /// Edges of `edges_of` meeting faces of `faces_of` (closed polygons), exactly.
+/// For a crossing with s_p = n.(p - v_0), s_q = n.(q - v_0) of opposite signs the point is
+/// X = (s_p q - s_q p) / (s_p - s_q); it is inside the face iff
+/// sign(m_k . (N - D v_k)) * sign(D) >= 0 for every loop edge k (N, D its numerator and
+/// denominator). Each sign is taken from intervals when they decide it, else computed exactly.
 void edge_face_points(const Hull& edges_of, const Hull& faces_of, InterferenceKind kind,
                       PointCollector& out) {
   const auto& ev = edges_of.poly.vertices();
   const auto& fv = faces_of.poly.vertices();
-  const auto candidates = edge_face_candidates(edges_of, faces_of);
-  int cached_face = -1;
-  Rational3 n;
-  Rational c;
-  std::vector<Rational3> loop_v, loop_w;
-  for (const auto& [e, f] : candidates) {
-    const auto& loop = faces_of.poly.faces()[f];
-    if (f != cached_face) {
-      cached_face = f;
-      n = faces_of.face_normal<Rational>(f);
-      c = dot(n, lift<Rational>(fv[loop[0]]));
-      // Inside test for x in the face plane: (v_{i+1} - v_i) x (x - v_i) . n >= 0.
-      loop_v.clear();
-      loop_w.clear();
-      for (std::size_t i = 0; i < loop.size(); ++i) {
-        loop_v.push_back(lift<Rational>(fv[loop[i]]));
-        loop_w.push_back(diff<Rational>(fv[loop[(i + 1) % loop.size()]], fv[loop[i]]));
+  const auto& edges = edges_of.poly.edges();
+  // Exact plane sides by CGAL's filtered orientation predicate: n.(p - v_0) with
+  // n = (v_1 - v_0) x (v_2 - v_0) is det[v_1 - v_0, v_2 - v_0, p - v_0] = orientation(v0, v1, v2, p).
+  using EpickPoint = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
+  std::vector<EpickPoint> ep;
+  ep.reserve(ev.size());
+  for (const auto& v : ev) ep.emplace_back(v.x(), v.y(), v.z());
+  // Bounding boxes of the edges (exact double compares drop edges far from a face).
+  std::vector<Eigen::Vector3d> edge_lo(edges.size()), edge_hi(edges.size());
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    edge_lo[e] = ev[edges[e][0]].cwiseMin(ev[edges[e][1]]);
+    edge_hi[e] = ev[edges[e][0]].cwiseMax(ev[edges[e][1]]);
+  }
+  std::vector<IV> value(ev.size());
+  std::vector<char> have_value(ev.size());
+  std::vector<int> side(ev.size());
+  for (std::size_t f = 0; f < faces_of.poly.faces().size(); ++f) {
+    FaceSides face(faces_of, ev, static_cast<int>(f));
+    const auto& loop = face.loop();
+    Eigen::Vector3d face_lo = fv[loop[0]], face_hi = fv[loop[0]];
+    for (int i : loop) {
+      face_lo = face_lo.cwiseMin(fv[i]);
+      face_hi = face_hi.cwiseMax(fv[i]);
+    }
+    const EpickPoint f0(fv[loop[0]].x(), fv[loop[0]].y(), fv[loop[0]].z());
+    const EpickPoint f1(fv[loop[1]].x(), fv[loop[1]].y(), fv[loop[1]].z());
+    const EpickPoint f2(fv[loop[2]].x(), fv[loop[2]].y(), fv[loop[2]].z());
+    bool any_positive = false, any_nonpositive = false;
+    for (std::size_t v = 0; v < ev.size(); ++v) {
+      side[v] = static_cast<int>(CGAL::orientation(f0, f1, f2, ep[v]));
+      (side[v] > 0 ? any_positive : any_nonpositive) = true;
+    }
+    if (!any_nonpositive) continue;  // every edge strictly beyond the face plane
+    if (!any_positive && std::find(side.begin(), side.end(), 0) == side.end()) {
+      continue;  // every edge strictly behind it
+    }
+    std::fill(have_value.begin(), have_value.end(), 0);
+    IV3 n;
+    IV3 v0_iv;
+    std::vector<IV3> m_iv;
+    std::vector<IV3> v_iv;
+    {
+      CGAL::Protect_FPU_rounding<true> guard;
+      n = faces_of.face_normal<IV>(static_cast<int>(f));
+      v0_iv = lift<IV>(fv[loop[0]]);
+      for (std::size_t k = 0; k < loop.size(); ++k) {
+        const IV3 vk = lift<IV>(fv[loop[k]]);
+        v_iv.push_back(vk);
+        m_iv.push_back(cross(n, minus(lift<IV>(fv[loop[(k + 1) % loop.size()]]), vk)));
       }
     }
-    {
-      const Rational3 p = lift<Rational>(ev[edges_of.poly.edges()[e][0]]);
-      const Rational3 q = lift<Rational>(ev[edges_of.poly.edges()[e][1]]);
-      const Rational sp = dot(n, p) - c;
-      const Rational sq = dot(n, q) - c;
-      const int gp = CGAL::sign(sp), gq = CGAL::sign(sq);
-      if (gp * gq > 0) continue;
-      const Rational3 d = minus(q, p);
-      // Parameter range t in [lo, hi] of p + t d inside the face.
-      Rational lo(0), hi(1);
-      if (gp != 0 || gq != 0) {
-        lo = hi = sp / (sp - sq);
+    const auto interval_value = [&](int v) -> const IV& {
+      if (!have_value[v]) {
+        value[v] = dot(n, minus(lift<IV>(ev[v]), v0_iv));  // caller holds the rounding guard
+        have_value[v] = 1;
       }
-      bool empty = false;
-      for (std::size_t i = 0; i < loop.size() && !empty; ++i) {
-        const Rational alpha = dot(cross(loop_w[i], minus(p, loop_v[i])), n);
-        const Rational beta = dot(cross(loop_w[i], d), n);
-        // alpha + beta t >= 0
-        if (CGAL::is_zero(beta)) {
-          if (alpha < 0) empty = true;
+      return value[v];
+    };
+    for (std::size_t e = 0; e < edges.size(); ++e) {
+      const int i0 = edges[e][0];
+      const int i1 = edges[e][1];
+      const int s0 = side[i0];
+      const int s1 = side[i1];
+      if (s0 * s1 > 0) continue;
+      if ((edge_hi[e].array() < face_lo.array()).any() ||
+          (face_hi.array() < edge_lo[e].array()).any()) {
+        continue;  // disjoint bounding boxes (exact double compares)
+      }
+      if (s0 == 0 && s1 == 0) {
+        coplanar_edge_points(face, faces_of, ev[i0], ev[i1], kind, static_cast<int>(e),
+                             static_cast<int>(f), out);
+        continue;
+      }
+      // The crossing point as N / D: an end point on the plane, or the proper crossing.
+      const bool at_end = s0 == 0 || s1 == 0;
+      const int end = s0 == 0 ? i0 : i1;
+      // Interval pass over the loop edges: -1 certainly outside, 0 undecided, 1 inside.
+      std::vector<std::size_t> undecided;
+      bool outside = false;
+      {
+        CGAL::Protect_FPU_rounding<true> guard;
+        IV3 num;
+        IV den(1);
+        if (at_end) {
+          num = lift<IV>(ev[end]);
         } else {
-          const Rational t = -alpha / beta;
-          if (beta > 0) {
-            if (t > lo) lo = t;
-          } else if (t < hi) {
-            hi = t;
+          const IV3 p = lift<IV>(ev[i0]);
+          const IV3 q = lift<IV>(ev[i1]);
+          const IV& sp = interval_value(i0);
+          const IV& sq = interval_value(i1);
+          for (int k = 0; k < 3; ++k) num[k] = sp * q[k] - sq * p[k];
+          den = sp - sq;
+        }
+        const int sd = at_end ? 1 : s0;  // sign(D) = sign(s_p - s_q) = s_p
+        for (std::size_t k = 0; k < loop.size() && !outside; ++k) {
+          const IV3 rel{num[0] - den * v_iv[k][0], num[1] - den * v_iv[k][1],
+                        num[2] - den * v_iv[k][2]};
+          const Certain c = sign_of(dot(m_iv[k], rel));
+          if (c == Certain::kUnknown) {
+            undecided.push_back(k);
+          } else if (certain_int(c) * sd < 0) {
+            outside = true;
           }
-          if (lo > hi) empty = true;
         }
       }
-      if (empty) continue;
-      for (const Rational& t : {lo, hi}) {
-        out.add({p[0] + t * d[0], p[1] + t * d[1], p[2] + t * d[2]}, kind, e, f);
+      if (outside) continue;
+      ExactPoint x;
+      if (at_end) {
+        x = exact_vertex(ev[end]);
+      } else {
+        const Fast& sp = face.side(i0);
+        const Fast& sq = face.side(i1);
+        const Fast3 p = lift<Fast>(ev[i0]);
+        const Fast3 q = lift<Fast>(ev[i1]);
+        for (int k = 0; k < 3; ++k) x.num[k] = sp * q[k] - sq * p[k];
+        x.den = sp - sq;
+        if (s0 < 0) {  // keep den > 0
+          for (auto& c : x.num) c = -c;
+          x.den = -x.den;
+        }
       }
+      for (std::size_t k : undecided) {
+        const Fast3 vk = lift<Fast>(fv[loop[k]]);
+        const Fast3 rel{x.num[0] - x.den * vk[0], x.num[1] - x.den * vk[1],
+                        x.num[2] - x.den * vk[2]};
+        if (exact_sign(dot(face.edge_normal(k), rel)) < 0) {
+          outside = true;
+          break;
+        }
+      }
+      if (outside) continue;
+      out.add(std::move(x), kind, static_cast<int>(e), static_cast<int>(f));
     }
   }
 }
@@ -489,17 +664,17 @@ void vertex_points(const Hull& of, const Hull& in, InterferenceKind kind, PointC
       }
     }
   }
-  std::vector<std::pair<Exact3, Exact>> planes;
+  std::vector<std::pair<Fast3, Fast>> planes;
   for (std::size_t v = 0; v < vs.size(); ++v) {
     if (verdict[v] == 1) continue;
     if (verdict[v] == -1) {
       if (planes.empty()) {
         for (std::size_t f = 0; f < faces; ++f) {
-          const Exact3 n = in.face_normal<Exact>(static_cast<int>(f));
-          planes.emplace_back(n, dot(n, lift<Exact>(in.vertex(static_cast<int>(f), 0))));
+          const Fast3 n = in.face_normal<Fast>(static_cast<int>(f));
+          planes.emplace_back(n, dot(n, lift<Fast>(in.vertex(static_cast<int>(f), 0))));
         }
       }
-      const Exact3 x = lift<Exact>(vs[v]);
+      const Fast3 x = lift<Fast>(vs[v]);
       bool inside = true;
       for (const auto& [n, c] : planes) {
         if (dot(n, x) > c) {
@@ -509,7 +684,7 @@ void vertex_points(const Hull& of, const Hull& in, InterferenceKind kind, PointC
       }
       if (!inside) continue;
     }
-    out.add(lift<Rational>(vs[v]), kind, static_cast<int>(v), -1);
+    out.add(exact_vertex(vs[v]), kind, static_cast<int>(v), -1);
   }
 }
 
@@ -527,7 +702,8 @@ std::vector<InterferencePoint> interference_points(const ConvexPolytope& a,
   const Hull B(b);
   std::vector<InterferencePoint> result;
   if (boxes_separate(a.vertices(), b.vertices())) return result;
-  if (classify_hulls(A, B) == Contact::kSeparated) return result;
+  // No classify_hulls() first: the list is empty iff the hulls are disjoint (proof below), so
+  // computing it decides separation too.
   PointCollector out;
   edge_face_points(A, B, InterferenceKind::kEdgeOfAOnFaceOfB, out);
   edge_face_points(B, A, InterferenceKind::kEdgeOfBOnFaceOfA, out);
