@@ -143,6 +143,7 @@ void CellProbe::probe_hull(int hull_index, bool with_points, ProbeResult& out) {
   std::sort(ordered_candidates_.begin(), ordered_candidates_.end());
 
   bool expanded_placed = obstacle_count > kBroadphaseThreshold;
+  expanded_polytope_.reset();
   bool raw_placed = false;
   double smallest_clearance = kInfinity;
   for (const auto& [gap_estimate, o] : ordered_candidates_) {
@@ -187,7 +188,12 @@ void CellProbe::probe_hull(int hull_index, bool with_points, ProbeResult& out) {
     out.any_expanded_interference = true;
     out.evidence.push_back(evidence);
     if (with_points) {
-      for (const auto& point : geometry::interference_points(placed_expanded_, cell.obstacles_W()[o])) {
+      // The placed offset is hulled once per hull; the obstacle's hull was built once.
+      if (!expanded_polytope_) {
+        expanded_polytope_ = geometry::ConvexPolytope::from_points(placed_expanded_);
+      }
+      for (const auto& point :
+           geometry::interference_points(*expanded_polytope_, cell.obstacle_polytopes_W()[o])) {
         out.interference_points.push_back(
             {hull.link, hull.hull, o, point.point, geometry::to_string(point.kind)});
       }

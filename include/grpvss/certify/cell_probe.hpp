@@ -5,11 +5,13 @@
 /// a radius r_h such that the open ball of radius r_h around every point of the TRUE
 /// (exactly placed) hull is free of obstacles. Every proof is kept as evidence.
 
+#include <optional>
 #include <vector>
 
 #include <Eigen/Core>
 
 #include "grpvss/certify/robot_cell.hpp"
+#include "grpvss/geometry/convex_polytope.hpp"
 #include "grpvss/certify/verification_result.hpp"
 #include "grpvss/geometry/separation_witness.hpp"
 #include "grpvss/kinematics/forward_kinematics.hpp"
@@ -72,6 +74,7 @@ class CellProbe {
   kinematics::Workspace workspace_;
   std::vector<Eigen::Vector3d> placed_expanded_;
   std::vector<Eigen::Vector3d> placed_raw_;
+  std::optional<geometry::ConvexPolytope> expanded_polytope_;
   std::vector<int> candidates_;
   std::vector<std::pair<double, int>> ordered_candidates_;
   std::vector<Eigen::Vector3d> warm_normals_;  ///< [hull * obstacles + obstacle]

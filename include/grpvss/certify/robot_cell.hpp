@@ -12,6 +12,7 @@
 #include "grpvss/certify/motion_bound.hpp"
 #include "grpvss/geometry/broadphase.hpp"
 #include "grpvss/geometry/centroid_cull.hpp"
+#include "grpvss/geometry/convex_polytope.hpp"
 #include "grpvss/geometry/minkowski_offset.hpp"
 #include "grpvss/kinematics/kinematic_chain.hpp"
 #include "grpvss/model/environment.hpp"
@@ -46,6 +47,10 @@ class RobotCell {
   const std::vector<LinkHull>& hulls() const { return hulls_; }
   /// Exact-hull vertices of obstacle o, world frame.
   const std::vector<std::vector<Eigen::Vector3d>>& obstacles_W() const { return obstacles_W_; }
+  /// The obstacles' exact hulls, built once (interference points reuse them).
+  const std::vector<geometry::ConvexPolytope>& obstacle_polytopes_W() const {
+    return obstacle_polytopes_W_;
+  }
   const std::vector<geometry::CertifiedSphere>& obstacle_spheres_W() const {
     return obstacle_spheres_W_;
   }
@@ -70,6 +75,7 @@ class RobotCell {
   double expansion_radius_ = 0.0;
   std::vector<LinkHull> hulls_;
   std::vector<std::vector<Eigen::Vector3d>> obstacles_W_;
+  std::vector<geometry::ConvexPolytope> obstacle_polytopes_W_;
   std::vector<geometry::CertifiedSphere> obstacle_spheres_W_;
   geometry::StaticObstacleIndex obstacle_index_;
 };
