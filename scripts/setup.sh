@@ -26,6 +26,27 @@ if [ "${#missing[@]}" -gt 0 ]; then
   fi
 fi
 
+# The HTML report viewer (src/viewer, three.js) is bundled at build time from npm packages;
+# the browser test drives Debian's chromium. Both are optional: without them the build warns
+# and `grpvss animate` / `verify --html` are unavailable.
+if [ ! -d "$here/src/viewer/node_modules" ]; then
+  if command -v npm >/dev/null 2>&1; then
+    echo "setup: npm ci in src/viewer" >&2
+    (cd "$here/src/viewer" && npm ci --no-audit --no-fund >/dev/null)
+  else
+    echo "setup: node/npm missing: the HTML viewer will not be built" >&2
+  fi
+fi
+if ! command -v chromium >/dev/null 2>&1 || ! command -v rsvg-convert >/dev/null 2>&1; then
+  if [ "$(id -u)" = 0 ]; then
+    echo "setup: installing chromium librsvg2-bin (viewer tests, SVG previews)" >&2
+    apt-get update -q >/dev/null
+    DEBIAN_FRONTEND=noninteractive apt-get install -y -q chromium librsvg2-bin >/dev/null
+  else
+    echo "setup: chromium missing: the viewer browser test will not be registered" >&2
+  fi
+fi
+
 build_dir="${GRPVSS_BUILD_DIR:-$here/build}"
 jobs="${GRPVSS_JOBS:-$(nproc)}"
 cmake -S "$here" -B "$build_dir" -DCMAKE_BUILD_TYPE=Release >/dev/null

@@ -12,6 +12,7 @@
 
 #include "commands.hpp"
 #include "interactive/session.hpp"
+#include "viewer_html.hpp"
 
 namespace grpvss::app {
 namespace {
@@ -47,6 +48,7 @@ int run_interactive(const InteractiveArguments& args) {
   settings.data_dir = find_data_dir(args.data_dir);
   settings.max_invalid_answers = args.max_invalid;
   settings.echo_answers = isatty(STDIN_FILENO) == 0;
+  settings.render_html = render_viewer_html;
   interactive::Session session(std::cin, std::cout, settings);
   return interactive::exit_code(session.run());
 }

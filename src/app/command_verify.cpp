@@ -18,10 +18,12 @@
 #include "grpvss/report/atomic_output.hpp"
 #include "grpvss/report/input_digests.hpp"
 #include "grpvss/report/json_report.hpp"
+#include "grpvss/report/scene_json.hpp"
 #include "grpvss/report/thesis_output.hpp"
 #include "interactive/verdict_summary.hpp"
 #include "progress_bar.hpp"
 #include "verify_arguments.hpp"
+#include "viewer_html.hpp"
 
 namespace grpvss::app {
 namespace {
@@ -36,6 +38,7 @@ void print_summary(const certify::VerificationRun& run, const VerifyArguments& a
   if (!args.out.empty()) fmt::print("thesis output file: {}\n", args.out);
   if (!args.json.empty()) fmt::print("JSON report: {}\n", args.json);
   if (!args.certificate.empty()) fmt::print("certificate: {}\n", args.certificate);
+  if (!args.html.empty()) fmt::print("HTML animation: {}\n", args.html);
 }
 
 int run_verify(const VerifyArguments& args) {
@@ -63,10 +66,17 @@ int run_verify(const VerifyArguments& args) {
     report::write_file_atomically(args.out, report::render_thesis_output(run.result, robot),
                                   args.force);
   }
-  if (!args.json.empty()) {
-    report::write_file_atomically(
-        args.json, report::render_json_report(report::report_to_json(run.result, robot, digests)),
-        args.force);
+  if (!args.json.empty() || !args.html.empty()) {
+    nlohmann::json json_report = report::report_to_json(run.result, robot, digests);
+    json_report["scene"] = report::scene_to_json(
+        run.result, robot, environment,
+        options.offset_shape.value_or(report::default_offset_shape(run.result.mode)));
+    const std::string html =
+        args.html.empty() ? std::string() : render_viewer_html(json_report, args.html);
+    if (!args.json.empty()) {
+      report::write_file_atomically(args.json, report::render_json_report(json_report), args.force);
+    }
+    if (!args.html.empty()) report::write_file_atomically(args.html, html, args.force);
   }
   if (!args.certificate.empty()) {
     nlohmann::json certificate = certify::certificate_to_json(run.certificate);
@@ -88,6 +98,7 @@ void register_verify_command(CLI::App& app, int& exit_code) {
   add_verify_options(*command, *args);
   command->add_option("--out", args->out, "Thesis output file (Appendix A.3 layout)");
   command->add_option("--json", args->json, "JSON report (docs/report-schema.md)");
+  command->add_option("--html", args->html, "3-D animation of the run, one offline HTML file");
   command->add_option("--certificate", args->certificate,
                       "Certificate for check-certificate (docs/certificate.md)");
   command->add_flag("--force", args->force, "Overwrite existing output files");

@@ -17,6 +17,8 @@ void register_trajectory_command(CLI::App& app, int& exit_code);
 void register_verify_command(CLI::App& app, int& exit_code);
 void register_check_certificate_command(CLI::App& app, int& exit_code);
 void register_expansion_audit_command(CLI::App& app, int& exit_code);
+void register_animate_command(CLI::App& app, int& exit_code);
+void register_render_command(CLI::App& app, int& exit_code);
 void register_interactive_command(CLI::App& app, int& exit_code);
 
 }  // namespace grpvss::app

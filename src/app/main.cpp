@@ -19,6 +19,8 @@ int main(int argc, char** argv) {
   grpvss::app::register_verify_command(app, exit_code);
   grpvss::app::register_check_certificate_command(app, exit_code);
   grpvss::app::register_expansion_audit_command(app, exit_code);
+  grpvss::app::register_animate_command(app, exit_code);
+  grpvss::app::register_render_command(app, exit_code);
   grpvss::app::register_interactive_command(app, exit_code);
   try {
     app.parse(argc, argv);

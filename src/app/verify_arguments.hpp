@@ -24,6 +24,7 @@ struct VerifyArguments {
   std::string out;
   std::string json;
   std::string certificate;
+  std::string html;
   bool force = false;
   bool quiet = false;
 };

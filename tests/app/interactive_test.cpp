@@ -18,6 +18,7 @@
 #include "grpvss/io/path_file.hpp"
 #include "grpvss/io/robot_file.hpp"
 #include "grpvss/motion/kinematics_adapter.hpp"
+#include "grpvss/report/svg_render.hpp"
 #include "grpvss/report/thesis_output.hpp"
 #include "interactive/answer_parsing.hpp"
 #include "interactive/session.hpp"
@@ -199,7 +200,8 @@ TEST(InteractiveSession, FollowsTheThesisRunningSample) {
        "MAKE SURE THE FILE YOU SPECIFIED DOES NOT EXIST\n", "PROCESSING\n", "verdict: ",
        "THE RESULTS ARE STORED IN " + dir + "/OUT1\n",
        "WHAT TYPE OF MOTION IMAGE DO YOU LIKE?\n",
-       "THE ANIMATION OF THIS PATH IS IN " + dir + "/OUT1.json\n",
+       "THE PICTURE OF STEP 42 IN THIS VIEW IS IN " + dir + "/OUT1.svg\n",
+       "THE REPORT OF THIS PATH (WITH THE SCENE) IS IN " + dir + "/OUT1.json\n",
        "ENTER ONE OF THE FOLLOWING OPTION NUMBERS\n1. SIMULATE ANOTHER ROBOT\n"
        "2. CHANGE THE ENVIRONMENT\n3. CHANGE THE TOLERANCE VALUE\n4. PERFORM ANOTHER MOTION\n"
        "5. SEE THE ANIMATION AGAIN\n6. EXIT\n",
@@ -229,10 +231,13 @@ TEST(InteractiveSession, FollowsTheThesisRunningSample) {
        "INVALID ANSWER: the file " + dir + "/OUT1 already exists; enter another name\n",
        "THE RESULTS ARE STORED IN " + dir + "/OUT2\n",
        "THE TYPED PATH IS STORED IN " + dir + "/OUT2.path.txt\n",
-       "THE ANIMATION OF THIS PATH IS IN " + dir + "/OUT2.json\n",
+       "THE REPORT OF THIS PATH (WITH THE SCENE) IS IN " + dir + "/OUT2.json\n",
        // Motion 4: CP typed, results not stored: the animation gets a numbered name.
-       "3. CP STRAIGHT-LINE OPERATION\n", "PROCESSING\n",
-       "THE ANIMATION OF THIS PATH IS IN " + dir + "/grpvss-motion-4.json\n",
+       // From home the line leaves the workspace at once: thesis error 5, no step to draw.
+       "3. CP STRAIGHT-LINE OPERATION\n", "PROCESSING\n", "verdict: ERROR\n",
+       "error 5 (segment 1, step 0): Unreachable intermediate point was encountered in the "
+       "motion segment 1 in the input file.",
+       "THE REPORT OF THIS PATH (WITH THE SCENE) IS IN " + dir + "/grpvss-motion-4.json\n",
        "6. EXIT\n", "GRPVSS SESSION ENDED\n"}));
   EXPECT_EQ(count_of(t.out, "PROCESSING\n"), 4u);
   EXPECT_EQ(count_of(t.out, "INVALID ANSWER"), 2u) << t.out;
@@ -269,8 +274,22 @@ TEST(InteractiveSession, FollowsTheThesisRunningSample) {
     EXPECT_EQ(report.at("schema"), "grpvss-report/1") << name;
   }
   EXPECT_EQ(test::directory_entries(dir),
-            (std::vector<std::string>{"OUT1", "OUT1.json", "OUT2", "OUT2.json", "OUT2.path.txt",
-                                      "grpvss-motion-2.json", "grpvss-motion-4.json"}));
+            (std::vector<std::string>{"OUT1", "OUT1.json", "OUT1.svg", "OUT2", "OUT2.json",
+                                      "OUT2.path.txt", "OUT2.svg", "grpvss-motion-2.json",
+                                      "grpvss-motion-2.svg", "grpvss-motion-4.json"}));
+  // The picture is drawn in the view typed at the start (ANGLEX/Y/Z, SCALE, SHIFT).
+  const nlohmann::json out1 = nlohmann::json::parse(test::read_text_file(dir + "/OUT1.json"));
+  ASSERT_TRUE(out1.contains("scene"));
+  report::SvgView typed_view;
+  typed_view.angle_x_deg = -75.0;
+  typed_view.angle_y_deg = 0.0;
+  typed_view.angle_z_deg = 85.0;
+  typed_view.scale = 1.5;
+  typed_view.shift = {-20.0, -10.0, 0.0};
+  EXPECT_EQ(test::read_text_file(dir + "/OUT1.svg"),
+            report::render_step_svg(out1, 42, typed_view, "OUT1.json"));
+  EXPECT_NE(test::read_text_file(dir + "/OUT1.svg"),
+            report::render_step_svg(out1, 42, report::SvgView{}, "OUT1.json"));
 }
 
 // A short complete session: robot, trapezoids, environment, tolerance, default view, one
@@ -287,8 +306,8 @@ TEST(InteractiveSession, ShortSessionSeesTheAnimationAgainInSteppingMode) {
   ASSERT_EQ(t.end, SessionEnd::kExitChosen) << t.out;
   EXPECT_EQ(t.motions, 1);
   EXPECT_TRUE(t.view.stepping);
-  EXPECT_TRUE(appear_in_order(t.out, {"THE ANIMATION OF THIS PATH IS IN " + dir + "/grpvss-motion-1.json\n",
-                                      "THE ANIMATION OF THIS PATH IS IN " + dir + "/grpvss-motion-1-2.json\n",
+  EXPECT_TRUE(appear_in_order(t.out, {"THE REPORT OF THIS PATH (WITH THE SCENE) IS IN " + dir + "/grpvss-motion-1.json\n",
+                                      "THE REPORT OF THIS PATH (WITH THE SCENE) IS IN " + dir + "/grpvss-motion-1-2.json\n",
                                       "GRPVSS SESSION ENDED\n"}));
 }
 
@@ -401,9 +420,16 @@ TEST(InteractiveCli, PipedStdinRunsTheSessionAndEchoesTheAnswers) {
   EXPECT_TRUE(appear_in_order(r.out, {"ENTER ONE OF THE OPTION NUMBERS\n> 1\n",
                                       "ENTER THE TOLERANCE VALUE\n(SAME LENGTH UNITS AS THE "
                                       "ROBOT FILE, > 0)\n> 1\n",
-                                      "THE ANIMATION OF THIS PATH IS IN ./grpvss-motion-1.json\n",
+                                      "THE REPORT OF THIS PATH (WITH THE SCENE) IS IN "
+                                      "./grpvss-motion-1.json\n",
                                       "GRPVSS SESSION ENDED\n"}));
   EXPECT_TRUE(std::filesystem::exists(dir + "/grpvss-motion-1.json"));
+  // The executable passes the viewer's HTML writer: a page, or (a build without the viewer
+  // bundle) the reason there is none.
+  const bool html = r.out.find("THE ANIMATION OF THIS PATH IS IN ./grpvss-motion-1.html "
+                               "(OPEN IT IN A WEB BROWSER)\n") != std::string::npos;
+  EXPECT_NE(html, r.out.find("NO HTML ANIMATION: ") != std::string::npos) << r.out;
+  EXPECT_EQ(html, std::filesystem::exists(dir + "/grpvss-motion-1.html"));
 
   const CliRun empty = run_cli_with_stdin(dir, "");
   EXPECT_EQ(empty.exit_code, 0);

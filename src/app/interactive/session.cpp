@@ -492,9 +492,20 @@ void Session::animate() {
   const AnimationRequest request{last_motion_->result, *robot_, *environment_, last_digests_,
                                  view_};
   try {
-    last_motion_->animation_file = write_animation(request, last_animation_base_);
-    out_ << fmt::format("THE ANIMATION OF THIS PATH IS IN {}\n({})\n",
-                        last_motion_->animation_file, animation_format().description);
+    const AnimationFiles files =
+        write_animation(request, last_animation_base_, settings_.render_html);
+    last_motion_->animation_file = files.html.empty() ? files.json : files.html;
+    if (!files.html.empty()) {
+      out_ << fmt::format("THE ANIMATION OF THIS PATH IS IN {} (OPEN IT IN A WEB BROWSER)\n",
+                          files.html);
+    } else if (!files.html_error.empty()) {
+      out_ << fmt::format("NO HTML ANIMATION: {}\n", files.html_error);
+    }
+    if (!files.svg.empty()) {
+      out_ << fmt::format("THE PICTURE OF STEP {} IN THIS VIEW IS IN {}\n", files.svg_step,
+                          files.svg);
+    }
+    out_ << fmt::format("THE REPORT OF THIS PATH (WITH THE SCENE) IS IN {}\n", files.json);
   } catch (const InputError& error) {
     out_ << "THE ANIMATION COULD NOT BE WRITTEN: " << error.what() << '\n';
   }

@@ -24,6 +24,7 @@
 #include "grpvss/motion/kinematics_access.hpp"
 #include "grpvss/motion/profile_table.hpp"
 #include "grpvss/report/input_digests.hpp"
+#include "interactive/animation_output.hpp"
 #include "interactive/prompter.hpp"
 #include "interactive/typed_path.hpp"
 #include "interactive/view_settings.hpp"
@@ -38,6 +39,8 @@ struct SessionSettings {
   int max_invalid_answers = 20;
   /// Repeat each answer after its prompt (piped input is not echoed by a terminal).
   bool echo_answers = false;
+  /// The viewer's HTML page writer; without it only the JSON report and the SVG are written.
+  HtmlRenderer render_html;
 };
 
 enum class SessionEnd {
@@ -53,7 +56,7 @@ int exit_code(SessionEnd end);
 struct ProcessedMotion {
   certify::VerificationResult result;
   std::string results_file;    ///< the thesis output file, empty when not stored
-  std::string animation_file;  ///< the animation document written
+  std::string animation_file;  ///< the HTML animation, else the JSON report, last written
 };
 
 class Session {

@@ -1,0 +1,102 @@
+#include "grpvss/report/scene_json.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include <fmt/core.h>
+#include <nlohmann/json.hpp>
+
+#include "grpvss/certify/robot_cell.hpp"
+#include "grpvss/geometry/convex_polytope.hpp"
+#include "grpvss/kinematics/forward_kinematics.hpp"
+#include "grpvss/kinematics/kinematic_chain.hpp"
+
+namespace grpvss::report {
+
+namespace {
+
+using nlohmann::json;
+
+double finite(double value, const char* what) {
+  if (!std::isfinite(value)) throw std::logic_error(fmt::format("scene: {} is {}", what, value));
+  return value;
+}
+
+/// Vertices, face loops (CCW from outside) and edges of the exact hull of `points`.
+json polytope_json(const std::vector<Eigen::Vector3d>& points, const char* vertices_key) {
+  const auto polytope = geometry::ConvexPolytope::from_points(points);
+  json vertices = json::array();
+  for (const auto& v : polytope.vertices()) {
+    vertices.push_back({finite(v.x(), "vertex"), finite(v.y(), "vertex"), finite(v.z(), "vertex")});
+  }
+  json edges = json::array();
+  for (const auto& edge : polytope.edges()) edges.push_back({edge[0], edge[1]});
+  return {{vertices_key, vertices}, {"faces", polytope.faces()}, {"edges", edges}};
+}
+
+json pose_rows(const Eigen::Isometry3d& X_WL) {
+  json values = json::array();
+  const Eigen::Matrix4d m = X_WL.matrix();
+  for (int row = 0; row < 4; ++row) {
+    for (int col = 0; col < 4; ++col) values.push_back(finite(m(row, col), "pose"));
+  }
+  return values;
+}
+
+json link_poses(const kinematics::KinematicChain& chain, const Eigen::VectorXd& q,
+                kinematics::Workspace& workspace) {
+  if (q.size() != chain.joint_count()) {
+    throw std::logic_error(fmt::format("scene: step has {} joint values, robot has {} joints",
+                                       q.size(), chain.joint_count()));
+  }
+  kinematics::forward_kinematics(chain, q, workspace);
+  json poses = json::array();
+  for (const auto& X_WL : workspace.X_WL) poses.push_back(pose_rows(X_WL));
+  return poses;
+}
+
+}  // namespace
+
+geometry::OffsetShape default_offset_shape(certify::ResolutionMode mode) {
+  return mode == certify::ResolutionMode::kThesis ? geometry::OffsetShape::kCube
+                                                  : geometry::OffsetShape::kRhombicuboctahedron;
+}
+
+nlohmann::json scene_to_json(const certify::VerificationResult& result, const RobotModel& robot,
+                             const Environment& environment, geometry::OffsetShape offset_shape) {
+  // The same cell the verifier builds: the expanded hulls drawn are the ones it tested.
+  const certify::RobotCell cell(robot, environment, {result.tolerance, offset_shape});
+  json links = json::array();
+  for (std::size_t link = 0; link < robot.links.size(); ++link) {
+    links.push_back({{"link", static_cast<int>(link)}, {"hulls", json::array()}});
+  }
+  for (const certify::LinkHull& hull : cell.hulls()) {
+    json entry = polytope_json(hull.raw_L, "vertices_L");
+    entry["hull"] = hull.hull;
+    entry["expanded"] = polytope_json(hull.expanded_L, "vertices_L");
+    links.at(hull.link)["hulls"].push_back(entry);
+  }
+  json obstacles = json::array();
+  for (std::size_t o = 0; o < environment.obstacles.size(); ++o) {
+    json entry = polytope_json(environment.obstacles[o].points, "vertices_W");
+    entry["obstacle"] = static_cast<int>(o);
+    obstacles.push_back(entry);
+  }
+  const kinematics::KinematicChain chain = kinematics::make_chain(robot);
+  kinematics::Workspace workspace(robot);
+  json steps = json::array();
+  for (const auto& step : result.steps) {
+    steps.push_back({{"step", step.index}, {"X_WL", link_poses(chain, step.q, workspace)}});
+  }
+  json start = nullptr;
+  if (result.start) start = {{"step", 0}, {"X_WL", link_poses(chain, result.start->q, workspace)}};
+  return {{"expansion",
+           {{"radius", finite(cell.expansion_radius(), "expansion radius")},
+            {"shape", offset_shape == geometry::OffsetShape::kCube ? "cube" : "rhombicuboctahedron"}}},
+          {"links", links},
+          {"obstacles", obstacles},
+          {"start", start},
+          {"steps", steps}};
+}
+
+}  // namespace grpvss::report

@@ -1,0 +1,185 @@
+#include "grpvss/report/svg_render.hpp"
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <Eigen/Geometry>
+#include <fmt/core.h>
+#include <nlohmann/json.hpp>
+
+#include "grpvss/common/input_error.hpp"
+
+namespace grpvss::report {
+
+namespace {
+
+using nlohmann::json;
+constexpr double kPi = 3.14159265358979323846;
+
+/// Fixed 2-decimal text; "-0.00" becomes "0.00" so that output never depends on signed zeros.
+std::string number(double value) {
+  std::string text = fmt::format("{:.2f}", value);
+  if (text == "-0.00") text = "0.00";
+  return text;
+}
+
+std::string xml_escape(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+Eigen::Vector3d point3(const json& value) {
+  return {value.at(0).get<double>(), value.at(1).get<double>(), value.at(2).get<double>()};
+}
+
+Eigen::Isometry3d pose(const json& rows) {
+  Eigen::Matrix4d m;
+  for (int r = 0; r < 4; ++r) {
+    for (int c = 0; c < 4; ++c) m(r, c) = rows.at(4 * r + c).get<double>();
+  }
+  Eigen::Isometry3d X;
+  X.matrix() = m;
+  return X;
+}
+
+class Projector {
+ public:
+  explicit Projector(const SvgView& view) : view_(view) {
+    const auto rad = [](double deg) { return deg * kPi / 180.0; };
+    R_SW_ = (Eigen::AngleAxisd(rad(view.angle_x_deg), Eigen::Vector3d::UnitX()) *
+             Eigen::AngleAxisd(rad(view.angle_y_deg), Eigen::Vector3d::UnitY()) *
+             Eigen::AngleAxisd(rad(view.angle_z_deg), Eigen::Vector3d::UnitZ()))
+                .toRotationMatrix();
+    shift_W_ = {view.shift[0], view.shift[1], view.shift[2]};
+  }
+  /// Picture coordinates (pixels, y down) of a world point.
+  Eigen::Vector2d operator()(const Eigen::Vector3d& p_W) const {
+    const Eigen::Vector3d p_S = view_.scale * (R_SW_ * (p_W - shift_W_));
+    const double span = view_.window_max - view_.window_min;
+    return {(p_S.x() - view_.window_min) / span * view_.pixels,
+            (view_.window_max - p_S.y()) / span * view_.pixels};
+  }
+
+ private:
+  SvgView view_;
+  Eigen::Matrix3d R_SW_;
+  Eigen::Vector3d shift_W_;
+};
+
+/// All edges of one polytope as one SVG path.
+std::string edge_path(const std::vector<Eigen::Vector3d>& vertices_W, const json& edges,
+                      const Projector& project, const char* css_class) {
+  std::string d;
+  for (const json& edge : edges) {
+    const Eigen::Vector2d a = project(vertices_W.at(edge.at(0).get<std::size_t>()));
+    const Eigen::Vector2d b = project(vertices_W.at(edge.at(1).get<std::size_t>()));
+    d += fmt::format("M{} {}L{} {}", number(a.x()), number(a.y()), number(b.x()), number(b.y()));
+  }
+  return fmt::format("<path class=\"{}\" d=\"{}\"/>\n", css_class, d);
+}
+
+/// A five-pointed star centred on c (outer radius 7 px).
+std::string star(const Eigen::Vector2d& c) {
+  std::string points;
+  for (int k = 0; k < 10; ++k) {
+    const double radius = k % 2 == 0 ? 7.0 : 2.8;
+    const double angle = -kPi / 2 + k * kPi / 5;
+    if (k > 0) points += ' ';
+    points += number(c.x() + radius * std::cos(angle)) + "," + number(c.y() + radius * std::sin(angle));
+  }
+  return fmt::format("<polygon class=\"star\" points=\"{}\"/>\n", points);
+}
+
+std::string render(const json& report, int step_index, const SvgView& view) {
+  const json& scene = report.at("scene");
+  const json& steps = report.at("steps");
+  std::size_t k = 0;
+  while (k < steps.size() && steps.at(k).at("index").get<int>() != step_index) ++k;
+  if (k == steps.size()) {
+    throw std::out_of_range(fmt::format("step {} is not in the report", step_index));
+  }
+  const json& step = steps.at(k);
+  const json& poses = scene.at("steps").at(k).at("X_WL");
+  const Projector project(view);
+  std::string body;
+  for (const json& obstacle : scene.at("obstacles")) {
+    std::vector<Eigen::Vector3d> vertices_W;
+    for (const json& v : obstacle.at("vertices_W")) vertices_W.push_back(point3(v));
+    body += edge_path(vertices_W, obstacle.at("edges"), project, "obstacle");
+  }
+  for (const json& link : scene.at("links")) {
+    const Eigen::Isometry3d X_WL = pose(poses.at(link.at("link").get<std::size_t>()));
+    for (const json& hull : link.at("hulls")) {
+      std::vector<Eigen::Vector3d> vertices_W;
+      for (const json& v : hull.at("vertices_L")) vertices_W.push_back(X_WL * point3(v));
+      body += edge_path(vertices_W, hull.at("edges"), project, "link");
+    }
+  }
+  for (const json& point : step.at("interference_points")) body += star(project(point3(point.at("point"))));
+
+  const int size = view.pixels;
+  const int caption = 54;
+  std::string svg = fmt::format(
+      "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{0}\" height=\"{1}\" "
+      "viewBox=\"0 -{2} {0} {1}\">\n"
+      "<style>.link{{fill:none;stroke:#1d3557;stroke-width:1}}"
+      ".obstacle{{fill:none;stroke:#2f6f2f;stroke-width:1}}"
+      ".star{{fill:#e01010;stroke:#600000;stroke-width:0.5}}"
+      "text{{font-family:monospace;font-size:11px;fill:#111}}</style>\n"
+      "<rect x=\"0\" y=\"-{2}\" width=\"{0}\" height=\"{1}\" fill=\"#ffffff\"/>\n"
+      "<rect x=\"0\" y=\"0\" width=\"{0}\" height=\"{0}\" fill=\"none\" stroke=\"#999\"/>\n",
+      size, size + caption, caption);
+  svg += fmt::format("<text x=\"6\" y=\"-40\">GRPVSS {} - verdict {}</text>\n",
+                     xml_escape(report.at("robot").at("name").get<std::string>()),
+                     xml_escape(report.at("verdict").get<std::string>()));
+  svg += fmt::format(
+      "<text x=\"6\" y=\"-25\">step {} - t = {} s - segment {} - interference points: {}</text>\n",
+      step_index, fmt::format("{:.3f}", step.at("path_time").get<double>()),
+      step.at("segment").get<int>(), step.at("interference_points").size());
+  svg += fmt::format(
+      "<text x=\"6\" y=\"-10\">ANGLEX {} ANGLEY {} ANGLEZ {} SCALE {} SHIFT {},{},{} WINDOW {}..{}</text>\n",
+      number(view.angle_x_deg), number(view.angle_y_deg), number(view.angle_z_deg),
+      number(view.scale), number(view.shift[0]), number(view.shift[1]), number(view.shift[2]),
+      number(view.window_min), number(view.window_max));
+  svg += fmt::format("<svg x=\"0\" y=\"0\" width=\"{0}\" height=\"{0}\" viewBox=\"0 0 {0} {0}\" overflow=\"hidden\">\n", size);
+  svg += body;
+  svg += "</svg>\n</svg>\n";
+  return svg;
+}
+
+}  // namespace
+
+std::string render_step_svg(const nlohmann::json& report, int step, const SvgView& view,
+                            const std::string& report_file) {
+  if (!(view.window_min < view.window_max) || !std::isfinite(view.window_min) ||
+      !std::isfinite(view.window_max)) {
+    throw InputError(report_file, 0, "a window lo,hi with lo < hi",
+                     fmt::format("{},{}", view.window_min, view.window_max));
+  }
+  if (!(view.scale > 0) || !std::isfinite(view.scale)) {
+    throw InputError(report_file, 0, "a scale > 0", fmt::format("{}", view.scale));
+  }
+  if (view.pixels < 16) throw InputError(report_file, 0, "a picture of >= 16 pixels");
+  try {
+    return render(report, step, view);
+  } catch (const std::out_of_range& error) {
+    throw InputError(report_file, 0, "a report step with this index and its scene pose",
+                     error.what());
+  } catch (const nlohmann::json::exception& error) {
+    throw InputError(report_file, 0, "a GRPVSS report with a scene (docs/report-schema.md)",
+                     error.what());
+  }
+}
+
+}  // namespace grpvss::report

@@ -1,0 +1,125 @@
+// Browser test of the HTML animation (ctest: viewer_ibm7545_browser). Opens the page written by
+// `grpvss verify --html` in headless Debian chromium (playwright-core), checks it against the
+// JSON report of the same run, and saves screenshots as test artifacts.
+//
+// usage: node viewer_test.mjs REPORT.html REPORT.json ARTIFACT_DIR
+import { chromium } from 'playwright-core';
+import { mkdtempSync, readFileSync, rmSync, mkdirSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join, resolve } from 'node:path';
+import { pathToFileURL } from 'node:url';
+
+const [htmlFile, reportFile, artifactDir] = process.argv.slice(2);
+if (!htmlFile || !reportFile || !artifactDir) {
+  console.error('usage: node viewer_test.mjs REPORT.html REPORT.json ARTIFACT_DIR');
+  process.exit(2);
+}
+mkdirSync(artifactDir, { recursive: true });
+const report = JSON.parse(readFileSync(reportFile, 'utf8'));
+
+let failures = 0;
+function check(condition, message) {
+  console.log(`${condition ? 'ok  ' : 'FAIL'} ${message}`);
+  if (!condition) failures += 1;
+}
+
+const userDataDir = mkdtempSync(join(tmpdir(), 'grpvss-viewer-chromium-'));
+const context = await chromium.launchPersistentContext(userDataDir, {
+  executablePath: process.env.GRPVSS_CHROMIUM || '/usr/bin/chromium',
+  headless: true,
+  viewport: { width: 1400, height: 860 },
+  args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
+    '--disable-background-networking', '--disable-component-update', '--disable-sync',
+    // WebGL without a GPU: SwiftShader (software rasterizer shipped with chromium).
+    '--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
+});
+try {
+  const page = context.pages()[0] ?? await context.newPage();
+  const errors = [];
+  const remoteRequests = [];
+  page.on('pageerror', (error) => errors.push(String(error)));
+  page.on('console', (message) => { if (message.type() === 'error') errors.push(message.text()); });
+  // The page must work offline: any request that is not the file itself is refused and recorded.
+  await page.route('**/*', (route) => {
+    const url = route.request().url();
+    if (url.startsWith('file:') || url.startsWith('data:') || url.startsWith('blob:')) return route.continue();
+    remoteRequests.push(url);
+    return route.abort();
+  });
+  await page.goto(pathToFileURL(resolve(htmlFile)).href);
+  await page.waitForFunction(() => window.grpvssViewer !== undefined, null, { timeout: 20000 });
+
+  const counts = await page.evaluate(() => window.grpvssViewer.counts);
+  const reportHulls = report.scene.links.reduce((n, link) => n + link.hulls.length, 0);
+  check(counts.linkHulls === 11 && reportHulls === 11, `scene holds the robot's 11 hulls (viewer ${counts.linkHulls}, report ${reportHulls})`);
+  check(counts.obstacles === 2 && report.scene.obstacles.length === 2, `scene holds the 2 obstacles (viewer ${counts.obstacles})`);
+  check(counts.steps === report.steps.length, `viewer has the report's ${report.steps.length} steps`);
+  check(counts.links === report.robot.joint_count + 1, `one group per link 0..N (${counts.links})`);
+
+  let state = await page.evaluate(() => window.grpvssViewer.state());
+  check(state.step === report.steps[0].index, `starts at the first step (${state.step})`);
+  check(state.verdictShown === report.verdict, `verdict shown "${state.verdictShown}" equals the report's "${report.verdict}"`);
+  const digestsShown = await page.locator('#audit-panel').innerText();
+  check(['robot', 'environment', 'path'].every((k) => digestsShown.includes(report.inputs[k].sha256)),
+    'audit panel shows the three input SHA-256 digests');
+  await page.screenshot({ path: join(artifactDir, 'viewer-start.png') });
+
+  // Step to the first step with interference points with the "next ★" button.
+  const firstColliding = report.steps.findIndex((s) => s.interference_points.length > 0);
+  check(firstColliding >= 0, `the IBM 7545 run has a step with interference points (index ${firstColliding})`);
+  if (firstColliding >= 0) {
+    await page.click('#next-interference');
+    state = await page.evaluate(() => window.grpvssViewer.state());
+    const expected = report.steps[firstColliding];
+    check(state.step === expected.index, `"next ★" goes to step ${expected.index} (at ${state.step})`);
+    check(state.starsVisible, 'red stars are visible');
+    check(state.starCount === expected.interference_points.length,
+      `star count ${state.starCount} equals the report's ${expected.interference_points.length}`);
+    const shown = Number(await page.locator('#interference-count').innerText());
+    check(shown === expected.interference_points.length,
+      `interference count shown (${shown}) equals the report's (${expected.interference_points.length})`);
+    // The stars must really be drawn: red pixels appear where none are in a star-free frame.
+    const redPixels = await page.evaluate(() => {
+      const canvas = document.querySelector('#view canvas');
+      const g = canvas.getContext('webgl2') || canvas.getContext('webgl');
+      const pixels = new Uint8Array(canvas.width * canvas.height * 4);
+      g.readPixels(0, 0, canvas.width, canvas.height, g.RGBA, g.UNSIGNED_BYTE, pixels);
+      let red = 0;
+      for (let i = 0; i < pixels.length; i += 4) {
+        if (pixels[i] > 200 && pixels[i + 1] < 60 && pixels[i + 2] < 60) red += 1;
+      }
+      return red;
+    });
+    check(redPixels > 20, `red star pixels drawn in the 3-D view (${redPixels})`);
+    await page.screenshot({ path: join(artifactDir, 'viewer-interference.png') });
+    await page.check('#expanded');
+    state = await page.evaluate(() => window.grpvssViewer.state());
+    check(state.expandedVisible, 'expanded hulls toggle on');
+    await page.screenshot({ path: join(artifactDir, 'viewer-expanded.png') });
+    await page.uncheck('#expanded');
+    await page.selectOption('#display', 'wireframe');
+    await page.screenshot({ path: join(artifactDir, 'viewer-wireframe.png') });
+    await page.selectOption('#display', 'both');
+  }
+
+  // Continuous playback from the first step advances the step.
+  await page.click('#first');
+  await page.selectOption('#speed', '10');
+  await page.click('#play');
+  await page.waitForFunction((first) => window.grpvssViewer.state().step > first,
+    report.steps[0].index, { timeout: 15000 });
+  state = await page.evaluate(() => window.grpvssViewer.state());
+  check(state.step > report.steps[0].index, `playback advanced to step ${state.step}`);
+  await page.click('#play');
+  state = await page.evaluate(() => window.grpvssViewer.state());
+  check(!state.playing, 'pause stops playback');
+  await page.screenshot({ path: join(artifactDir, 'viewer-playback.png') });
+
+  check(remoteRequests.length === 0, `no network requests (${remoteRequests.join(', ') || 'none'})`);
+  check(errors.length === 0, `no page errors (${errors.join(' | ') || 'none'})`);
+} finally {
+  await context.close();
+  rmSync(userDataDir, { recursive: true, force: true });
+}
+console.log(failures === 0 ? 'viewer test passed' : `viewer test: ${failures} failure(s)`);
+process.exit(failures === 0 ? 0 : 1);
