@@ -1,6 +1,11 @@
 #include "grpvss/report/scene_json.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <numeric>
+#include <tuple>
+#include <vector>
 #include <stdexcept>
 
 #include <fmt/core.h>
@@ -22,16 +27,43 @@ double finite(double value, const char* what) {
   return value;
 }
 
-/// Vertices, face loops (CCW from outside) and edges of the exact hull of `points`.
+/// Vertices, face loops (CCW from outside) and edges of the exact hull of `points`, in a
+/// canonical order: the hull's own vertex, face and edge order is not reproducible from run to
+/// run, the report must be. Vertices sorted lexicographically, each face loop rotated to start
+/// at its smallest index (orientation kept), faces and edges sorted.
 json polytope_json(const std::vector<Eigen::Vector3d>& points, const char* vertices_key) {
   const auto polytope = geometry::ConvexPolytope::from_points(points);
-  json vertices = json::array();
-  for (const auto& v : polytope.vertices()) {
-    vertices.push_back({finite(v.x(), "vertex"), finite(v.y(), "vertex"), finite(v.z(), "vertex")});
+  const auto& vertices = polytope.vertices();
+  std::vector<int> order(vertices.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&vertices](int a, int b) {
+    const auto& u = vertices[static_cast<std::size_t>(a)];
+    const auto& v = vertices[static_cast<std::size_t>(b)];
+    return std::tie(u.x(), u.y(), u.z()) < std::tie(v.x(), v.y(), v.z());
+  });
+  std::vector<int> new_index(vertices.size());
+  json vertex_list = json::array();
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    new_index[static_cast<std::size_t>(order[k])] = static_cast<int>(k);
+    const auto& v = vertices[static_cast<std::size_t>(order[k])];
+    vertex_list.push_back({finite(v.x(), "vertex"), finite(v.y(), "vertex"), finite(v.z(), "vertex")});
   }
-  json edges = json::array();
-  for (const auto& edge : polytope.edges()) edges.push_back({edge[0], edge[1]});
-  return {{vertices_key, vertices}, {"faces", polytope.faces()}, {"edges", edges}};
+  std::vector<std::vector<int>> faces;
+  for (const auto& loop : polytope.faces()) {
+    std::vector<int> face;
+    for (int index : loop) face.push_back(new_index[static_cast<std::size_t>(index)]);
+    std::rotate(face.begin(), std::min_element(face.begin(), face.end()), face.end());
+    faces.push_back(face);
+  }
+  std::sort(faces.begin(), faces.end());
+  std::vector<std::array<int, 2>> edges;
+  for (const auto& edge : polytope.edges()) {
+    const int u = new_index[static_cast<std::size_t>(edge[0])];
+    const int v = new_index[static_cast<std::size_t>(edge[1])];
+    edges.push_back({std::min(u, v), std::max(u, v)});
+  }
+  std::sort(edges.begin(), edges.end());
+  return {{vertices_key, vertex_list}, {"faces", faces}, {"edges", edges}};
 }
 
 json pose_rows(const Eigen::Isometry3d& X_WL) {

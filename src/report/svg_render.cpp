@@ -24,6 +24,13 @@ std::string number(double value) {
   return text;
 }
 
+/// Shortest text for a view parameter (at most 6 significant digits), e.g. "-75", "1.5".
+std::string short_number(double value) {
+  std::string text = fmt::format("{:.6g}", value);
+  if (text == "-0") text = "0";
+  return text;
+}
+
 std::string xml_escape(const std::string& text) {
   std::string out;
   for (char c : text) {
@@ -149,9 +156,10 @@ std::string render(const json& report, int step_index, const SvgView& view) {
       step.at("segment").get<int>(), step.at("interference_points").size());
   svg += fmt::format(
       "<text x=\"6\" y=\"-10\">ANGLEX {} ANGLEY {} ANGLEZ {} SCALE {} SHIFT {},{},{} WINDOW {}..{}</text>\n",
-      number(view.angle_x_deg), number(view.angle_y_deg), number(view.angle_z_deg),
-      number(view.scale), number(view.shift[0]), number(view.shift[1]), number(view.shift[2]),
-      number(view.window_min), number(view.window_max));
+      short_number(view.angle_x_deg), short_number(view.angle_y_deg),
+      short_number(view.angle_z_deg), short_number(view.scale), short_number(view.shift[0]),
+      short_number(view.shift[1]), short_number(view.shift[2]), short_number(view.window_min),
+      short_number(view.window_max));
   svg += fmt::format("<svg x=\"0\" y=\"0\" width=\"{0}\" height=\"{0}\" viewBox=\"0 0 {0} {0}\" overflow=\"hidden\">\n", size);
   svg += body;
   svg += "</svg>\n</svg>\n";

@@ -99,11 +99,11 @@ TEST_F(ViewerCli, RenderIsDeterministicAndDrawsTheStepsStars) {
   EXPECT_EQ(static_cast<std::size_t>(std::distance(
                 std::sregex_iterator(svg.begin(), svg.end(), star), std::sregex_iterator())),
             points);
-  EXPECT_NE(svg.find("ANGLEX -75.00 ANGLEY 0.00 ANGLEZ 170.00 SCALE 1.00"), std::string::npos);
+  EXPECT_NE(svg.find("ANGLEX -75 ANGLEY 0 ANGLEZ 170 SCALE 1 SHIFT 0,0,0 WINDOW -50..50"), std::string::npos);
   EXPECT_EQ(run(args + " --svg " + path("a.svg")), 2);  // exists, no --force
   EXPECT_EQ(run("render --report " + path("r.json") + " --step 100000 --svg " + path("c.svg")), 2);
   EXPECT_EQ(run(args + " --svg " + path("d.svg") + " --anglex 10 --window=-20,20 --scale 2"), 0);
-  EXPECT_NE(grpvss::test::read_text_file(path("d.svg")).find("ANGLEX 10.00"), std::string::npos);
+  EXPECT_NE(grpvss::test::read_text_file(path("d.svg")).find("ANGLEX 10 ANGLEY 0 ANGLEZ 170 SCALE 2 SHIFT 0,0,0 WINDOW -20..20"), std::string::npos);
 }
 
 }  // namespace
