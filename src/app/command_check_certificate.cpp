@@ -28,6 +28,7 @@ struct CheckArguments {
   VerifyArguments inputs;
   std::string certificate_file;
   bool json = false;
+  bool quiet = false;
 };
 
 int run_check(const CheckArguments& args) {
@@ -63,7 +64,9 @@ int run_check(const CheckArguments& args) {
       robot, environment, program, motion::make_kinematics_access(robot, ik), certificate, options);
   for (const auto& failure : digest_failures) report.failures.insert(report.failures.begin(), failure);
   report.accepted = report.failures.empty();
-  if (args.json) {
+  if (args.quiet) {
+    // Nothing printed: the exit code tells.
+  } else if (args.json) {
     fmt::print("{}\n", nlohmann::json{{"accepted", report.accepted},
                                       {"claim", report.claim},
                                       {"inequalities_checked", report.inequalities_checked},
@@ -87,6 +90,7 @@ void register_check_certificate_command(CLI::App& app, int& exit_code) {
   add_input_options(*command, args->inputs);
   command->add_option("CERT", args->certificate_file, "Certificate written by verify")->required();
   command->add_flag("--json", args->json, "Print the result as JSON");
+  command->add_flag("--quiet", args->quiet, "Print nothing; the exit code tells the result");
   command->callback([args, &exit_code] { exit_code = run_check(*args); });
 }
 

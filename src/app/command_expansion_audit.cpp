@@ -105,6 +105,7 @@ void register_expansion_audit_command(CLI::App& app, int& exit_code) {
     std::string robot_path;
     std::string tolerance_text;
     bool json = false;
+    bool quiet = false;
   };
   auto options = std::make_shared<Options>();
   command->add_option("--robot", options->robot_path, "Robot file (thesis A.1.1.1 format)")
@@ -113,6 +114,7 @@ void register_expansion_audit_command(CLI::App& app, int& exit_code) {
                       "Tolerance D > 0 (file length units)")
       ->required();
   command->add_flag("--json", options->json, "Print a JSON document (docs/expansion-audit.md)");
+  command->add_flag("--quiet", options->quiet, "Print nothing (the input is still checked)");
   command->callback([&exit_code, options] {
     const std::string& tolerance_text = options->tolerance_text;
     const std::string& robot_path = options->robot_path;
@@ -128,7 +130,9 @@ void register_expansion_audit_command(CLI::App& app, int& exit_code) {
     }
     const RobotModel robot = io::read_robot_file(robot_path);
     const geometry::ExpansionAudit audit = geometry::audit_expansions(robot, tolerance);
-    if (options->json) {
+    if (options->quiet) {
+      // Nothing printed.
+    } else if (options->json) {
       fmt::print("{}\n", to_json(audit, robot_path).dump(2));
     } else {
       print_table(audit, robot_path);

@@ -16,6 +16,7 @@
 #include "grpvss/motion/kinematics_adapter.hpp"
 #include "grpvss/motion/trajectory.hpp"
 #include "grpvss/report/trajectory_report.hpp"
+#include "verify_arguments.hpp"
 
 namespace grpvss::app {
 namespace {
@@ -98,14 +99,14 @@ void register_trajectory_command(CLI::App& app, int& exit_code) {
       ->delimiter(',')
       ->check(CLI::NonNegativeNumber);
   command->add_option("--step", args->step, "Print the joints every DT seconds")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   command->add_option("--cp-speed", args->cp_speed,
                       "Nominal end-effector speed on CP lines (length units per s)")
-      ->check(CLI::PositiveNumber)
+      ->check(positive_number())
       ->capture_default_str();
   command->add_option("--cp-spacing", args->cp_spacing,
                       "Largest path-length spacing of the CP IK samples")
-      ->check(CLI::PositiveNumber)
+      ->check(positive_number())
       ->capture_default_str();
   command->add_flag("--json", args->json, "Print a JSON document instead of text");
   command->callback([args, &exit_code] { exit_code = run_trajectory(*args); });

@@ -1,6 +1,7 @@
 // `grpvss verify`: the simulation loop of thesis Figures 10-11 with the certified (default) or
 // the thesis step rule; writes the thesis output file, the JSON report and the certificate.
-// Exit codes: 0 CLEAR, 1 any other verdict, 2 input error (docs/user-guide.md).
+// Exit codes: 0 CLEAR, 1 any other verdict, 2 input error (docs/user-guide.md). On a terminal
+// a progress bar runs on stderr (never when stderr is piped, never with --quiet).
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -19,6 +20,8 @@
 #include "grpvss/report/json_report.hpp"
 #include "grpvss/report/scene_json.hpp"
 #include "grpvss/report/thesis_output.hpp"
+#include "interactive/verdict_summary.hpp"
+#include "progress_bar.hpp"
 #include "verify_arguments.hpp"
 #include "viewer_html.hpp"
 
@@ -31,24 +34,7 @@ std::string file_label(const std::string& path) {
 }
 
 void print_summary(const certify::VerificationRun& run, const VerifyArguments& args) {
-  const certify::VerificationResult& result = run.result;
-  const bool certified = result.mode == certify::ResolutionMode::kCertified;
-  fmt::print("verdict: {}{}\n", certify::to_string(result.verdict),
-             certified ? "" : " (thesis mode: NOT certified)");
-  fmt::print("mode: {}  tolerance: {}  steps: {}  cycle time: {:.3f} s\n",
-             certify::to_string(result.mode), result.tolerance,
-             result.steps.empty() ? 0 : result.steps.back().index, result.total_cycle_time);
-  if (result.collision_step) fmt::print("first collision at step {}\n", *result.collision_step);
-  for (const certify::PathError& error : result.errors) {
-    fmt::print("error {} (segment {}, step {}): {}\n", error.code, error.segment, error.step,
-               error.message);
-  }
-  for (const certify::LinkClearanceSummary& link : result.link_clearances) {
-    if (link.link == 0) continue;
-    fmt::print("link {}: smallest certified clearance {:.4f} at step {}{}\n", link.link,
-               link.min_clearance, link.step,
-               link.obstacle >= 0 ? fmt::format(" (obstacle {})", link.obstacle) : "");
-  }
+  fmt::print("{}", verdict_summary(run.result));
   if (!args.out.empty()) fmt::print("thesis output file: {}\n", args.out);
   if (!args.json.empty()) fmt::print("JSON report: {}\n", args.json);
   if (!args.certificate.empty()) fmt::print("certificate: {}\n", args.certificate);
@@ -64,8 +50,13 @@ int run_verify(const VerifyArguments& args) {
   certify::VerifyOptions options = make_verify_options(args, robot);
   options.path_label = file_label(args.path_file);
   const auto ik = motion::select_ik(args.ik, robot, args.robot_file);
-  const certify::VerificationRun run = certify::verify(
-      robot, environment, program, motion::make_kinematics_access(robot, ik), options);
+  certify::VerificationRun run;
+  {
+    ProgressBar bar("verifying", !args.quiet && stderr_is_terminal());
+    options.progress = bar.callback();
+    run = certify::verify(robot, environment, program, motion::make_kinematics_access(robot, ik),
+                          options);
+  }
 
   // All outputs are rendered first, then published: a refused name leaves nothing half-done.
   if (!args.certificate.empty() && run.result.mode != certify::ResolutionMode::kCertified) {

@@ -6,10 +6,12 @@
 
 namespace grpvss::app {
 
-/// Exit codes (docs/user-guide.md): 0 clear/ok, 1 collision or within tolerance, 2 input error.
+/// Exit codes (docs/user-guide.md#exit-codes): 0 CLEAR/ok, 1 a finding (any other verdict, a
+/// rejected certificate, a thesis error), 2 input error, 3 internal error.
 constexpr int kExitOk = 0;
 constexpr int kExitFinding = 1;
 constexpr int kExitInputError = 2;
+constexpr int kExitInternalError = 3;
 
 void register_trajectory_command(CLI::App& app, int& exit_code);
 void register_verify_command(CLI::App& app, int& exit_code);
@@ -17,5 +19,6 @@ void register_check_certificate_command(CLI::App& app, int& exit_code);
 void register_expansion_audit_command(CLI::App& app, int& exit_code);
 void register_animate_command(CLI::App& app, int& exit_code);
 void register_render_command(CLI::App& app, int& exit_code);
+void register_interactive_command(CLI::App& app, int& exit_code);
 
 }  // namespace grpvss::app

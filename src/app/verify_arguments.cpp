@@ -1,10 +1,28 @@
 #include "verify_arguments.hpp"
 
+#include <cmath>
 #include <memory>
+#include <string>
 
 #include "grpvss/motion/profile_table.hpp"
 
 namespace grpvss::app {
+
+CLI::Validator positive_number() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        std::size_t used = 0;
+        double value = 0.0;
+        try {
+          value = std::stod(text, &used);
+        } catch (const std::exception&) {
+          used = 0;
+        }
+        if (used == text.size() && std::isfinite(value) && value > 0.0) return {};
+        return "expected a finite number > 0, found " + text;
+      },
+      "NUMBER > 0");
+}
 
 void add_input_options(CLI::App& command, VerifyArguments& args) {
   command.add_option("--robot", args.robot_file, "Robot file (thesis A.1.1.1)")->required();
@@ -23,7 +41,7 @@ void add_verify_options(CLI::App& command, VerifyArguments& args) {
   add_input_options(command, args);
   command.add_option("--tolerance", args.tolerance, "Tolerance Delta (> 0, length units)")
       ->required()
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   command.add_option("--mode", args.mode, "Step rule: certified, or thesis (never certified)")
       ->check(CLI::IsMember({"certified", "thesis"}))
       ->capture_default_str();
@@ -33,7 +51,7 @@ void add_verify_options(CLI::App& command, VerifyArguments& args) {
       ->capture_default_str();
   command.add_option("--cp-speed", args.cp_speed,
                      "Nominal end-effector speed on CP lines (length units per s)")
-      ->check(CLI::PositiveNumber)
+      ->check(positive_number())
       ->capture_default_str();
 }
 

@@ -29,6 +29,10 @@ struct VerifyArguments {
   bool quiet = false;
 };
 
+/// Accepts a finite number > 0; the message names what was found ("a finite number > 0,
+/// found -1"), unlike CLI::PositiveNumber's range text.
+CLI::Validator positive_number();
+
 /// --robot --env --path --tolerance --mode --offset --timing --profile-table --ik --cp-speed
 void add_verify_options(CLI::App& command, VerifyArguments& args);
 void add_input_options(CLI::App& command, VerifyArguments& args);

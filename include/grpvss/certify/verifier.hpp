@@ -10,6 +10,7 @@
 /// - thesis: delta_l = max{min[2D/cos(theta/2), 2D + L], Dmin} at the link-frame origins
 ///   (Eq. 3-3, 4-13..4-16, Figure 16). Reproduces the thesis; never called certified.
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -43,6 +44,9 @@ struct VerifyOptions {
   /// CP singularity: smallest singular value of the position Jacobian, length units per rad.
   double cp_singular_value_threshold = 1e-3;
   std::string path_label = "PATH";  ///< printed in "... INPUT FROM FILE <label>"
+  /// Optional: called with the fraction of the path done (0..1, non-decreasing) after each
+  /// accepted step, e.g. for a progress bar. Never changes the result.
+  std::function<void(double fraction)> progress;
 };
 
 struct VerificationRun {
