@@ -460,6 +460,10 @@ bool PathVerifier::march_segment(const SegmentPath& path, int segment_number) {
                 certified() && refinement_region);
     std::swap(current_, trial_);
     s = s1;
+    if (options_.progress) {
+      options_.progress((segment_number - 1 + s / end) /
+                        static_cast<double>(program_.segments.size()));
+    }
   }
   return true;
 }
