@@ -9,7 +9,8 @@
 
 #include <gmpxx.h>
 
-#include "grpvss/certify/cell_probe.hpp"  // place_points only: the shared placement expression
+#include "grpvss/certify/cell_probe.hpp"
+#include "grpvss/certify/exact_axis_radius.hpp"  // place_points only: the shared placement expression
 #include "grpvss/geometry/convex_polytope.hpp"
 #include "grpvss/geometry/exact_contact.hpp"
 #include "grpvss/geometry/minkowski_offset.hpp"
@@ -35,26 +36,6 @@ struct CheckedHull {
   std::vector<Eigen::Vector3d> expanded_L;
   std::vector<Rational> axis_radius;  ///< [joint-1], exact
 };
-
-Rational exact_axis_radius(const RobotModel& robot, int link, const HullPoints& hull, int joint) {
-  Rational sum = abs(exact(robot.joints[joint - 1].dh.a));
-  for (int m = joint + 1; m <= link; ++m) {
-    const Joint& joint_m = robot.joints[m - 1];
-    Rational reach = abs(exact(joint_m.dh.d));
-    if (joint_m.type == JointType::kPrismatic) {
-      const Rational low = abs(exact(joint_m.dh.d) + exact(joint_m.minimum));
-      const Rational high = abs(exact(joint_m.dh.d) + exact(joint_m.maximum));
-      reach = low > high ? low : high;
-    }
-    sum += abs(exact(joint_m.dh.a)) + reach;
-  }
-  Rational largest = 0;
-  for (const auto& p : hull.points) {
-    const Rational l1 = abs(exact(p.x())) + abs(exact(p.y())) + abs(exact(p.z()));
-    if (l1 > largest) largest = l1;
-  }
-  return sum + largest;
-}
 
 // Exact box separation: some axis has a gap > margin between the boxes of the two sets.
 bool boxes_farther_than(const std::vector<Eigen::Vector3d>& a,

@@ -5,12 +5,9 @@
 #include <limits>
 #include <stdexcept>
 
-#include <gmpxx.h>
 
 namespace grpvss::certify {
 namespace {
-
-using Rational = mpq_class;
 
 // |a| + dmax of the transform A_m, the most it can move a point away from an earlier axis.
 // For a prismatic joint d ranges over dh.d + [min, max]; for a revolute joint d is fixed.
@@ -37,8 +34,6 @@ double round_sum_upward(double computed_sum, int term_count) {
       computed_sum * (1.0 + 2.0 * term_count * std::numeric_limits<double>::epsilon());
   return std::nextafter(inflated, std::numeric_limits<double>::infinity());
 }
-
-Rational exact(double value) { return Rational(value); }
 
 }  // namespace
 
@@ -95,29 +90,6 @@ double HullRadiusTable::link_motion_bound(int link, const Eigen::VectorXd& dq) c
     largest = std::max(largest, hull_motion_bound(link, hull, dq));
   }
   return largest;
-}
-
-bool radius_bound_holds_exactly(const RobotModel& robot, int link, int hull, int joint,
-                                double claimed) {
-  if (joint < 1 || joint > link || link >= static_cast<int>(robot.links.size())) return false;
-  if (hull < 0 || hull >= static_cast<int>(robot.links[link].hulls.size())) return false;
-  Rational sum = abs(exact(robot.joints[joint - 1].dh.a));
-  for (int m = joint + 1; m <= link; ++m) {
-    const Joint& joint_m = robot.joints[m - 1];
-    Rational reach_d = abs(exact(joint_m.dh.d));
-    if (joint_m.type == JointType::kPrismatic) {
-      const Rational low = abs(exact(joint_m.dh.d) + exact(joint_m.minimum));
-      const Rational high = abs(exact(joint_m.dh.d) + exact(joint_m.maximum));
-      reach_d = low > high ? low : high;
-    }
-    sum += abs(exact(joint_m.dh.a)) + reach_d;
-  }
-  Rational largest_l1 = 0;
-  for (const auto& p_L : robot.links[link].hulls[hull].points) {
-    const Rational l1 = abs(exact(p_L.x())) + abs(exact(p_L.y())) + abs(exact(p_L.z()));
-    if (l1 > largest_l1) largest_l1 = l1;
-  }
-  return exact(claimed) >= sum + largest_l1;
 }
 
 }  // namespace grpvss::certify

@@ -1,8 +1,6 @@
 #include "grpvss/certify/verifier.hpp"
 
 #include <algorithm>
-#include <cstdio>
-#include <cstdlib>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -419,11 +417,6 @@ bool PathVerifier::march_segment(const SegmentPath& path, int segment_number) {
     const bool cut = s1 >= end;
     TransitionRecord transition = judge_transition(current_, trial_, cut);
     const double taken = s1 - s;
-    if (std::getenv("GRPVSS_DEBUG_STEPS")) {
-      fprintf(stderr, "seg %d s=%.9g taken=%.3g cert=%d col=%d/%d exp=%d/%d slack=%.3g\n", segment_number, s, taken,
-              (int)transition.certified, (int)current_.any_collision, (int)trial_.any_collision,
-              (int)current_.any_expanded_interference, (int)trial_.any_expanded_interference, transition_slack(transition));
-    }
     if (!certified()) {
       std::fill(transition.governing.begin(), transition.governing.end(),
                 GoverningTerm::kThesisRule);

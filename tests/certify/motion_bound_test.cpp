@@ -1,5 +1,7 @@
 #include "grpvss/certify/motion_bound.hpp"
 
+#include "grpvss/certify/exact_axis_radius.hpp"
+
 #include <cmath>
 #include <random>
 
@@ -61,11 +63,10 @@ TEST(HullRadiusTable, RoundedRadiiPassTheExactCheckAndTighterClaimsFail) {
   for (int link = 1; link <= 4; ++link) {
     for (int joint = 1; joint <= link; ++joint) {
       const double radius = table.radius(link, 0, joint);
-      EXPECT_TRUE(radius_bound_holds_exactly(robot, link, 0, joint, radius));
-      // A claim a few ulps too small must be rejected (the formula's exact value is within
-      // a few ulps of the table entry).
-      const double too_small = radius * (1.0 - 1e-12);
-      EXPECT_FALSE(radius_bound_holds_exactly(robot, link, 0, joint, too_small));
+      const mpq_class exact = exact_axis_radius(robot, link, robot.links[link].hulls[0], joint);
+      EXPECT_GE(mpq_class(radius), exact);
+      // ... and only by a few ulps: a claim 1e-12 smaller is below the exact value.
+      EXPECT_LT(mpq_class(radius * (1.0 - 1e-12)), exact);
     }
   }
 }

@@ -43,9 +43,4 @@ class HullRadiusTable {
   std::vector<std::vector<std::vector<double>>> radius_;
 };
 
-/// The exact-arithmetic reference of HullRadiusTable::radius, used by the certificate
-/// checker: returns true when `claimed` >= R_{jh} computed in rational arithmetic.
-bool radius_bound_holds_exactly(const RobotModel& robot, int link, int hull, int joint,
-                                double claimed);
-
 }  // namespace grpvss::certify

@@ -16,7 +16,7 @@ namespace grpvss::certify {
 
 /// The two labelled resolution modes (issue 4; docs/verification.md).
 enum class ResolutionMode {
-  kCertified,  ///< every point of every hull; two-ball cover with clearance (proofs/step-bound.md)
+  kCertified,  ///< every point of every hull; two-ball cover with clearance (proofs/two-ball-cover.md#corollary-step)
   kThesis,     ///< thesis Eq. 3-3 at link-frame origins; reproduces the thesis, never "certified"
 };
 
