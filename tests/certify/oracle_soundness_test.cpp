@@ -30,7 +30,7 @@
 namespace grpvss::certify {
 namespace {
 
-constexpr int kDefaultCases = 6;
+constexpr int kDefaultCases = 60;
 constexpr int kLongCases = 1000;
 constexpr double kOracleSpacingFraction = 1.0 / 20.0;  // of the tolerance
 
