@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "grpvss/geometry/convex_polytope.hpp"
+#include "grpvss/geometry/directed_rounding.hpp"
 #include "grpvss/kinematics/fk_error_bound.hpp"
 
 namespace grpvss::certify {
@@ -61,7 +62,13 @@ RobotCell::RobotCell(const RobotModel& robot, const Environment& environment,
   // doubled so that every use below may treat it as a strict inequality).
   placement_error_ = 2.0 * kinematics::forward_kinematics_error_bound(chain_, coordinate_bound);
   // proof: proofs/offset-containment.md#rounded-placement
-  expansion_radius_ = options.tolerance + 2.0 * placement_error_;
+  // Rounded up: the checker decides expansion_radius >= Delta + 2 eps exactly (a nearest
+  // rounding can land one ulp below and the certificate is then rejected).
+  {
+    namespace r = geometry::rounding;
+    r::UpwardRoundingScope upward;
+    expansion_radius_ = r::add_up(options.tolerance, r::mul_up(2.0, placement_error_));
+  }
   for (std::size_t i = 0; i < hulls_.size(); ++i) {
     const geometry::ConvexPolytope expanded =
         geometry::minkowski_offset(raw_polytopes[i], expansion_radius_, options.offset_shape);

@@ -1,0 +1,169 @@
+// The thesis's Table 3 verification operations on the IBM 7545 (data/ibm7545/robot.txt) in
+// both step modes, with data/ibm7545/bench-environment.txt (one obstacle crossed by the PTP
+// motion, one away from every motion): docs/performance.md#verification-table-3.
+//
+// - PTP operation: joint-space target from home, 50 deg on joints 1, 2, 4 at 3 deg/s and
+//   4 in. on the prismatic joint 3 at 0.3 in/s.
+// - CP operation: the output sample's 32.57 in. line, from the end of PTP(WCS) to (0,20,8),
+//   Rot(-z, 30 deg), to (-20,-5,2), Rot(-z, 30 deg); the robot's home is set to the line's
+//   start so that the operation is the line alone.
+//
+// Counters: steps (simulation steps of the operation), per_step (time / steps), verdict
+// (the Verdict enum value), errors.
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include <benchmark/benchmark.h>
+
+#include "grpvss/certify/cell_probe.hpp"
+#include "grpvss/certify/robot_cell.hpp"
+#include "grpvss/certify/verifier.hpp"
+#include "grpvss/io/environment_file.hpp"
+#include "grpvss/io/path_file.hpp"
+#include "grpvss/io/robot_file.hpp"
+#include "grpvss/motion/kinematics_adapter.hpp"
+#include "grpvss/motion/trajectory.hpp"
+
+namespace {
+
+using grpvss::certify::ResolutionMode;
+
+const std::string kData = std::string(GRPVSS_SOURCE_DIR) + "/data/ibm7545/";
+constexpr double kTolerance = 0.5;
+
+struct Operation {
+  grpvss::RobotModel robot;
+  grpvss::Environment environment;
+  grpvss::PathProgram program;
+  grpvss::motion::KinematicsAccess kinematics;
+};
+
+grpvss::motion::KinematicsAccess ibm_access(const grpvss::RobotModel& robot) {
+  return grpvss::motion::make_kinematics_access(
+      robot, grpvss::motion::select_ik("auto", robot, "robot.txt"));
+}
+
+const Operation& ptp_operation() {
+  static const Operation operation = [] {
+    Operation op;
+    op.robot = grpvss::io::read_robot_file(kData + "robot.txt");
+    op.environment = grpvss::io::read_environment_file(kData + "bench-environment.txt");
+    op.program = grpvss::io::parse_path_file("1\n1\n50.,3.\n50.,3.\n4.,0.3\n50.,3.\n",
+                                             "bench-ptp.txt", op.robot);
+    op.kinematics = ibm_access(op.robot);
+    return op;
+  }();
+  return operation;
+}
+
+const Operation& cp_operation() {
+  static const Operation operation = [] {
+    Operation op;
+    op.robot = grpvss::io::read_robot_file(kData + "robot.txt");
+    op.environment = grpvss::io::read_environment_file(kData + "bench-environment.txt");
+    // The line starts where the output sample's PTP(WCS) segment ends.
+    const grpvss::PathProgram approach = grpvss::io::parse_path_file(
+        "1\n2\n0.,20.,8.,0.,0.,-1.,30.\n3.\n3.\n0.3\n3.\n", "bench-approach.txt", op.robot);
+    const auto access = ibm_access(op.robot);
+    const auto trajectory =
+        grpvss::motion::Trajectory::plan(op.robot, approach, access, {});
+    if (!trajectory.errors().empty() || trajectory.segments().size() != 1) {
+      throw std::runtime_error("bench: the PTP(WCS) approach failed");
+    }
+    const Eigen::VectorXd start = trajectory.segments().front().q_end;
+    for (int j = 0; j < op.robot.joint_count(); ++j) op.robot.joints[j].home = start[j];
+    op.program = grpvss::io::parse_path_file("1\n3\n-20.,-5.,2.,0.,0.,-1.,30.\n", "bench-cp.txt",
+                                             op.robot);
+    op.kinematics = ibm_access(op.robot);
+    return op;
+  }();
+  return operation;
+}
+
+grpvss::certify::VerificationRun run(const Operation& op, ResolutionMode mode) {
+  grpvss::certify::VerifyOptions options;
+  options.tolerance = kTolerance;
+  options.mode = mode;
+  return grpvss::certify::verify(op.robot, op.environment, op.program, op.kinematics, options);
+}
+
+void report(benchmark::State& state, const grpvss::certify::VerificationRun& last) {
+  const double steps = static_cast<double>(last.result.steps.size());
+  state.counters["steps"] = steps;
+  state.counters["verdict"] = static_cast<double>(static_cast<int>(last.result.verdict));
+  state.counters["errors"] = static_cast<double>(last.result.errors.size());
+  state.counters["per_step"] = benchmark::Counter(
+      steps * static_cast<double>(state.iterations()),
+      benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
+ResolutionMode mode_of(const benchmark::State& state) {
+  return state.range(0) == 0 ? ResolutionMode::kCertified : ResolutionMode::kThesis;
+}
+
+// Arg 0: certified, 1: thesis.
+void BM_VerifyPtpOperation(benchmark::State& state) {
+  const Operation& op = ptp_operation();
+  grpvss::certify::VerificationRun last;
+  for (auto _ : state) {
+    last = run(op, mode_of(state));
+    benchmark::DoNotOptimize(last);
+  }
+  report(state, last);
+}
+BENCHMARK(BM_VerifyPtpOperation)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
+
+void BM_VerifyCpOperation(benchmark::State& state) {
+  const Operation& op = cp_operation();
+  grpvss::certify::VerificationRun last;
+  for (auto _ : state) {
+    last = run(op, mode_of(state));
+    benchmark::DoNotOptimize(last);
+  }
+  report(state, last);
+}
+BENCHMARK(BM_VerifyCpOperation)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
+
+// The per-robot part of every operation: exact hulls, the tolerance offsets of the 11 link
+// hulls (built once per robot and tolerance), obstacle hulls, broadphase, FK error bound.
+// Arg 0: rhombicuboctahedron offsets (certified), 1: cube offsets (thesis).
+void BM_RobotCellSetup(benchmark::State& state) {
+  const Operation& op = ptp_operation();
+  grpvss::certify::CellOptions options;
+  options.tolerance = kTolerance;
+  options.offset_shape = state.range(0) == 0 ? grpvss::geometry::OffsetShape::kRhombicuboctahedron
+                                             : grpvss::geometry::OffsetShape::kCube;
+  for (auto _ : state) {
+    grpvss::certify::RobotCell cell(op.robot, op.environment, options);
+    benchmark::DoNotOptimize(cell);
+  }
+}
+BENCHMARK(BM_RobotCellSetup)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
+
+// The marching part of the certified operations without the setup: the probes of the
+// configurations the certified run accepted (one probe per step; the real run also probes
+// rejected trial steps). Arg 0: PTP operation, 1: CP operation.
+void BM_ProbeOperationSteps(benchmark::State& state) {
+  const Operation& op = state.range(0) == 0 ? ptp_operation() : cp_operation();
+  const grpvss::certify::VerificationRun reference = run(op, ResolutionMode::kCertified);
+  grpvss::certify::CellOptions options;
+  options.tolerance = kTolerance;
+  const grpvss::certify::RobotCell cell(op.robot, op.environment, options);
+  grpvss::certify::CellProbe probe(cell);
+  grpvss::certify::ProbeResult out;
+  for (auto _ : state) {
+    for (const auto& step : reference.result.steps) {
+      probe.probe(step.q, step.expanded_interferes, out);
+      benchmark::DoNotOptimize(out);
+    }
+  }
+  const double steps = static_cast<double>(reference.result.steps.size());
+  state.counters["steps"] = steps;
+  state.counters["per_step"] = benchmark::Counter(
+      steps * static_cast<double>(state.iterations()),
+      benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_ProbeOperationSteps)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
+
+}  // namespace
