@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <stdexcept>
 #include <utility>
 
 #include <Eigen/SVD>
@@ -78,17 +79,22 @@ class SegmentPath {
 
 class PathVerifier {
  public:
-  PathVerifier(const RobotModel& robot, const Environment& environment,
+  PathVerifier(const RobotCell& cell, const Environment& environment,
                const PathProgram& program, const motion::KinematicsAccess& kinematics,
                const VerifyOptions& options)
-      : robot_(robot),
+      : robot_(cell.robot()),
         environment_(environment),
         program_(program),
         kinematics_(kinematics),
         options_(options),
-        cell_(robot, environment, make_cell_options(options)),
+        cell_(cell),
         probe_(cell_),
-        workspace_(robot) {
+        workspace_(cell.robot()) {
+    const CellOptions expected = make_cell_options(options);
+    if (cell.tolerance() != expected.tolerance || cell.offset_shape() != expected.offset_shape) {
+      throw std::invalid_argument("verify: the robot cell was built for other options");
+    }
+    const RobotModel& robot = cell.robot();
     for (const HullPoints& hull : robot.links.back().hulls) {
       for (const auto& p_L : hull.points) end_link_reach_ = std::max(end_link_reach_, p_L.norm());
     }
@@ -97,14 +103,6 @@ class PathVerifier {
   VerificationRun run();
 
  private:
-  static CellOptions make_cell_options(const VerifyOptions& options) {
-    CellOptions cell_options;
-    cell_options.tolerance = options.tolerance;
-    cell_options.offset_shape = options.offset_shape.value_or(
-        options.mode == ResolutionMode::kThesis ? geometry::OffsetShape::kCube
-                                                : geometry::OffsetShape::kRhombicuboctahedron);
-    return cell_options;
-  }
   bool certified() const { return options_.mode == ResolutionMode::kCertified; }
 
   void record_step(const ProbeResult& probe, int segment, double parameter, double path_time,
@@ -130,13 +128,14 @@ class PathVerifier {
   const PathProgram& program_;
   const motion::KinematicsAccess& kinematics_;
   VerifyOptions options_;
-  RobotCell cell_;
+  const RobotCell& cell_;
   CellProbe probe_;
   kinematics::Workspace workspace_;
   ProbeResult current_;
   ProbeResult trial_;
   ProbeResult points_;
-  double end_link_reach_ = 1.0;  ///< max |p_L| over the last link's hulls (at least 1)
+  double end_link_reach_ = 1.0;
+  bool basic_resolution_mode_ = false;  ///< after an uncertified step, until one certifies  ///< max |p_L| over the last link's hulls (at least 1)
   long long probes_ = 0;
   bool any_uncertified_ = false;
   VerificationRun run_;
@@ -372,6 +371,9 @@ double transition_slack(const TransitionRecord& transition) {
 bool PathVerifier::march_segment(const SegmentPath& path, int segment_number) {
   const double end = path.parameter_end();
   const double min_step = std::max(end * options_.min_step_fraction, 1e-300);
+  // Below this a failing certified step stops shrinking and the basic resolution takes over.
+  const double certify_floor = std::max(end * options_.certify_floor_fraction, min_step);
+  basic_resolution_mode_ = false;
   double s = 0.0;
   double step = end;
   while (s < end) {
@@ -381,6 +383,9 @@ bool PathVerifier::march_segment(const SegmentPath& path, int segment_number) {
                     std::to_string(segment_number));
       return false;
     }
+    // Floors are compared with the proposed step, not with s1 - s: rounding can make the
+    // difference a hair larger than the step and a floor never reached.
+    const double proposed = step;
     double s1 = 0.0;
     if (certified()) {
       s1 = std::min(end, s + step);
@@ -395,7 +400,7 @@ bool PathVerifier::march_segment(const SegmentPath& path, int segment_number) {
     }
     if (path.is_cp() && certified()) {
       if (!cp_model_holds(path, s, current_.q, s1, *q1)) {
-        if (s1 - s > min_step) {
+        if (proposed > min_step) {
           step = (s1 - s) / 2.0;
           continue;
         }
@@ -427,28 +432,33 @@ bool PathVerifier::march_segment(const SegmentPath& path, int segment_number) {
       // Accepted: the next proposal grows with the slack this step left.
       step = taken * std::clamp(0.9 * transition_slack(transition), 1.0, 4.0);
     } else {
+      // Nothing to certify next to a collision, and near a first contact the proven steps
+      // shrink geometrically towards the contact time without ever passing it (Zeno). In
+      // both cases, and once the certified step floor is reached, move on at the thesis's
+      // basic resolution (every point at most 2D per step): the report covers the motion, a
+      // step past the contact finds the COLLISION, and a stretch that is neither proven nor
+      // colliding makes the verdict UNDECIDED.
       const bool collision_at_an_end = current_.any_collision || trial_.any_collision;
-      if (collision_at_an_end) {
-        // Nothing to certify next to a collision: move on at the thesis's basic resolution
-        // (every point at most 2D per step) so the report still covers the motion.
-        bool basic_resolution_met = true;
-        for (double bound : transition.hull_motion_bounds) {
-          basic_resolution_met &= bound <= 2.0 * options_.tolerance;
-        }
-        if (!basic_resolution_met && taken > min_step) {
-          step = std::max(min_step, taken * 0.5);
-          continue;
-        }
-        step = taken * 2.0;
-      } else if (taken > min_step) {
-        step = std::max(min_step,
+      const bool basic_mode = collision_at_an_end || basic_resolution_mode_ ||
+                              proposed <= certify_floor;
+      if (!basic_mode) {
+        step = std::max(certify_floor,
                         taken * std::clamp(0.9 * transition_slack(transition), 0.05, 0.9));
         continue;
-      } else {
-        any_uncertified_ = true;  // the step floor was reached: the verdict is UNDECIDED
-        step = taken * 2.0;
       }
+      bool basic_resolution_met = true;
+      for (double bound : transition.hull_motion_bounds) {
+        basic_resolution_met &= bound <= 2.0 * options_.tolerance;
+      }
+      if (!basic_resolution_met && proposed > min_step) {
+        step = std::max(min_step, taken * 0.5);
+        continue;
+      }
+      if (!collision_at_an_end) any_uncertified_ = true;
+      basic_resolution_mode_ = true;
+      step = taken * 2.0;
     }
+    if (transition.certified) basic_resolution_mode_ = false;
     if (trial_.any_expanded_interference) {
       // Only the points are taken: the radii and evidence the transition was judged on stay.
       probe_.probe(*q1, /*with_points=*/true, points_);
@@ -591,11 +601,27 @@ VerificationRun PathVerifier::run() {
 
 }  // namespace
 
+CellOptions make_cell_options(const VerifyOptions& options) {
+  CellOptions cell_options;
+  cell_options.tolerance = options.tolerance;
+  cell_options.offset_shape = options.offset_shape.value_or(
+      options.mode == ResolutionMode::kThesis ? geometry::OffsetShape::kCube
+                                              : geometry::OffsetShape::kRhombicuboctahedron);
+  return cell_options;
+}
+
+VerificationRun verify(const RobotCell& cell, const Environment& environment,
+                       const PathProgram& program, const motion::KinematicsAccess& kinematics,
+                       const VerifyOptions& options) {
+  PathVerifier verifier(cell, environment, program, kinematics, options);
+  return verifier.run();
+}
+
 VerificationRun verify(const RobotModel& robot, const Environment& environment,
                        const PathProgram& program, const motion::KinematicsAccess& kinematics,
                        const VerifyOptions& options) {
-  PathVerifier verifier(robot, environment, program, kinematics, options);
-  return verifier.run();
+  const RobotCell cell(robot, environment, make_cell_options(options));
+  return verify(cell, environment, program, kinematics, options);
 }
 
 }  // namespace grpvss::certify

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "grpvss/certify/certificate.hpp"
+#include "grpvss/certify/robot_cell.hpp"
 #include "grpvss/certify/verification_result.hpp"
 #include "grpvss/geometry/minkowski_offset.hpp"
 #include "grpvss/model/environment.hpp"
@@ -36,6 +37,11 @@ struct VerifyOptions {
   /// Smallest step, as a fraction of the segment's parameter range, before a transition is
   /// accepted uncertified (the verdict then cannot be CLEAR).
   double min_step_fraction = 1e-9;
+  /// Smallest step, as a fraction of the segment's parameter range, that the certified rule
+  /// keeps shrinking towards; below it the thesis's basic resolution (2 Delta per step)
+  /// takes over until a step certifies again (near a first contact the proven steps would
+  /// otherwise converge on the contact time without passing it).
+  double certify_floor_fraction = 1e-6;
   /// Hard cap on evaluated configurations for the whole path (bounded time and memory).
   long long max_probes = 2'000'000;
   /// CP model: largest allowed deviation of the joint-linear midpoint from the commanded
@@ -53,6 +59,16 @@ struct VerificationRun {
   VerificationResult result;
   Certificate certificate;  ///< empty segments in thesis mode
 };
+
+/// The cell options a verification with `options` needs (tolerance, offset shape).
+CellOptions make_cell_options(const VerifyOptions& options);
+
+/// \brief Runs the verification on a prebuilt cell (the offsets are built once per robot,
+/// environment and tolerance; build the cell with make_cell_options(options)).
+/// \throws std::invalid_argument if the cell was built for other options.
+VerificationRun verify(const RobotCell& cell, const Environment& environment,
+                       const PathProgram& program, const motion::KinematicsAccess& kinematics,
+                       const VerifyOptions& options);
 
 /// \brief Runs the verification. Bad inputs were rejected by the readers; everything found
 /// about the path (thesis errors, collisions) is in the result.
