@@ -180,6 +180,10 @@ std::vector<std::string> thesis_running_sample(const std::string& dir) {
 TEST(InteractiveSession, FollowsTheThesisRunningSample) {
   const std::string dir = test::make_temporary_directory("interactive-sample");
   const Transcript t = run_session(thesis_running_sample(dir), dir);
+  // The picture shows the first colliding step of OUT1 (the report names it).
+  const nlohmann::json out1 = nlohmann::json::parse(test::read_text_file(dir + "/OUT1.json"));
+  ASSERT_TRUE(out1["collision_step"].is_number_integer());
+  const int first_collision = out1["collision_step"].get<int>();
   EXPECT_EQ(t.end, SessionEnd::kExitChosen) << t.out;
   EXPECT_EQ(exit_code(t.end), 0);
   EXPECT_EQ(t.motions, 4) << t.out;
@@ -200,7 +204,8 @@ TEST(InteractiveSession, FollowsTheThesisRunningSample) {
        "MAKE SURE THE FILE YOU SPECIFIED DOES NOT EXIST\n", "PROCESSING\n", "verdict: ",
        "THE RESULTS ARE STORED IN " + dir + "/OUT1\n",
        "WHAT TYPE OF MOTION IMAGE DO YOU LIKE?\n",
-       "THE PICTURE OF STEP 42 IN THIS VIEW IS IN " + dir + "/OUT1.svg\n",
+       "THE PICTURE OF STEP " + std::to_string(first_collision) + " IN THIS VIEW IS IN " + dir +
+           "/OUT1.svg\n",
        "THE REPORT OF THIS PATH (WITH THE SCENE) IS IN " + dir + "/OUT1.json\n",
        "ENTER ONE OF THE FOLLOWING OPTION NUMBERS\n1. SIMULATE ANOTHER ROBOT\n"
        "2. CHANGE THE ENVIRONMENT\n3. CHANGE THE TOLERANCE VALUE\n4. PERFORM ANOTHER MOTION\n"
@@ -278,7 +283,6 @@ TEST(InteractiveSession, FollowsTheThesisRunningSample) {
                                       "OUT2.path.txt", "OUT2.svg", "grpvss-motion-2.json",
                                       "grpvss-motion-2.svg", "grpvss-motion-4.json"}));
   // The picture is drawn in the view typed at the start (ANGLEX/Y/Z, SCALE, SHIFT).
-  const nlohmann::json out1 = nlohmann::json::parse(test::read_text_file(dir + "/OUT1.json"));
   ASSERT_TRUE(out1.contains("scene"));
   report::SvgView typed_view;
   typed_view.angle_x_deg = -75.0;
@@ -287,9 +291,9 @@ TEST(InteractiveSession, FollowsTheThesisRunningSample) {
   typed_view.scale = 1.5;
   typed_view.shift = {-20.0, -10.0, 0.0};
   EXPECT_EQ(test::read_text_file(dir + "/OUT1.svg"),
-            report::render_step_svg(out1, 42, typed_view, "OUT1.json"));
+            report::render_step_svg(out1, first_collision, typed_view, "OUT1.json"));
   EXPECT_NE(test::read_text_file(dir + "/OUT1.svg"),
-            report::render_step_svg(out1, 42, report::SvgView{}, "OUT1.json"));
+            report::render_step_svg(out1, first_collision, report::SvgView{}, "OUT1.json"));
 }
 
 // A short complete session: robot, trapezoids, environment, tolerance, default view, one
