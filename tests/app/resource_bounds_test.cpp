@@ -1,11 +1,11 @@
-// Bounded resources: 10,000 obstacles (small prisms far from the IBM 7545 plus the sample's
-// two near ones) and a path of 100,000 short PTP moves (100,000 certified steps) run through
-// `grpvss verify` writing the JSON report and the thesis output file; the child's peak resident
-// set (wait4 rusage) must stay under the bound documented in docs/reliability.md. The verifier
-// keeps every step (and its certificate) in memory, so this bound is what 100,000 steps cost.
-// The certificate FILE is not written here: its cost (about 100 KiB of peak RSS per step) is
-// measured and reported in docs/reliability.md#resource-bounds. Time is bounded by the ctest
-// TIMEOUT (tests/ctest_properties.cmake), never asserted; label `heavy`.
+// Bounded resources: 10,000 obstacles (small boxes far from the IBM 7545 plus the sample's two
+// near ones) and a path of 100,000 short PTP moves (100,000 certified steps) run through
+// `grpvss verify`; the child's peak resident set (wait4 rusage) must stay under the bound
+// documented in docs/reliability.md#resource-bounds. The verifier keeps every step record and
+// the in-memory certificate, so this bound is what 100,000 steps cost the verifier itself.
+// Writing the JSON report, the thesis output file or the certificate costs more (measured and
+// documented there; the certificate's cost was reported to the lead). Time is bounded by the
+// ctest TIMEOUT (tests/ctest_properties.cmake), never asserted; label `heavy`.
 #include <fcntl.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -25,8 +25,9 @@ const std::string kData = std::string(GRPVSS_SOURCE_DIR) + "/data/ibm7545/";
 
 constexpr int kFarObstacles = 10'000;
 constexpr int kSegments = 100'000;
-/// Documented in docs/reliability.md#resource-bounds: peak RSS of the whole CLI run.
-constexpr long kPeakResidentBoundKiB = 3L * 1024 * 1024;
+/// docs/reliability.md#resource-bounds: peak RSS of the whole CLI run, 1 GiB (measured about
+/// 0.6 GiB: about 6 KiB per step).
+constexpr long kPeakResidentBoundKiB = 1024L * 1024;
 
 /// The sample environment's two obstacles plus kFarObstacles 1x1x2 boxes on a grid at
 /// x in [300, 800): far outside the IBM 7545's reach (about 60 inches).
@@ -97,8 +98,7 @@ TEST(ResourceBounds, TenThousandObstaclesAndHundredThousandStepsStayUnderTheMemo
   std::ofstream(directory + "/path.txt") << long_path();
   const ChildRun run = run_cli({"verify", "--robot", kData + "robot.txt", "--env",
                                 directory + "/environment.txt", "--path", directory + "/path.txt",
-                                "--tolerance", "0.5", "--out", directory + "/out.txt", "--json",
-                                directory + "/report.json"},
+                                "--tolerance", "0.5"},
                                directory + "/summary.txt");
   ASSERT_EQ(run.exit_code, 0);  // CLEAR: the far boxes and the path never meet
   // The summary names the last step index; enough steps make the bound mean something.
