@@ -1,5 +1,6 @@
-// Fuzz target: certificate documents (docs/certificate.md). A JSON syntax error is reported by
-// nlohmann::json::parse (the CLI turns it into InputError); certificate_from_json must answer
+// Fuzz target: certificate documents (docs/certificate.md). A JSON syntax error or a number
+// beyond double range is reported by nlohmann::json::parse as json::parse_error or
+// json::out_of_range (the CLI turns both into InputError); certificate_from_json must answer
 // every well-formed JSON document with a Certificate or an InputError, nothing else.
 #include <nlohmann/json.hpp>
 
@@ -11,8 +12,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   nlohmann::json document;
   try {
     document = nlohmann::json::parse(grpvss::fuzz::as_text(data, size));
-  } catch (const nlohmann::json::parse_error&) {
-    return 0;
+  } catch (const nlohmann::json::exception&) {
+    return 0;  // parse_error, or out_of_range (406) for a number beyond double: the CLI's InputError
   }
   try {
     const grpvss::certify::Certificate certificate =

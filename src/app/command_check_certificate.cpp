@@ -39,7 +39,7 @@ int run_check(const CheckArguments& args) {
   nlohmann::json document;
   try {
     document = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& error) {
+  } catch (const nlohmann::json::exception& error) {  // parse_error, or out_of_range for 1e9999
     throw InputError(args.certificate_file, 0, "a JSON document", error.what());
   }
   const certify::Certificate certificate =

@@ -160,4 +160,15 @@ TEST_F(AbsurdInput, EndlesslyNestedCertificateIsRefused) {
   expect_input_error(run, certificate + ":0: expected a JSON document");
 }
 
+TEST_F(AbsurdInput, CertificateNumberBeyondDoubleRangeIsAnInputError) {
+  // Found by fuzzing: json::parse throws out_of_range (not parse_error) for 1e9999, which the
+  // CLI reported as an internal error (exit 3).
+  const std::string certificate =
+      write("certificate.json", "{\"format\": \"grpvss-certificate\", \"tolerance\": 1e9999}");
+  const CliRun run = run_cli("check-certificate --robot " + kData + "robot.txt --env " + kData +
+                             "environment.txt --path " + kData + "path.txt " + certificate);
+  expect_input_error(run, certificate + ":0: expected a JSON document, found "
+                                        "[json.exception.out_of_range.406] number overflow");
+}
+
 }  // namespace
