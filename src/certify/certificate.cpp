@@ -40,8 +40,8 @@ T field(const json& object, const char* key, const std::string& where, const std
   }
   const json& value = object.at(key);
   if constexpr (std::is_same_v<T, int>) {
-    // get<int>() of a float outside int's range is undefined behaviour (found by fuzzing,
-    // docs/reliability.md): only integer literals within int's range are accepted.
+    // get<int>() of a float outside int's range is undefined behaviour (found reviewing for the
+    // certificate fuzz target, docs/reliability.md): only integers within int's range pass.
     const bool in_range =
         value.is_number_unsigned()
             ? value.get<std::uint64_t>() <= static_cast<std::uint64_t>(std::numeric_limits<int>::max())
@@ -148,7 +148,8 @@ json certificate_to_json(const Certificate& certificate) {
 
 Certificate certificate_from_json(const json& document, const std::string& file) {
   // Compared as JSON values, not with value(): a "format" or "version" of another JSON type
-  // made value() throw json::type_error past the InputError contract (found by fuzzing).
+  // made value() throw json::type_error past the InputError contract (found reviewing for the
+  // certificate fuzz target).
   if (!document.is_object() || !document.contains("format") ||
       document.at("format") != json("grpvss-certificate")) {
     throw InputError(file, 0, "a GRPVSS certificate (\"format\": \"grpvss-certificate\")");

@@ -290,7 +290,7 @@ void Checker::check_transition(const StepCertificate& from, const StepCertificat
                                const std::vector<Rational>& radius_to, const std::string& where) {
   const TransitionRecord& claimed = from.to_next;
   // A step with the wrong joint count was already rejected by check_step(); reading its q here
-  // would run past the vector (found by fuzzing, docs/reliability.md).
+  // would run past the vector (found reviewing for the checker fuzz target, docs/reliability.md).
   if (from.q.size() != robot_.joint_count() || to.q.size() != robot_.joint_count()) {
     all_transitions_certified_ = false;
     return;

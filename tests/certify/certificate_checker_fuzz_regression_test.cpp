@@ -1,6 +1,7 @@
-// Regressions found by fuzzing the certificate checker (fuzz/certificate_checker_fuzzer.cpp,
+// Regressions found while fuzzing the certificate checker (fuzz/certificate_checker_fuzzer.cpp,
 // docs/reliability.md): hostile certificates for the IBM 7545 and the one-segment path
-// fuzz/inputs/tiny-path.txt must be rejected with a reason, never read out of bounds.
+// fuzz/inputs/tiny-path.txt must be rejected with a reason, never read out of bounds. Both
+// reproducers were written by hand from a code review and crash the unfixed fuzz target.
 #include <filesystem>
 #include <string>
 

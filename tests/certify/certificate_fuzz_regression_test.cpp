@@ -1,4 +1,5 @@
-// Regressions found by the fuzz targets (fuzz/, docs/reliability.md): every reproducer under
+// Regressions found with the certificate fuzz target (fuzz/, docs/reliability.md): by the
+// fuzzer (a number beyond double range) or while writing it (the rest). Every reproducer under
 // tests/regressions/certificate/ goes through the certificate fuzz target's harness and must
 // end as the contract says (a Certificate or grpvss::InputError, nothing else); the specific
 // defects are pinned by their exact messages.
