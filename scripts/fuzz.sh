@@ -16,7 +16,18 @@ fi
 build_dir="${GRPVSS_FUZZ_BUILD_DIR:-$here/build-fuzz}"
 jobs="${GRPVSS_JOBS:-$(nproc)}"
 
-command -v clang++ >/dev/null || { echo "fuzz: clang++ not found (apt-get install clang libclang-rt-dev)" >&2; exit 1; }
+# clang and its libFuzzer runtime (Debian 12: clang 14), installed like scripts/setup.sh does.
+for package in clang libclang-rt-14-dev; do
+  if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed"; then
+    if [ "$(id -u)" = 0 ]; then
+      apt-get update -q >/dev/null
+      DEBIAN_FRONTEND=noninteractive apt-get install -y -q "$package" >/dev/null
+    else
+      echo "fuzz: missing Debian package $package (run as root to install it)" >&2
+      exit 1
+    fi
+  fi
+done
 cmake -S "$here/fuzz" -B "$build_dir" -DCMAKE_CXX_COMPILER=clang++ >/dev/null
 cmake --build "$build_dir" -j "$jobs"
 
