@@ -24,6 +24,12 @@
 namespace grpvss::app {
 namespace {
 
+// A recorded digest, or "" when the field is missing or not a string (then it cannot match).
+std::string digest_field(const nlohmann::json& inputs, const char* key) {
+  const auto found = inputs.find(key);
+  return found != inputs.end() && found->is_string() ? found->get<std::string>() : std::string();
+}
+
 struct CheckArguments {
   VerifyArguments inputs;
   std::string certificate_file;
@@ -40,7 +46,7 @@ int run_check(const CheckArguments& args) {
   nlohmann::json document;
   try {
     document = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& error) {
+  } catch (const nlohmann::json::exception& error) {  // parse_error, or out_of_range for 1e9999
     throw InputError(args.certificate_file, 0, "a JSON document", error.what());
   }
   const certify::Certificate certificate =
@@ -50,9 +56,9 @@ int run_check(const CheckArguments& args) {
     const report::InputDigests digests =
         report::digest_input_files(in.robot_file, in.environment_file, in.path_file);
     const auto& inputs = document["inputs"];
-    if (inputs.value("robot", "") != digests.robot.sha256) digest_failures.push_back("the robot file differs from the one certified");
-    if (inputs.value("environment", "") != digests.environment.sha256) digest_failures.push_back("the environment file differs from the one certified");
-    if (inputs.value("path", "") != digests.path.sha256) digest_failures.push_back("the path file differs from the one certified");
+    if (digest_field(inputs, "robot") != digests.robot.sha256) digest_failures.push_back("the robot file differs from the one certified");
+    if (digest_field(inputs, "environment") != digests.environment.sha256) digest_failures.push_back("the environment file differs from the one certified");
+    if (digest_field(inputs, "path") != digests.path.sha256) digest_failures.push_back("the path file differs from the one certified");
   }
   certify::CheckOptions options;
   if (!in.profile_table.empty()) {

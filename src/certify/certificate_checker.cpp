@@ -270,6 +270,12 @@ void Checker::check_transition(const StepCertificate& from, const StepCertificat
                                const std::vector<Rational>& radius_from,
                                const std::vector<Rational>& radius_to, const std::string& where) {
   const TransitionRecord& claimed = from.to_next;
+  // A step with the wrong joint count was already rejected by check_step(); reading its q here
+  // would run past the vector (found reviewing for the checker fuzz target, docs/reliability.md).
+  if (from.q.size() != robot_.joint_count() || to.q.size() != robot_.joint_count()) {
+    all_transitions_certified_ = false;
+    return;
+  }
   if (claimed.hull_motion_bounds.size() != hulls_.size() ||
       claimed.hull_allowances.size() != hulls_.size() || claimed.governing.size() != hulls_.size()) {
     fail(where + ": the transition record is incomplete");
@@ -372,7 +378,8 @@ void Checker::check_claim() {
     // The colliding configuration is re-decided exactly from scratch.
     const auto found = steps_by_index_.find(certificate_.collision_step);
     bool proven = false;
-    if (found != steps_by_index_.end()) {
+    // A wrong joint count at that step was already rejected; it proves nothing here.
+    if (found != steps_by_index_.end() && found->second->q.size() == robot_.joint_count()) {
       kinematics::forward_kinematics(chain_, found->second->q, workspace_);
       for (const CheckedHull& hull : hulls_) {
         place_points(workspace_.X_WL[hull.link], hull.raw_L, placed_);

@@ -114,7 +114,8 @@ TEST(NumberReader, RejectsAnOverLongLine) {
   // at_end() looks past the consumed line 1 and meets line 2.
   expect_input_error(
       [&] {
-        NumberReader reader("2\n" + line + "\n", "t.txt");
+        const std::string text = "2\n" + line + "\n";  // the reader keeps a view of it
+        NumberReader reader(text, "t.txt");
         reader.read_number("a value");
         reader.at_end();
       },

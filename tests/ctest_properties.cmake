@@ -1,0 +1,11 @@
+# ctest properties of individual discovered tests, applied after gtest_discover_tests' list
+# (grpvss_tests_TESTS). Time limits live here, never in assertions (docs/reliability.md).
+foreach(test IN LISTS grpvss_tests_TESTS)
+  if(test MATCHES "^AbsurdInput\\.")
+    # Absurd inputs must fail fast: seconds, even under the sanitizers on a loaded machine.
+    set_tests_properties("${test}" PROPERTIES TIMEOUT 30)
+  elseif(test MATCHES "^ResourceBounds\\.")
+    # The 10,000-obstacle, 100,000-step run: Release only (the sanitizer suite skips the label).
+    set_tests_properties("${test}" PROPERTIES TIMEOUT 300 LABELS heavy)
+  endif()
+endforeach()
