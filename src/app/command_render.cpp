@@ -41,8 +41,11 @@ int run_render(RenderArguments args) {
 void register_render_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<RenderArguments>();
   auto* command = app.add_subcommand("render", "SVG wireframe of one step of a JSON report");
-  command->add_option("--report", args->report_file, "JSON report (grpvss verify --json)")
-      ->required();
+  // The report is positional, as for `animate REPORT`; --report stays as an alias.
+  auto* positional = command->add_option("REPORT", args->report_file,
+                                         "JSON report (grpvss verify --json)");
+  auto* named = command->add_option("--report", args->report_file, "Same as REPORT");
+  positional->excludes(named);
   command->add_option("--step", args->step, "Step index (1-based, as in the report)")->required();
   command->add_option("--svg", args->svg, "SVG file to write")->required();
   command->add_option("--anglex", args->view.angle_x_deg, "View angle about x, deg")
@@ -60,7 +63,10 @@ void register_render_command(CLI::App& app, int& exit_code) {
       ->expected(2)
       ->capture_default_str();
   command->add_flag("--force", args->force, "Overwrite an existing output file");
-  command->callback([args, &exit_code] { exit_code = run_render(*args); });
+  command->callback([args, &exit_code] {
+    if (args->report_file.empty()) throw InputError("render", 0, "a report file (REPORT or --report)");
+    exit_code = run_render(*args);
+  });
 }
 
 }  // namespace grpvss::app

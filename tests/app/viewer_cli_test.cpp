@@ -45,6 +45,18 @@ class ViewerCli : public ::testing::Test {
   fs::path dir_;
 };
 
+TEST_F(ViewerCli, PipedVerificationPrintsNoProgressBar) {
+  // stderr is a file here, not a terminal: the progress bar must stay silent.
+  const std::string err = path("stderr.txt");
+  const std::string command = std::string(GRPVSS_CLI) + " verify --robot " + kData +
+                              "robot.txt --env " + kData + "environment.txt --path " + kData +
+                              "path.txt --tolerance 0.5 >/dev/null 2>" + err;
+  const int status = std::system(command.c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 1);  // COLLISION
+  EXPECT_EQ(grpvss::test::read_text_file(err), "");
+}
+
 TEST_F(ViewerCli, VerifyWritesOneSelfContainedPageHoldingTheReport) {
   ASSERT_EQ(verify("--json " + path("r.json") + " --html " + path("r.html")), 1);  // COLLISION
   const std::string html = grpvss::test::read_text_file(path("r.html"));
@@ -102,6 +114,11 @@ TEST_F(ViewerCli, RenderIsDeterministicAndDrawsTheStepsStars) {
   EXPECT_NE(svg.find("ANGLEX -75 ANGLEY 0 ANGLEZ 170 SCALE 1 SHIFT 0,0,0 WINDOW -50..50"), std::string::npos);
   EXPECT_EQ(run(args + " --svg " + path("a.svg")), 2);  // exists, no --force
   EXPECT_EQ(run("render --report " + path("r.json") + " --step 100000 --svg " + path("c.svg")), 2);
+  // The report is positional like animate's; --report is an alias; one of them is required.
+  EXPECT_EQ(run("render " + path("r.json") + " --step 1 --svg " + path("p1.svg")), 0);
+  EXPECT_EQ(run("render --report " + path("r.json") + " --step 1 --svg " + path("p2.svg")), 0);
+  EXPECT_EQ(grpvss::test::read_text_file(path("p1.svg")), grpvss::test::read_text_file(path("p2.svg")));
+  EXPECT_EQ(run("render --step 1 --svg " + path("p3.svg")), 2);
   EXPECT_EQ(run(args + " --svg " + path("d.svg") + " --anglex 10 --window=-20,20 --scale 2"), 0);
   EXPECT_NE(grpvss::test::read_text_file(path("d.svg")).find("ANGLEX 10 ANGLEY 0 ANGLEZ 170 SCALE 2 SHIFT 0,0,0 WINDOW -20..20"), std::string::npos);
 }
