@@ -9,7 +9,7 @@ debian_packages=(
   build-essential cmake pkg-config
   libcgal-dev libgmp-dev libmpfr-dev libeigen3-dev libboost-dev
   libcli11-dev nlohmann-json3-dev libfmt-dev libssl-dev
-  libgtest-dev libgmock-dev libbenchmark-dev
+  libgtest-dev libgmock-dev libbenchmark-dev bsdutils
 )
 missing=()
 for package in "${debian_packages[@]}"; do

@@ -57,6 +57,21 @@ TEST_F(ViewerCli, PipedVerificationPrintsNoProgressBar) {
   EXPECT_EQ(grpvss::test::read_text_file(err), "");
 }
 
+TEST_F(ViewerCli, VerificationOnATerminalDrawsAProgressBarAndErasesIt) {
+  // util-linux `script` gives the command a pseudo-terminal; the typescript records stderr.
+  const std::string typescript = path("typescript");
+  const std::string inner = std::string(GRPVSS_CLI) + " verify --robot " + kData +
+                            "robot.txt --env " + kData + "environment.txt --path " + kData +
+                            "path.txt --tolerance 0.5 >/dev/null";
+  const std::string command = "script -qec '" + inner + "' " + typescript + " >/dev/null 2>&1";
+  const int status = std::system(command.c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 1);  // COLLISION, passed through by script -e
+  const std::string recorded = grpvss::test::read_text_file(typescript);
+  EXPECT_NE(recorded.find("verifying ["), std::string::npos);
+  EXPECT_NE(recorded.find("\r\x1b[K"), std::string::npos);  // erased at the end
+}
+
 TEST_F(ViewerCli, VerifyWritesOneSelfContainedPageHoldingTheReport) {
   ASSERT_EQ(verify("--json " + path("r.json") + " --html " + path("r.html")), 1);  // COLLISION
   const std::string html = grpvss::test::read_text_file(path("r.html"));
