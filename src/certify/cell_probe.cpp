@@ -231,6 +231,9 @@ void CellProbe::probe_hull(int hull_index, bool with_points, ProbeResult& out) {
       out.evidence.push_back(raw);
     }
   }
+  // A hull with no obstacle in reach has an unbounded radius; it is capped so that every
+  // number in the certificate is finite (a smaller radius is always still a valid one).
+  state.radius = std::min(state.radius, kUnboundedRadius);
 }
 
 }  // namespace grpvss::certify

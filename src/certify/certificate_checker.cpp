@@ -254,7 +254,8 @@ std::vector<Rational> Checker::check_step(const StepCertificate& step, const std
         lower_to(Rational(0));
       }
     }
-    if (!radius) radius = delta + exact(std::isfinite(record.broadphase_margin) ? record.broadphase_margin : 0.0);
+    // No obstacle at all: nothing can be hit, any radius up to the probe's cap is vacuously true.
+    if (!radius) radius = exact(kUnboundedRadius);
     ++report_.inequalities_checked;
     if (!(exact(record.radius) <= *radius) || record.radius < 0.0) {
       fail(hull_where + ": the claimed radius exceeds what the evidence proves");

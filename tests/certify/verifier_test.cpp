@@ -210,3 +210,22 @@ TEST_F(ClearCell, CheckerRejectsAStrongerClaim) {
 
 }  // namespace
 }  // namespace grpvss::certify
+
+namespace grpvss::certify {
+namespace {
+
+TEST(Verifier, EmptyEnvironmentIsClearWithFiniteRadiiTheCheckerAccepts) {
+  const Cell cell = make_cell(kSweepingArm, "90.\n1.\n0\n", kTurn120Degrees);
+  const VerificationRun result = run(cell, 0.5, ResolutionMode::kCertified);
+  EXPECT_EQ(result.result.verdict, Verdict::kClear);
+  const nlohmann::json document = certificate_to_json(result.certificate);
+  // Every radius is a finite number (JSON has no infinity): the probe's cap.
+  for (const auto& step : document["segments"][0]["steps"]) {
+    for (const auto& hull : step["hulls"]) ASSERT_TRUE(hull["radius"].is_number());
+  }
+  const CheckReport report = check(cell, certificate_from_json(document, "cert.json"));
+  EXPECT_TRUE(report.accepted) << (report.failures.empty() ? "" : report.failures.front());
+}
+
+}  // namespace
+}  // namespace grpvss::certify

@@ -18,6 +18,10 @@
 
 namespace grpvss::certify {
 
+/// The largest radius the probe reports (obstacle-free surroundings). The checker accepts it
+/// without evidence only when the environment has no obstacle at all.
+constexpr double kUnboundedRadius = 1e9;
+
 /// \brief The proof about one (link hull, obstacle) pair at one configuration.
 struct PairEvidence {
   int hull_index = 0;      ///< into RobotCell::hulls()
