@@ -164,6 +164,10 @@ Certificate certificate_from_json(const json& document, const std::string& file)
   certificate.offset_shape = field<std::string>(document, "offset_shape", top, file);
   certificate.timing = field<std::string>(document, "timing", top, file);
   certificate.cp_speed = field<double>(document, "cp_speed", top, file);
+  // The checker replays the trajectory with it: found by fuzzing (a zero speed threw).
+  if (!(certificate.cp_speed > 0.0) || !std::isfinite(certificate.cp_speed)) {
+    throw InputError(file, 0, "a finite cp_speed > 0");
+  }
   certificate.cp_deviation_fraction = field<double>(document, "cp_deviation_fraction", top, file);
   certificate.placement_error = field<double>(document, "placement_error", top, file);
   certificate.expansion_radius = field<double>(document, "expansion_radius", top, file);

@@ -91,3 +91,20 @@ TEST(CertificateFuzzRegression, IntegerFieldsAcceptExactlyIntRange) {
 }
 
 }  // namespace
+
+namespace grpvss::certify {
+namespace {
+
+TEST(CertificateFuzzRegression, NonPositiveCpSpeedIsAnInputError) {
+  // Found by the certificate_checker fuzzer: cp_speed 0 reached Trajectory::plan.
+  for (const char* speed : {"0", "-1"}) {
+    nlohmann::json document = {{"format", "grpvss-certificate"}, {"version", 1},
+                               {"mode", "certified"}, {"tolerance", 0.5},
+                               {"offset_shape", "cube"}, {"timing", "independent"},
+                               {"cp_speed", nlohmann::json::parse(speed)}};
+    EXPECT_THROW(certificate_from_json(document, "c.json"), InputError) << speed;
+  }
+}
+
+}  // namespace
+}  // namespace grpvss::certify
