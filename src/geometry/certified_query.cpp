@@ -69,9 +69,9 @@ std::vector<bool> marked_vertices(const ConvexPolytope& p, const std::vector<Vec
 /// proposal: certify_separation() proves it or rejects it.
 std::optional<CertifiedSeparation> certify_by_features(const std::vector<Vector3d>& a,
                                                        const std::vector<Vector3d>& b,
+                                                       const ConvexPolytope& pa,
+                                                       const ConvexPolytope& pb,
                                                        const GjkResult& g) {
-  const ConvexPolytope pa = ConvexPolytope::from_points(a);
-  const ConvexPolytope pb = ConvexPolytope::from_points(b);
   const std::vector<bool> near_a = marked_vertices(pa, a, g.simplex_a.data(), g.simplex_size);
   const std::vector<bool> near_b = marked_vertices(pb, b, g.simplex_b.data(), g.simplex_size);
   std::optional<CertifiedSeparation> best;
@@ -107,9 +107,12 @@ CertifiedPairResult from_exact(const std::vector<Vector3d>& a, const std::vector
   CertifiedPairResult result;
   result.decided_by = DecidedBy::kExactFallback;
   result.distance_estimate = g.status == GjkStatus::kSeparated ? g.distance : 0.0;
-  result.contact = classify_exact(a, b);
+  // Exact hulls built once, for the classification and for the feature normals.
+  const ConvexPolytope pa = ConvexPolytope::from_points(a);
+  const ConvexPolytope pb = ConvexPolytope::from_points(b);
+  result.contact = classify_exact(pa, pb);
   if (result.contact == Contact::kSeparated) {
-    if (auto s = certify_by_features(a, b, g)) {
+    if (auto s = certify_by_features(a, b, pa, pb, g)) {
       result.witness = s->witness;
       result.clearance_lower_bound = s->lower_bound;
       return result;
