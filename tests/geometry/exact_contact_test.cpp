@@ -104,6 +104,24 @@ TEST(ClassifyExact, VertexFaceContactAtTinyGaps) {
   }
 }
 
+TEST(ClassifyExact, ThinSolidApexAgainstAFace) {
+  // A tetrahedron 2^-60 high: its apex is the only point above z = 0.
+  const Points sliver{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0.25, 0.25, 0x1p-60}};
+  const struct {
+    double lo;
+    Contact expected;
+  } cases[] = {{0x1p-60, Contact::kTouching},
+               {0x1p-61, Contact::kOverlapping},
+               {0x1p-59, Contact::kSeparated}};
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.lo);
+    const Points b = testing::box({-1, -1, c.lo}, {2, 2, 1});
+    EXPECT_EQ(classify_exact(sliver, b), c.expected);
+    EXPECT_EQ(testing::reference_contact(sliver, b), c.expected);
+    EXPECT_EQ(interference_points(sliver, b).empty(), c.expected == Contact::kSeparated);
+  }
+}
+
 TEST(ClassifyExact, ContainmentEitherWayIsOverlapping) {
   const Points big = testing::box({0, 0, 0}, {4, 4, 4});
   const Points small = testing::box({1, 1, 1}, {2, 2, 2});

@@ -3,10 +3,11 @@
 /// \brief A convex polytope built EXACTLY from a point set (the hull of the points).
 ///
 /// The hull's combinatorics are decided with exact predicates on the input doubles (CGAL
-/// `convex_hull_3`, exact-predicates kernel), so nearly coplanar input (the thesis's robot.txt
-/// link 0 has "faces" with -5.125 / -5.625) never confuses it: such a "face" simply becomes
-/// several exactly planar faces. Vertices are the input doubles, bit for bit; no coordinate is
-/// ever constructed. No CGAL type appears here.
+/// `convex_hull_3`, exact-predicates kernel), so the thesis's hand-made 16-point hulls never
+/// confuse it: points in the middle of an edge or face (robot.txt link 0's -5.125 / -5.625
+/// side points) are dropped, and a point group that is not exactly planar becomes several
+/// exactly planar faces. Vertices are the input doubles, bit for bit; no coordinate is ever
+/// constructed. No CGAL type appears here.
 
 #include <array>
 #include <stdexcept>
@@ -36,9 +37,9 @@ class DegenerateHullError : public std::invalid_argument {
 /// - `edges()` are index pairs {u, v} with u < v; `edge_faces()[e]` = {the face whose loop
 ///   contains u->v, the face whose loop contains v->u}. Each edge borders exactly two faces
 ///   with different planes.
-/// - `face_normals()` / `face_offsets()` are unit outward normals n and offsets c (n.x <= c) in
-///   double, for display and floating-point filtering ONLY: they are rounded. Exact decisions
-///   recompute planes from the vertices.
+/// - `face_normals()` / `face_offsets()` are unit outward normals n and offsets c (n.x <= c
+///   for the face's own vertices, evaluated in double) for display and floating-point
+///   filtering ONLY: they are rounded. Exact decisions recompute planes from the vertices.
 class ConvexPolytope {
  public:
   /// \brief Exact convex hull of \p points.
@@ -58,12 +59,12 @@ class ConvexPolytope {
   const std::vector<std::array<int, 2>>& edge_faces() const { return edge_faces_; }
   /// Unit outward face normals, rounded (display/filtering only).
   const std::vector<Eigen::Vector3d>& face_normals() const { return face_normals_; }
-  /// Face offsets c with n.x <= c, c = max over vertices of n.v in double (display/filtering).
+  /// Face offsets c = max over the face's vertices of n.v in double (display/filtering).
   const std::vector<double>& face_offsets() const { return face_offsets_; }
 
   /// \brief Volume, computed EXACTLY (sum of signed tetrahedra over the exact faces, in
-  /// exact arithmetic) and rounded to the nearest-or-adjacent double once at the end
-  /// (relative error <= 2^-52).
+  /// exact arithmetic), converted to double and divided by 6 at the end (relative error
+  /// below 2^-51: two roundings).
   double volume() const { return volume_; }
 
  private:

@@ -361,24 +361,48 @@ struct PointCollector {
   }
 };
 
-/// Edge/face pairs whose edge might meet the face's plane: an interval evaluation of both
-/// end points' plane values drops the pairs with both certainly on the same strict side.
-std::vector<std::pair<int, int>> plane_crossing_candidates(const Hull& edges_of,
-                                                           const Hull& faces_of) {
+/// Edge/face pairs whose edge might meet the face (closed polygon). Interval arithmetic drops
+/// the pairs whose end points are certainly on the same strict side of the face plane, and
+/// the proper crossings whose crossing point is certainly outside one of the face's edges.
+/// Dropping only what intervals prove keeps the exact pass complete.
+std::vector<std::pair<int, int>> edge_face_candidates(const Hull& edges_of, const Hull& faces_of) {
   std::vector<std::pair<int, int>> out;
   const auto& ev = edges_of.poly.vertices();
+  const auto& fv = faces_of.poly.vertices();
   CGAL::Protect_FPU_rounding<true> guard;
   for (std::size_t f = 0; f < faces_of.poly.faces().size(); ++f) {
+    const auto& loop = faces_of.poly.faces()[f];
     const IV3 n = faces_of.face_normal<IV>(static_cast<int>(f));
-    const IV3 v0 = lift<IV>(faces_of.vertex(static_cast<int>(f), 0));
-    std::vector<Certain> side;
-    for (const auto& v : ev) side.push_back(sign_of(dot(n, minus(lift<IV>(v), v0))));
+    const IV3 v0 = lift<IV>(fv[loop[0]]);
+    std::vector<IV> value;
+    for (const auto& v : ev) value.push_back(dot(n, minus(lift<IV>(v), v0)));
     for (std::size_t e = 0; e < edges_of.poly.edges().size(); ++e) {
-      const Certain s0 = side[edges_of.poly.edges()[e][0]];
-      const Certain s1 = side[edges_of.poly.edges()[e][1]];
-      const bool both_out = s0 == Certain::kPositive && s1 == Certain::kPositive;
-      const bool both_in = s0 == Certain::kNegative && s1 == Certain::kNegative;
-      if (!both_out && !both_in) out.emplace_back(static_cast<int>(e), static_cast<int>(f));
+      const int i0 = edges_of.poly.edges()[e][0];
+      const int i1 = edges_of.poly.edges()[e][1];
+      const Certain s0 = sign_of(value[i0]);
+      const Certain s1 = sign_of(value[i1]);
+      if ((s0 == Certain::kPositive && s1 == Certain::kPositive) ||
+          (s0 == Certain::kNegative && s1 == Certain::kNegative)) {
+        continue;
+      }
+      const bool proper = (s0 == Certain::kPositive && s1 == Certain::kNegative) ||
+                          (s0 == Certain::kNegative && s1 == Certain::kPositive);
+      if (proper) {
+        // Crossing parameter t = s_p / (s_p - s_q) (denominator certainly non-zero).
+        const IV t = value[i0] / (value[i0] - value[i1]);
+        const IV3 p = lift<IV>(ev[i0]);
+        const IV3 d = minus(lift<IV>(ev[i1]), p);
+        bool outside = false;
+        for (std::size_t i = 0; i < loop.size() && !outside; ++i) {
+          const IV3 vi = lift<IV>(fv[loop[i]]);
+          const IV3 wi = minus(lift<IV>(fv[loop[(i + 1) % loop.size()]]), vi);
+          const IV alpha = dot(cross(wi, minus(p, vi)), n);
+          const IV beta = dot(cross(wi, d), n);
+          outside = sign_of(alpha + beta * t) == Certain::kNegative;
+        }
+        if (outside) continue;
+      }
+      out.emplace_back(static_cast<int>(e), static_cast<int>(f));
     }
   }
   return out;
@@ -389,7 +413,7 @@ void edge_face_points(const Hull& edges_of, const Hull& faces_of, InterferenceKi
                       PointCollector& out) {
   const auto& ev = edges_of.poly.vertices();
   const auto& fv = faces_of.poly.vertices();
-  const auto candidates = plane_crossing_candidates(edges_of, faces_of);
+  const auto candidates = edge_face_candidates(edges_of, faces_of);
   int cached_face = -1;
   Rational3 n;
   Rational c;
@@ -448,21 +472,44 @@ void edge_face_points(const Hull& edges_of, const Hull& faces_of, InterferenceKi
 
 /// Vertices of `of` inside closed `in`, exactly (all face planes n.x <= c).
 void vertex_points(const Hull& of, const Hull& in, InterferenceKind kind, PointCollector& out) {
-  std::vector<std::pair<Exact3, Exact>> planes;
-  for (std::size_t f = 0; f < in.poly.faces().size(); ++f) {
-    const Exact3 n = in.face_normal<Exact>(static_cast<int>(f));
-    planes.emplace_back(n, dot(n, lift<Exact>(in.vertex(static_cast<int>(f), 0))));
-  }
-  for (std::size_t v = 0; v < of.poly.vertices().size(); ++v) {
-    const Exact3 x = lift<Exact>(of.poly.vertices()[v]);
-    bool inside = true;
-    for (const auto& [n, c] : planes) {
-      if (dot(n, x) > c) {
-        inside = false;
-        break;
+  const std::size_t faces = in.poly.faces().size();
+  const auto& vs = of.poly.vertices();
+  // Interval pass: 1 certainly outside some face, 0 certainly inside all, -1 undecided.
+  std::vector<int> verdict(vs.size(), 0);
+  {
+    CGAL::Protect_FPU_rounding<true> guard;
+    for (std::size_t f = 0; f < faces; ++f) {
+      const IV3 n = in.face_normal<IV>(static_cast<int>(f));
+      const IV3 v0 = lift<IV>(in.vertex(static_cast<int>(f), 0));
+      for (std::size_t v = 0; v < vs.size(); ++v) {
+        if (verdict[v] == 1) continue;
+        const Certain side = sign_of(dot(n, minus(lift<IV>(vs[v]), v0)));
+        if (side == Certain::kPositive) verdict[v] = 1;
+        else if (side != Certain::kNegative && side != Certain::kZero) verdict[v] = -1;
       }
     }
-    if (inside) out.add(lift<Rational>(of.poly.vertices()[v]), kind, static_cast<int>(v), -1);
+  }
+  std::vector<std::pair<Exact3, Exact>> planes;
+  for (std::size_t v = 0; v < vs.size(); ++v) {
+    if (verdict[v] == 1) continue;
+    if (verdict[v] == -1) {
+      if (planes.empty()) {
+        for (std::size_t f = 0; f < faces; ++f) {
+          const Exact3 n = in.face_normal<Exact>(static_cast<int>(f));
+          planes.emplace_back(n, dot(n, lift<Exact>(in.vertex(static_cast<int>(f), 0))));
+        }
+      }
+      const Exact3 x = lift<Exact>(vs[v]);
+      bool inside = true;
+      for (const auto& [n, c] : planes) {
+        if (dot(n, x) > c) {
+          inside = false;
+          break;
+        }
+      }
+      if (!inside) continue;
+    }
+    out.add(lift<Rational>(vs[v]), kind, static_cast<int>(v), -1);
   }
 }
 
