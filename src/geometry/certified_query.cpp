@@ -204,7 +204,9 @@ CertifiedPairResult certified_pair_query(const std::vector<Vector3d>& a,
   if (g.status == GjkStatus::kSeparated) {
     // First the closest-point direction, then (near contact, where rounding of v hurts) the
     // normal of the final simplex triangle, which is a facet normal of A - B.
-    if (auto s = certify_separation(a, b, -g.closest_vector)) return from_separation(*s, g.distance);
+    if (auto s = certify_separation(a, b, -g.closest_vector)) {
+      return from_separation(*s, g.distance);
+    }
     if (g.simplex_size == 3) {
       const Vector3d w0 = a[g.simplex_a[0]] - b[g.simplex_b[0]];
       const Vector3d w1 = a[g.simplex_a[1]] - b[g.simplex_b[1]];
