@@ -51,7 +51,7 @@ Interval orientation(const IntervalPoint& p, const IntervalPoint& q, const Inter
 /// +1 / -1 if the interval is strictly positive / negative, 0 if it is not conclusive.
 int certain_sign(Interval x) { return x.lo > 0.0 ? 1 : (x.hi < 0.0 ? -1 : 0); }
 
-/// Hull vertices of \p p whose coordinates equal one of the points \p of_input.
+/// Marks the hull vertices of \p p equal to points[indices[k]], k < count.
 std::vector<bool> marked_vertices(const ConvexPolytope& p, const std::vector<Vector3d>& points,
                                   const int* indices, int count) {
   std::vector<bool> marked(p.vertices().size(), false);
