@@ -51,7 +51,7 @@ Interval orientation(const IntervalPoint& p, const IntervalPoint& q, const Inter
 /// +1 / -1 if the interval is strictly positive / negative, 0 if it is not conclusive.
 int certain_sign(Interval x) { return x.lo > 0.0 ? 1 : (x.hi < 0.0 ? -1 : 0); }
 
-/// Hull vertices of \p p whose coordinates equal one of the points \p of_input.
+/// Marks the hull vertices of \p p equal to points[indices[k]], k < count.
 std::vector<bool> marked_vertices(const ConvexPolytope& p, const std::vector<Vector3d>& points,
                                   const int* indices, int count) {
   std::vector<bool> marked(p.vertices().size(), false);
@@ -69,9 +69,9 @@ std::vector<bool> marked_vertices(const ConvexPolytope& p, const std::vector<Vec
 /// proposal: certify_separation() proves it or rejects it.
 std::optional<CertifiedSeparation> certify_by_features(const std::vector<Vector3d>& a,
                                                        const std::vector<Vector3d>& b,
+                                                       const ConvexPolytope& pa,
+                                                       const ConvexPolytope& pb,
                                                        const GjkResult& g) {
-  const ConvexPolytope pa = ConvexPolytope::from_points(a);
-  const ConvexPolytope pb = ConvexPolytope::from_points(b);
   const std::vector<bool> near_a = marked_vertices(pa, a, g.simplex_a.data(), g.simplex_size);
   const std::vector<bool> near_b = marked_vertices(pb, b, g.simplex_b.data(), g.simplex_size);
   std::optional<CertifiedSeparation> best;
@@ -107,9 +107,12 @@ CertifiedPairResult from_exact(const std::vector<Vector3d>& a, const std::vector
   CertifiedPairResult result;
   result.decided_by = DecidedBy::kExactFallback;
   result.distance_estimate = g.status == GjkStatus::kSeparated ? g.distance : 0.0;
-  result.contact = classify_exact(a, b);
+  // Exact hulls built once, for the classification and for the feature normals.
+  const ConvexPolytope pa = ConvexPolytope::from_points(a);
+  const ConvexPolytope pb = ConvexPolytope::from_points(b);
+  result.contact = classify_exact(pa, pb);
   if (result.contact == Contact::kSeparated) {
-    if (auto s = certify_by_features(a, b, g)) {
+    if (auto s = certify_by_features(a, b, pa, pb, g)) {
       result.witness = s->witness;
       result.clearance_lower_bound = s->lower_bound;
       return result;
@@ -201,7 +204,9 @@ CertifiedPairResult certified_pair_query(const std::vector<Vector3d>& a,
   if (g.status == GjkStatus::kSeparated) {
     // First the closest-point direction, then (near contact, where rounding of v hurts) the
     // normal of the final simplex triangle, which is a facet normal of A - B.
-    if (auto s = certify_separation(a, b, -g.closest_vector)) return from_separation(*s, g.distance);
+    if (auto s = certify_separation(a, b, -g.closest_vector)) {
+      return from_separation(*s, g.distance);
+    }
     if (g.simplex_size == 3) {
       const Vector3d w0 = a[g.simplex_a[0]] - b[g.simplex_b[0]];
       const Vector3d w1 = a[g.simplex_a[1]] - b[g.simplex_b[1]];

@@ -149,25 +149,25 @@ void BM_CertifiedPairQueryWarmStart(benchmark::State& state) {
 }
 BENCHMARK(BM_CertifiedPairQueryWarmStart)->Unit(benchmark::kMicrosecond);
 
-void BM_ClassifyExact(benchmark::State& state) {
+void BM_PairClassifyExact(benchmark::State& state) {
   const auto [a, b] = make_pair(static_cast<int>(state.range(0)));
   for (auto _ : state) {
     benchmark::DoNotOptimize(classify_exact(a, b));
   }
   state.SetLabel(to_string(classify_exact(a, b)));
 }
-BENCHMARK(BM_ClassifyExact)
+BENCHMARK(BM_PairClassifyExact)
     ->Arg(kSeparatedPair)->Arg(kTouchingPair)->Arg(kOverlappingPair)
     ->Unit(benchmark::kMicrosecond);
 
-void BM_ExactSeparationWitness(benchmark::State& state) {
+void BM_PairExactSeparationWitness(benchmark::State& state) {
   const auto [a, b] = make_pair(kSeparatedPair);
   for (auto _ : state) {
     benchmark::DoNotOptimize(exact_separation_witness(a, b));
   }
   state.SetLabel("separated, exact fallback witness");
 }
-BENCHMARK(BM_ExactSeparationWitness)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_PairExactSeparationWitness)->Unit(benchmark::kMicrosecond);
 
 void BM_InterferencePoints(benchmark::State& state) {
   const auto [a, b] = make_pair(kOverlappingPair);

@@ -153,6 +153,28 @@ TEST(CertifiedQuery, NearContactAndExactTouchingAgreeWithExact) {
   EXPECT_EQ(micro_gaps_by_filter, 200);  // a 1e-6 gap is far above the filter's resolution
 }
 
+// Real data: the 11 IBM 7545 link hulls (link 0 has nearly coplanar "faces") placed at random
+// poses around the two thesis obstacles.
+TEST(CertifiedQuery, IbmHullsAroundThesisObstaclesAgreeWithExact) {
+  const std::vector<Points> hulls = testing::ibm7545_hulls();
+  ASSERT_EQ(hulls.size(), 13u);
+  std::mt19937_64 rng(7545);
+  std::uniform_real_distribution<double> offset(-8.0, 8.0);
+  int counts[3] = {0, 0, 0};
+  for (int trial = 0; trial < 440; ++trial) {
+    const Points& hull_L = hulls[trial % 11];
+    const Points& obstacle_W = hulls[11 + trial % 2];
+    const Eigen::Matrix3d R_WL = test::random_rotation(rng);
+    const Vector3d target = obstacle_W[0] + Vector3d(offset(rng), offset(rng), offset(rng));
+    Points hull_W;
+    for (const auto& p_L : hull_L) hull_W.push_back(R_WL * (p_L - hull_L[0]) + target);
+    const CertifiedPairResult r = check_against_exact(hull_W, obstacle_W);
+    ++counts[static_cast<int>(r.contact)];
+  }
+  EXPECT_GT(counts[static_cast<int>(Contact::kSeparated)], 50);
+  EXPECT_GT(counts[static_cast<int>(Contact::kOverlapping)], 50);
+}
+
 TEST(CertifiedQuery, FaceContactOfCubesAtTinyGaps) {
   const Points a = test::cube(Vector3d(0, 0, 0), 1.0);
   for (const double g : {1e-6, 1e-9, 1e-12, std::ldexp(1.0, -40), 0.0, -std::ldexp(1.0, -40)}) {

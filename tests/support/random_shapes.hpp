@@ -21,8 +21,8 @@ inline Eigen::Matrix3d random_rotation(std::mt19937_64& rng) {
 
 /// 16 points: an irregular octagonal prism (like the thesis's hulls) of circumradius about
 /// \p radius, rotated at random and centred at \p center.
-inline std::vector<Eigen::Vector3d> random_prism(std::mt19937_64& rng, const Eigen::Vector3d& center,
-                                          double radius) {
+inline std::vector<Eigen::Vector3d> random_prism(std::mt19937_64& rng,
+                                                 const Eigen::Vector3d& center, double radius) {
   std::uniform_real_distribution<double> jitter(0.7, 1.0);
   std::uniform_real_distribution<double> height(0.5, 1.5);
   const Eigen::Matrix3d rotation = random_rotation(rng);
@@ -32,7 +32,8 @@ inline std::vector<Eigen::Vector3d> random_prism(std::mt19937_64& rng, const Eig
     for (int k = 0; k < 8; ++k) {
       const double angle = k * M_PI / 4.0;
       const double r = radius * jitter(rng);
-      const Eigen::Vector3d p_L(r * std::cos(angle), r * std::sin(angle), layer == 0 ? -h / 2 : h / 2);
+      const double z = layer == 0 ? -h / 2 : h / 2;
+      const Eigen::Vector3d p_L(r * std::cos(angle), r * std::sin(angle), z);
       points.push_back(center + rotation * p_L);
     }
   }

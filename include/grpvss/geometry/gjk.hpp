@@ -28,7 +28,7 @@ struct GjkResult {
   Eigen::Vector3d closest_vector = Eigen::Vector3d::Zero();
   Eigen::Vector3d closest_a = Eigen::Vector3d::Zero();  ///< \f$a^*\f$ (estimate)
   Eigen::Vector3d closest_b = Eigen::Vector3d::Zero();  ///< \f$b^*\f$ (estimate)
-  double distance = 0.0;                                ///< \f$\lvert v\rvert\f$, 0 unless separated
+  double distance = 0.0;  ///< \f$\lvert v\rvert\f$, 0 unless separated
   /// Final simplex: vertex k is a[simplex_a[k]] - b[simplex_b[k]], k < simplex_size.
   int simplex_size = 0;
   std::array<int, 4> simplex_a{};
