@@ -188,9 +188,11 @@ void CellProbe::probe_hull(int hull_index, bool with_points, ProbeResult& out) {
     out.any_expanded_interference = true;
     out.evidence.push_back(evidence);
     if (with_points) {
-      // The placed offset is hulled once per hull; the obstacle's hull was built once.
+      // The placed offset is hulled once per hull, from its link-frame template; the
+      // obstacle's hull was built once.
       if (!expanded_polytope_) {
-        expanded_polytope_ = geometry::ConvexPolytope::from_points(placed_expanded_);
+        expanded_polytope_ = geometry::ConvexPolytope::from_points_like(
+            placed_expanded_, cell.expanded_polytope_L(static_cast<std::size_t>(hull_index)));
       }
       for (const auto& point :
            geometry::interference_points(*expanded_polytope_, cell.obstacle_polytopes_W()[o])) {
