@@ -17,9 +17,11 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // A separating slab from two balls that contain the sets: n = c_b - c_a,
 // a0 >= n.c_a + r_a |n|, b0 <= n.c_b - r_b |n|, all with directed rounding.
 // proof: proofs/separation-witness.md#sphere-slab
+// The slab's distance lower bound is formed like certify_separation's, in the same scope:
+// (b0 - a0) rounded down over |n| rounded up (proofs/fast-path.md#certified-separation).
 bool sphere_witness(const Eigen::Vector3d& center_a, double radius_a,
                     const Eigen::Vector3d& center_b, double radius_b,
-                    geometry::SeparationWitness& witness) {
+                    geometry::SeparationWitness& witness, double& lower_bound) {
   namespace r = geometry::rounding;
   const Eigen::Vector3d normal = center_b - center_a;
   if (!(normal.squaredNorm() > 0.0)) return false;
@@ -33,6 +35,7 @@ bool sphere_witness(const Eigen::Vector3d& center_a, double radius_a,
   witness.normal = normal;
   witness.offset_a = offset_a;
   witness.offset_b = offset_b;
+  lower_bound = std::max(0.0, r::div_down(r::sub_down(offset_b, offset_a), norm_up));
   return true;
 }
 
@@ -148,9 +151,9 @@ void CellProbe::probe_hull(int hull_index, bool with_points, ProbeResult& out) {
     evidence.obstacle = o;
     const geometry::CertifiedSphere& sphere = cell.obstacle_spheres_W()[o];
     if (gap_estimate > 0.0 && gap_estimate >= smallest_clearance &&
-        sphere_witness(center_W, radius_W, sphere.center, sphere.radius_upper, evidence.witness)) {
+        sphere_witness(center_W, radius_W, sphere.center, sphere.radius_upper, evidence.witness,
+                       evidence.lower_bound)) {
       evidence.separated = true;
-      evidence.lower_bound = geometry::certified_lower_bound(evidence.witness);
     } else {
       if (!expanded_placed) {
         place_points(X_WL, hull.expanded_L, placed_expanded_);

@@ -4,9 +4,11 @@
 //
 // - PTP operation: joint-space target from home, 50 deg on joints 1, 2, 4 at 3 deg/s and
 //   4 in. on the prismatic joint 3 at 0.3 in/s.
-// - CP operation: the output sample's 32.57 in. line, from the end of PTP(WCS) to (0,20,8),
-//   Rot(-z, 30 deg), to (-20,-5,2), Rot(-z, 30 deg); the robot's home is set to the line's
-//   start so that the operation is the line alone.
+// - CP operation: the output sample's 32.57 in. line from (0,20,8) to (-20,-5,2), without
+//   the sample's extra tool rotation and started with the tool turned Rot(z, 141 deg) (joint 4
+//   near 0): the sample's own start has joint 4 at 171 deg, so the line wraps joint 4 past
+//   its 180 deg limit after 12 steps (error 7), which measured an aborted operation. The
+//   robot's home is set to the line's start so that the operation is the line alone.
 //
 // Counters: steps (simulation steps of the operation), per_step (time / steps), verdict
 // (the Verdict enum value), errors.
@@ -64,7 +66,7 @@ const Operation& cp_operation() {
     op.environment = grpvss::io::read_environment_file(kData + "bench-environment.txt");
     // The line starts where the output sample's PTP(WCS) segment ends.
     const grpvss::PathProgram approach = grpvss::io::parse_path_file(
-        "1\n2\n0.,20.,8.,0.,0.,-1.,30.\n3.\n3.\n0.3\n3.\n", "bench-approach.txt", op.robot);
+        "1\n2\n0.,20.,8.,0.,0.,1.,141.\n3.\n3.\n0.3\n3.\n", "bench-approach.txt", op.robot);
     const auto access = ibm_access(op.robot);
     const auto trajectory =
         grpvss::motion::Trajectory::plan(op.robot, approach, access, {});
@@ -73,7 +75,7 @@ const Operation& cp_operation() {
     }
     const Eigen::VectorXd start = trajectory.segments().front().q_end;
     for (int j = 0; j < op.robot.joint_count(); ++j) op.robot.joints[j].home = start[j];
-    op.program = grpvss::io::parse_path_file("1\n3\n-20.,-5.,2.,0.,0.,-1.,30.\n", "bench-cp.txt",
+    op.program = grpvss::io::parse_path_file("1\n3\n-20.,-5.,2.,0.,0.,1.,0.\n", "bench-cp.txt",
                                              op.robot);
     op.kinematics = ibm_access(op.robot);
     return op;
