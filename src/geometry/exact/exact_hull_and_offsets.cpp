@@ -371,26 +371,56 @@ ConvexPolytope ConvexPolytopeBuilder::finish(const std::vector<Eigen::Vector3d>&
     poly.faces_.push_back(std::move(face));
   }
 
-  // Edges and their two faces.
-  std::map<std::pair<int, int>, int> edge_index;
+  // Edges and their two faces, numbered in order of first appearance along the face loops
+  // (half-edges sorted by undirected key; no map: this runs for every placed hull).
+  struct FaceHalfEdge {
+    int low, high;  // undirected key
+    int face;
+    int sequence;   // position along the loops, for the first-appearance numbering
+    bool forward;   // low -> high on this face's loop
+  };
+  std::vector<FaceHalfEdge> face_half_edges;
   for (std::size_t f = 0; f < poly.faces_.size(); ++f) {
     const auto& loop = poly.faces_[f];
     for (std::size_t i = 0; i < loop.size(); ++i) {
       const int u = loop[i];
       const int v = loop[(i + 1) % loop.size()];
-      const auto key = std::make_pair(std::min(u, v), std::max(u, v));
-      auto [it, inserted] = edge_index.emplace(key, static_cast<int>(poly.edges_.size()));
-      if (inserted) {
-        poly.edges_.push_back({key.first, key.second});
-        poly.edge_faces_.push_back({-1, -1});
-      }
-      int& slot = poly.edge_faces_[it->second][u < v ? 0 : 1];
-      if (slot != -1) throw std::logic_error("hull edge used twice in one direction");
-      slot = static_cast<int>(f);
+      face_half_edges.push_back({std::min(u, v), std::max(u, v), static_cast<int>(f),
+                                 static_cast<int>(face_half_edges.size()), u < v});
     }
   }
-  for (const auto& ef : poly.edge_faces_) {
-    if (ef[0] < 0 || ef[1] < 0) throw std::logic_error("hull edge with a single face");
+  std::sort(face_half_edges.begin(), face_half_edges.end(),
+            [](const FaceHalfEdge& a, const FaceHalfEdge& b) {
+              return std::tie(a.low, a.high, a.sequence) < std::tie(b.low, b.high, b.sequence);
+            });
+  if (face_half_edges.size() % 2 != 0) throw std::logic_error("hull edge with a single face");
+  struct EdgeEntry {
+    int first_sequence;
+    std::array<int, 2> vertices;
+    std::array<int, 2> faces;
+  };
+  std::vector<EdgeEntry> edge_entries;
+  for (std::size_t i = 0; i < face_half_edges.size(); i += 2) {
+    const FaceHalfEdge& a = face_half_edges[i];
+    const FaceHalfEdge& b = face_half_edges[i + 1];
+    if (a.low != b.low || a.high != b.high) throw std::logic_error("hull edge with a single face");
+    if (a.forward == b.forward) throw std::logic_error("hull edge used twice in one direction");
+    if (i + 2 < face_half_edges.size() && face_half_edges[i + 2].low == a.low &&
+        face_half_edges[i + 2].high == a.high) {
+      throw std::logic_error("hull edge used twice in one direction");
+    }
+    const FaceHalfEdge& forward = a.forward ? a : b;
+    const FaceHalfEdge& backward = a.forward ? b : a;
+    edge_entries.push_back({std::min(a.sequence, b.sequence), {a.low, a.high},
+                            {forward.face, backward.face}});
+  }
+  std::sort(edge_entries.begin(), edge_entries.end(),
+            [](const EdgeEntry& a, const EdgeEntry& b) { return a.first_sequence < b.first_sequence; });
+  poly.edges_.reserve(edge_entries.size());
+  poly.edge_faces_.reserve(edge_entries.size());
+  for (const EdgeEntry& e : edge_entries) {
+    poly.edges_.push_back(e.vertices);
+    poly.edge_faces_.push_back(e.faces);
   }
 
   // The template path's callers (placed hulls in the verifier) never read the display
