@@ -259,99 +259,110 @@ ConvexPolytope ConvexPolytopeBuilder::finish(const std::vector<Eigen::Vector3d>&
     return input[static_cast<std::size_t>(hull_to_input[corner])];
   };
 
-  // Directed edge u->v of triangle t at slot k (edge from corner k to corner k+1); the
-  // opposite half-edge is found by binary search in the sorted list.
-  struct HalfEdge {
-    std::size_t u, v;
-    int triangle;
-    int corner;
-    bool operator<(const HalfEdge& o) const { return u < o.u || (u == o.u && v < o.v); }
-  };
-  std::vector<HalfEdge> half_edges;
-  half_edges.reserve(3 * triangles.size());
-  for (std::size_t t = 0; t < triangles.size(); ++t) {
-    for (int k = 0; k < 3; ++k) {
-      half_edges.push_back({triangles[t][k], triangles[t][(k + 1) % 3], static_cast<int>(t), k});
-    }
-  }
-  std::sort(half_edges.begin(), half_edges.end());
-  const auto find_half_edge = [&half_edges](std::size_t u, std::size_t v) -> const HalfEdge& {
-    const HalfEdge probe{u, v, -1, -1};
-    const auto it = std::lower_bound(half_edges.begin(), half_edges.end(), probe);
-    if (it == half_edges.end() || it->u != u || it->v != v) {
-      throw std::logic_error("open convex hull mesh");
-    }
-    return *it;
-  };
-  // twin[3 t + k]: triangle of the opposite half-edge of (t, k).
-  std::vector<int> twin_triangle(3 * triangles.size(), -1);
-  for (const HalfEdge& h : half_edges) {
-    twin_triangle[3 * h.triangle + h.corner] = find_half_edge(h.v, h.u).triangle;
-  }
-
-  // Merge adjacent triangles that are exactly coplanar.
-  UnionFind groups(triangles.size());
-  for (std::size_t t = 0; t < triangles.size(); ++t) {
-    for (int k = 0; k < 3; ++k) {
-      const int o = twin_triangle[3 * t + k];
-      if (o < static_cast<int>(t)) continue;  // each edge once
-      const auto& tri = triangles[t];
-      const auto& other = triangles[o];
-      // The corner of `other` not on the shared edge.
-      std::size_t apex = other[0];
-      for (std::size_t c : other) {
-        if (c != tri[k] && c != tri[(k + 1) % 3]) apex = c;
-      }
-      const int side = edge_signs != nullptr
-                           ? (*edge_signs)[3 * t + k]
-                           : orientation_sign(corner_point(tri[0]), corner_point(tri[1]),
-                                              corner_point(tri[2]), corner_point(apex));
-      if (side == 0) {
-        groups.unite(t, static_cast<std::size_t>(o));
-      }
-    }
-  }
-
-  // Walk each group's boundary (a single CCW loop: a merged face is a convex polygon).
+  // Faces: merged groups of exactly coplanar adjacent triangles. A template hull whose edges
+  // are all strictly convex (every sign < 0) has only triangles: each is its own face.
   std::vector<std::vector<int>> loops_input;  // input indices
-  std::vector<char> visited(3 * triangles.size(), 0);
-  const auto is_boundary = [&](std::size_t t, int k) {
-    return groups.find(t) != groups.find(static_cast<std::size_t>(twin_triangle[3 * t + k]));
-  };
-  for (std::size_t t0 = 0; t0 < triangles.size(); ++t0) {
-    for (int k0 = 0; k0 < 3; ++k0) {
-      if (visited[3 * t0 + k0] || !is_boundary(t0, k0)) continue;
-      const std::size_t group = groups.find(t0);
-      std::vector<int> loop;
-      std::size_t t = t0;
-      int k = k0;
-      do {
-        if (visited[3 * t + k]) throw std::logic_error("merged hull face is not a simple polygon");
-        visited[3 * t + k] = 1;
-        loop.push_back(hull_to_input[triangles[t][k]]);
-        // Next boundary half-edge: leave the target vertex, rotating through the group.
-        int nk = (k + 1) % 3;
-        while (!is_boundary(t, nk)) {
-          const std::size_t u = triangles[t][nk];
-          const std::size_t v = triangles[t][(nk + 1) % 3];
-          const HalfEdge& opposite = find_half_edge(v, u);
-          t = static_cast<std::size_t>(opposite.triangle);
-          nk = (opposite.corner + 1) % 3;
-          if (groups.find(t) != group) throw std::logic_error("merged hull face walk left group");
-        }
-        k = nk;
-      } while (!(t == t0 && k == k0));
-      loops_input.push_back(std::move(loop));
+  const bool only_triangles =
+      edge_signs != nullptr &&
+      std::none_of(edge_signs->begin(), edge_signs->end(), [](signed char s) { return s == 0; });
+  if (only_triangles) {
+    for (const Triangle& t : triangles) {
+      loops_input.push_back({hull_to_input[t[0]], hull_to_input[t[1]], hull_to_input[t[2]]});
     }
-  }
-  for (std::size_t t = 0; t < triangles.size(); ++t) {
-    for (int k = 0; k < 3; ++k) {
-      if (!visited[3 * t + k] && is_boundary(t, k)) {
-        throw std::logic_error("merged hull face has more than one boundary loop");
+  } else {
+    // Directed edge u->v of triangle t at slot k (edge from corner k to corner k+1); the
+    // opposite half-edge is found by binary search in the sorted list.
+    struct HalfEdge {
+      std::size_t u, v;
+      int triangle;
+      int corner;
+      bool operator<(const HalfEdge& o) const { return u < o.u || (u == o.u && v < o.v); }
+    };
+    std::vector<HalfEdge> half_edges;
+    half_edges.reserve(3 * triangles.size());
+    for (std::size_t t = 0; t < triangles.size(); ++t) {
+      for (int k = 0; k < 3; ++k) {
+        half_edges.push_back({triangles[t][k], triangles[t][(k + 1) % 3], static_cast<int>(t), k});
       }
     }
+    std::sort(half_edges.begin(), half_edges.end());
+    const auto find_half_edge = [&half_edges](std::size_t u, std::size_t v) -> const HalfEdge& {
+      const HalfEdge probe{u, v, -1, -1};
+      const auto it = std::lower_bound(half_edges.begin(), half_edges.end(), probe);
+      if (it == half_edges.end() || it->u != u || it->v != v) {
+        throw std::logic_error("open convex hull mesh");
+      }
+      return *it;
+    };
+    // twin[3 t + k]: triangle of the opposite half-edge of (t, k).
+    std::vector<int> twin_triangle(3 * triangles.size(), -1);
+    for (const HalfEdge& h : half_edges) {
+      twin_triangle[3 * h.triangle + h.corner] = find_half_edge(h.v, h.u).triangle;
+    }
+
+    // Merge adjacent triangles that are exactly coplanar.
+    UnionFind groups(triangles.size());
+    for (std::size_t t = 0; t < triangles.size(); ++t) {
+      for (int k = 0; k < 3; ++k) {
+        const int o = twin_triangle[3 * t + k];
+        if (o < static_cast<int>(t)) continue;  // each edge once
+        const auto& tri = triangles[t];
+        const auto& other = triangles[o];
+        // The corner of `other` not on the shared edge.
+        std::size_t apex = other[0];
+        for (std::size_t c : other) {
+          if (c != tri[k] && c != tri[(k + 1) % 3]) apex = c;
+        }
+        const int side = edge_signs != nullptr
+                             ? (*edge_signs)[3 * t + k]
+                             : orientation_sign(corner_point(tri[0]), corner_point(tri[1]),
+                                                corner_point(tri[2]), corner_point(apex));
+        if (side == 0) {
+          groups.unite(t, static_cast<std::size_t>(o));
+        }
+      }
+    }
+
+    // Walk each group's boundary (a single CCW loop: a merged face is a convex polygon).
+    std::vector<char> visited(3 * triangles.size(), 0);
+    const auto is_boundary = [&](std::size_t t, int k) {
+      return groups.find(t) != groups.find(static_cast<std::size_t>(twin_triangle[3 * t + k]));
+    };
+    for (std::size_t t0 = 0; t0 < triangles.size(); ++t0) {
+      for (int k0 = 0; k0 < 3; ++k0) {
+        if (visited[3 * t0 + k0] || !is_boundary(t0, k0)) continue;
+        const std::size_t group = groups.find(t0);
+        std::vector<int> loop;
+        std::size_t t = t0;
+        int k = k0;
+        do {
+          if (visited[3 * t + k]) throw std::logic_error("merged hull face is not a simple polygon");
+          visited[3 * t + k] = 1;
+          loop.push_back(hull_to_input[triangles[t][k]]);
+          // Next boundary half-edge: leave the target vertex, rotating through the group.
+          int nk = (k + 1) % 3;
+          while (!is_boundary(t, nk)) {
+            const std::size_t u = triangles[t][nk];
+            const std::size_t v = triangles[t][(nk + 1) % 3];
+            const HalfEdge& opposite = find_half_edge(v, u);
+            t = static_cast<std::size_t>(opposite.triangle);
+            nk = (opposite.corner + 1) % 3;
+            if (groups.find(t) != group) throw std::logic_error("merged hull face walk left group");
+          }
+          k = nk;
+        } while (!(t == t0 && k == k0));
+        loops_input.push_back(std::move(loop));
+      }
+    }
+    for (std::size_t t = 0; t < triangles.size(); ++t) {
+      for (int k = 0; k < 3; ++k) {
+        if (!visited[3 * t + k] && is_boundary(t, k)) {
+          throw std::logic_error("merged hull face has more than one boundary loop");
+        }
+      }
+    }
+    for (auto& loop : loops_input) drop_collinear(loop, input);
   }
-  for (auto& loop : loops_input) drop_collinear(loop, input);
 
   // Vertices: referenced input points, ordered by input index (deterministic).
   std::vector<int> used;
