@@ -77,6 +77,53 @@ Eigen::VectorXd vector_field(const json& object, const char* key, const std::str
 
 }  // namespace
 
+json certificate_step_to_json(const StepCertificate& step) {
+  json hulls = json::array();
+  for (const HullRecord& hull : step.hulls) {
+    json evidence = json::array();
+    for (const EvidenceRecord& record : hull.evidence) {
+      json item = {{"obstacle", record.obstacle},
+                   {"expanded", record.expanded},
+                   {"separated", record.separated}};
+      if (record.separated) {
+        item["normal"] = {record.witness.normal.x(), record.witness.normal.y(),
+                          record.witness.normal.z()};
+        item["offset_a"] = record.witness.offset_a;
+        item["offset_b"] = record.witness.offset_b;
+        item["lower_bound"] = record.lower_bound;
+      }
+      evidence.push_back(item);
+    }
+    hulls.push_back({{"link", hull.link},
+                     {"hull", hull.hull},
+                     {"radius", hull.radius},
+                     {"broadphase_margin", number_or_null(hull.broadphase_margin)},
+                     {"evidence", evidence}});
+  }
+  json item = {{"step", step.step},
+               {"parameter", step.parameter},
+               {"q", vector_to_json(step.q)},
+               {"hulls", hulls}};
+  if (!step.to_next.hull_motion_bounds.empty()) {
+    json governing = json::array();
+    for (GoverningTerm term : step.to_next.governing) governing.push_back(to_string(term));
+    item["to_next"] = {{"certified", step.to_next.certified},
+                       {"hull_motion_bounds", step.to_next.hull_motion_bounds},
+                       {"hull_allowances", step.to_next.hull_allowances},
+                       {"governing", governing}};
+  }
+  return item;
+}
+
+json certificate_segment_to_json(const SegmentCertificate& segment) {
+  json steps = json::array();
+  for (const StepCertificate& step : segment.steps) steps.push_back(certificate_step_to_json(step));
+  return {{"number", segment.number},
+          {"kind", segment.kind},
+          {"parameter_end", segment.parameter_end},
+          {"steps", steps}};
+}
+
 json certificate_to_json(const Certificate& certificate) {
   json document;
   document["format"] = "grpvss-certificate";
@@ -99,48 +146,7 @@ json certificate_to_json(const Certificate& certificate) {
   document["errors"] = errors;
   json segments = json::array();
   for (const SegmentCertificate& segment : certificate.segments) {
-    json steps = json::array();
-    for (const StepCertificate& step : segment.steps) {
-      json hulls = json::array();
-      for (const HullRecord& hull : step.hulls) {
-        json evidence = json::array();
-        for (const EvidenceRecord& record : hull.evidence) {
-          json item = {{"obstacle", record.obstacle},
-                       {"expanded", record.expanded},
-                       {"separated", record.separated}};
-          if (record.separated) {
-            item["normal"] = {record.witness.normal.x(), record.witness.normal.y(),
-                              record.witness.normal.z()};
-            item["offset_a"] = record.witness.offset_a;
-            item["offset_b"] = record.witness.offset_b;
-            item["lower_bound"] = record.lower_bound;
-          }
-          evidence.push_back(item);
-        }
-        hulls.push_back({{"link", hull.link},
-                         {"hull", hull.hull},
-                         {"radius", hull.radius},
-                         {"broadphase_margin", number_or_null(hull.broadphase_margin)},
-                         {"evidence", evidence}});
-      }
-      json item = {{"step", step.step},
-                   {"parameter", step.parameter},
-                   {"q", vector_to_json(step.q)},
-                   {"hulls", hulls}};
-      if (!step.to_next.hull_motion_bounds.empty()) {
-        json governing = json::array();
-        for (GoverningTerm term : step.to_next.governing) governing.push_back(to_string(term));
-        item["to_next"] = {{"certified", step.to_next.certified},
-                           {"hull_motion_bounds", step.to_next.hull_motion_bounds},
-                           {"hull_allowances", step.to_next.hull_allowances},
-                           {"governing", governing}};
-      }
-      steps.push_back(item);
-    }
-    segments.push_back({{"number", segment.number},
-                        {"kind", segment.kind},
-                        {"parameter_end", segment.parameter_end},
-                        {"steps", steps}});
+    segments.push_back(certificate_segment_to_json(segment));
   }
   document["segments"] = segments;
   return document;
