@@ -216,6 +216,12 @@ nlohmann::json report_to_json(const certify::VerificationResult& result, const R
   return JsonWriter(result, robot).render(digests, generated_at);
 }
 
+nlohmann::json report_segment_to_json(const certify::SegmentRecord& segment,
+                                      const RobotModel& robot) {
+  static const certify::VerificationResult kNoRun;
+  return JsonWriter(kNoRun, robot).segment(segment);
+}
+
 nlohmann::json report_step_to_json(const certify::StepRecord& step,
                                    const std::vector<JointType>& joint_types) {
   return JsonWriter::step_json(step, joint_types);

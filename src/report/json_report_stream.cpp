@@ -18,15 +18,15 @@ namespace {
 
 constexpr int kStepsPlaceholder = 0;
 constexpr int kSceneStepsPlaceholder = 1;
+constexpr int kSegmentsPlaceholder = 2;
 
-/// The run without its steps: what the report holds besides the two long arrays.
-certify::VerificationResult without_steps(const certify::VerificationResult& result) {
+/// The run without its steps and segments: what the report holds besides the long arrays.
+certify::VerificationResult head_of(const certify::VerificationResult& result) {
   certify::VerificationResult head;
   head.tolerance = result.tolerance;
   head.mode = result.mode;
   head.verdict = result.verdict;
   head.path_file_label = result.path_file_label;
-  head.segments = result.segments;
   head.start = result.start;
   head.errors = result.errors;
   head.link_clearances = result.link_clearances;
@@ -73,21 +73,35 @@ struct JsonReportStream::Form {
   std::string text(std::string piece) const { return escape ? script_safe(std::move(piece)) : piece; }
 
   void cut(const std::string& dumped) {
-    cut_text = cut_at_placeholders(dumped, 2, indent);
+    cut_text = cut_at_placeholders(dumped, 3, indent);
     for (std::size_t i = 0; i < cut_text->placeholders.size(); ++i) {
-      const bool is_steps = cut_text->placeholders[i] == kStepsPlaceholder;
-      const JsonArrayText& array = is_steps ? steps_array : scene_steps_array;
+      const int placeholder = cut_text->placeholders[i];
+      if (placeholder == kSegmentsPlaceholder) continue;  // written at the end, any indentation
+      const JsonArrayText& array = placeholder == kStepsPlaceholder ? steps_array : scene_steps_array;
       if (indent >= 0 && cut_text->pads[i] + indent != array.element_pad()) {
         throw std::logic_error("json report stream: an array's indentation is not the one streamed");
       }
     }
   }
 
-  void write(AtomicOutputFile& output) {
+  /// The report: the template's pieces, the streamed steps, and `segments` (few per step at
+  /// most, but a path may have many: dumped one at a time too).
+  void write(AtomicOutputFile& output, const std::vector<certify::SegmentRecord>& segments,
+             const RobotModel& robot) {
     if (!cut_text) throw std::logic_error("json report stream: written before finish()");
     for (std::size_t i = 0; i < cut_text->placeholders.size(); ++i) {
       output.write(text(cut_text->pieces[i]));
-      const bool is_steps = cut_text->placeholders[i] == kStepsPlaceholder;
+      const int placeholder = cut_text->placeholders[i];
+      if (placeholder == kSegmentsPlaceholder) {
+        JsonArrayText array(indent, cut_text->pads[i]);
+        for (const certify::SegmentRecord& segment : segments) {
+          output.write(text(array.next_element()));
+          output.write(text(array.dump_element(report_segment_to_json(segment, robot))));
+        }
+        output.write(array.close());
+        continue;
+      }
+      const bool is_steps = placeholder == kStepsPlaceholder;
       (is_steps ? steps : scene_steps).copy_to(output);
       output.write((is_steps ? steps_array : scene_steps_array).close());
     }
@@ -129,7 +143,7 @@ void JsonReportStream::on_step(const certify::StepRecord& step) {
 void JsonReportStream::finish(const certify::VerificationResult& result,
                               const Environment& environment, geometry::OffsetShape offset_shape,
                               const InputDigests& digests, const std::string& generated_at) {
-  const certify::VerificationResult head = without_steps(result);
+  const certify::VerificationResult head = head_of(result);
   nlohmann::json document = report_to_json(head, robot_, digests, generated_at);
   document["scene"] = scene_to_json(head, robot_, environment, offset_shape);
   // What report_to_json() derives from the steps, from the steps seen here.
@@ -137,20 +151,23 @@ void JsonReportStream::finish(const certify::VerificationResult& result,
   document["total_steps"] = last_index_;
   document["steps"] = streamed_array_placeholder(kStepsPlaceholder);
   document["scene"]["steps"] = streamed_array_placeholder(kSceneStepsPlaceholder);
+  document["segments"] = streamed_array_placeholder(kSegmentsPlaceholder);
+  segments_ = &result.segments;
   if (script_safe_) {
     script_safe_->cut(document.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
   }
   if (pretty_) {
     pretty_->cut(render_json_report(document));
     AtomicOutputFile output(outputs_.json_path, outputs_.force);
-    pretty_->write(output);
+    pretty_->write(output, *segments_, robot_);
     output.commit();
   }
 }
 
 void JsonReportStream::write_script_safe_report(AtomicOutputFile& output) {
   if (!script_safe_) throw std::logic_error("json report stream: no script-safe form was kept");
-  script_safe_->write(output);
+  if (segments_ == nullptr) throw std::logic_error("json report stream: written before finish()");
+  script_safe_->write(output, *segments_, robot_);
 }
 
 }  // namespace grpvss::report

@@ -35,6 +35,11 @@ nlohmann::json report_to_json(const certify::VerificationResult& result, const R
 nlohmann::json report_to_json(const certify::VerificationResult& result, const RobotModel& robot,
                               const InputDigests& digests, const std::string& generated_at);
 
+/// One element of the report's `segments` array, as report_to_json() writes it.
+/// \throws std::logic_error on a NaN or a wrong-sized joint vector.
+nlohmann::json report_segment_to_json(const certify::SegmentRecord& segment,
+                                      const RobotModel& robot);
+
 /// One element of the report's `steps` array, as report_to_json() writes it; `joint_types[i]`
 /// is the type of joint i+1. \throws std::logic_error on a NaN or a wrong-sized joint vector.
 nlohmann::json report_step_to_json(const certify::StepRecord& step,

@@ -5,8 +5,9 @@
 ///
 /// The report's two long arrays, `steps` and `scene.steps`, are rendered element by element as
 /// the steps arrive, into scratch files (SpillFile). finish() builds the rest of the report as
-/// a small document whose two arrays are placeholders, dumps it as render_json_report() does
-/// and writes it around the scratch files (streamed_json.hpp). The bytes are those of
+/// a small document whose long arrays (those two and `segments`) are placeholders, dumps it as
+/// render_json_report() does and writes it around the scratch files and the segments, dumped
+/// one at a time (streamed_json.hpp). The bytes are those of
 /// render_json_report() of report_to_json() with `scene` = scene_to_json() for the same run.
 /// Optionally the same report is also kept in the viewer page's form (compact, every `<`
 /// written `\u003c`), for write_script_safe_report().
@@ -51,8 +52,9 @@ class JsonReportStream : public certify::VerificationObserver {
               geometry::OffsetShape offset_shape, const InputDigests& digests,
               const std::string& generated_at);
 
-  /// After finish(), with Outputs::script_safe: appends the report to `output` as the viewer
-  /// page embeds it (compact dump, invalid UTF-8 replaced, `<` as `\u003c`).
+  /// After finish() (whose `result` must still exist), with Outputs::script_safe: appends the
+  /// report to `output` as the viewer page embeds it (compact dump, invalid UTF-8 replaced,
+  /// `<` as `\u003c`).
   void write_script_safe_report(AtomicOutputFile& output);
 
  private:
@@ -64,6 +66,7 @@ class JsonReportStream : public certify::VerificationObserver {
   SceneStepPoses poses_;
   std::unique_ptr<Form> pretty_;       ///< the report file's form (when json_path is set)
   std::unique_ptr<Form> script_safe_;  ///< the viewer page's form (when script_safe)
+  const std::vector<certify::SegmentRecord>* segments_ = nullptr;  ///< finish()'s result's
   int last_index_ = 0;
   bool collisions_ = false;
 };
