@@ -23,7 +23,7 @@ constexpr std::size_t kBufferBytes = std::size_t{1} << 20;
 
 [[noreturn]] void throw_system(const std::string& path, const char* what, int error_number) {
   throw InputError(path, 0, "a writable output location",
-                   fmt::format("{} (scratch file) failed: {}", what, std::strerror(error_number)));
+                   fmt::format("{} a scratch file failed: {}", what, std::strerror(error_number)));
 }
 
 int open_anonymous(const std::string& output_path) {

@@ -99,6 +99,18 @@ TEST_F(StreamFailure, AnExistingOutputIsRefusedAtFinishAndLeftUntouched) {
             (std::vector<std::string>{"certificate.json", "out.txt", "report.json"}));
 }
 
+TEST_F(StreamFailure, AMissingDirectoryIsRefusedBeforeTheRun) {
+  try {
+    ThesisOutputStream thesis(directory_ + "/missing/out.txt", false, joint_types_of(robot_));
+    FAIL() << "a stream into a missing directory was created";
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.file(), directory_ + "/missing/out.txt");
+    EXPECT_EQ(error.expected(), "a writable output location");
+    EXPECT_EQ(error.found(), "creating a scratch file failed: No such file or directory");
+  }
+  EXPECT_TRUE(test::directory_entries(directory_).empty());
+}
+
 TEST(AtomicOutputFile, PiecesAppearOnlyAtCommit) {
   const std::string directory = test::make_temporary_directory("atomic-file");
   {
