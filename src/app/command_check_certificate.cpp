@@ -1,21 +1,21 @@
 // `grpvss check-certificate`: re-verifies a certificate from the input files alone (a separate
 // code path from the verifier, every inequality decided exactly). Exit 0 accepted, 1 rejected,
 // 2 input error.
-#include <fstream>
 #include <memory>
-#include <sstream>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
 #include "grpvss/certify/certificate_checker.hpp"
+#include "grpvss/certify/certificate_file.hpp"
 #include "grpvss/common/input_error.hpp"
 #include "grpvss/io/environment_file.hpp"
 #include "grpvss/io/path_file.hpp"
 #include "grpvss/io/robot_file.hpp"
-#include "grpvss/io/text_file.hpp"
 #include "grpvss/motion/kinematics_adapter.hpp"
 #include "grpvss/motion/profile_table.hpp"
 #include "grpvss/report/input_digests.hpp"
@@ -42,32 +42,45 @@ int run_check(const CheckArguments& args) {
   const RobotModel robot = io::read_robot_file(in.robot_file);
   const Environment environment = io::read_environment_file(in.environment_file);
   const PathProgram program = io::read_path_file(in.path_file, robot);
-  const std::string text = io::read_text_file(args.certificate_file);
-  nlohmann::json document;
-  try {
-    document = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::exception& error) {  // parse_error, or out_of_range for 1e9999
-    throw InputError(args.certificate_file, 0, "a JSON document", error.what());
-  }
-  const certify::Certificate certificate =
-      certify::certificate_from_json(document, args.certificate_file);
-  std::vector<std::string> digest_failures;
-  if (document.contains("inputs") && document["inputs"].is_object()) {
-    const report::InputDigests digests =
-        report::digest_input_files(in.robot_file, in.environment_file, in.path_file);
-    const auto& inputs = document["inputs"];
-    if (digest_field(inputs, "robot") != digests.robot.sha256) digest_failures.push_back("the robot file differs from the one certified");
-    if (digest_field(inputs, "environment") != digests.environment.sha256) digest_failures.push_back("the environment file differs from the one certified");
-    if (digest_field(inputs, "path") != digests.path.sha256) digest_failures.push_back("the path file differs from the one certified");
-  }
   certify::CheckOptions options;
   if (!in.profile_table.empty()) {
     options.profile_table = std::make_shared<const motion::ProfileTable>(
         motion::ProfileTable::read(in.profile_table));
   }
   const auto ik = motion::select_ik(in.ik, robot, in.robot_file);
-  certify::CheckReport report = certify::check_certificate(
-      robot, environment, program, motion::make_kinematics_access(robot, ik), certificate, options);
+  const motion::KinematicsAccess kinematics = motion::make_kinematics_access(robot, ik);
+
+  // Read and checked one segment at a time: memory independent of the number of steps
+  // (docs/reliability.md#resource-bounds).
+  std::vector<std::string> digest_failures;
+  std::optional<certify::CertificateCheck> check;
+  std::size_t announced = 0;
+  std::size_t delivered = 0;
+  const auto changed = [&args] {
+    return InputError(args.certificate_file, 0, "a certificate that does not change while it is read");
+  };
+  certify::read_certificate_file(
+      args.certificate_file,
+      [&](const certify::CertificateFileHeader& header) {
+        const nlohmann::json& document = header.document;
+        if (document.contains("inputs") && document["inputs"].is_object()) {
+          const report::InputDigests digests =
+              report::digest_input_files(in.robot_file, in.environment_file, in.path_file);
+          const auto& inputs = document["inputs"];
+          if (digest_field(inputs, "robot") != digests.robot.sha256) digest_failures.push_back("the robot file differs from the one certified");
+          if (digest_field(inputs, "environment") != digests.environment.sha256) digest_failures.push_back("the environment file differs from the one certified");
+          if (digest_field(inputs, "path") != digests.path.sha256) digest_failures.push_back("the path file differs from the one certified");
+        }
+        announced = header.segment_count;
+        check.emplace(robot, environment, program, kinematics, header.certificate, announced,
+                      options);
+      },
+      [&](const certify::SegmentCertificate& segment) {
+        if (delivered++ >= announced) throw changed();
+        check->add_segment(segment);
+      });
+  if (!check || delivered != announced) throw changed();
+  certify::CheckReport report = check->finish();
   for (const auto& failure : digest_failures) report.failures.insert(report.failures.begin(), failure);
   report.accepted = report.failures.empty();
   if (args.quiet) {

@@ -3,7 +3,9 @@
 // Exit codes: 0 CLEAR, 1 any other verdict, 2 input error (docs/user-guide.md). On a terminal
 // a progress bar runs on stderr (never when stderr is piped, never with --quiet).
 #include <cstdio>
+#include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include <fmt/core.h>
@@ -16,14 +18,17 @@
 #include "grpvss/io/robot_file.hpp"
 #include "grpvss/motion/kinematics_adapter.hpp"
 #include "grpvss/report/atomic_output.hpp"
+#include "grpvss/report/certificate_output.hpp"
+#include "grpvss/report/file_units.hpp"
 #include "grpvss/report/input_digests.hpp"
 #include "grpvss/report/json_report.hpp"
+#include "grpvss/report/json_report_stream.hpp"
 #include "grpvss/report/scene_json.hpp"
 #include "grpvss/report/thesis_output.hpp"
 #include "interactive/verdict_summary.hpp"
 #include "progress_bar.hpp"
 #include "verify_arguments.hpp"
-#include "viewer_html.hpp"
+#include "viewer_html_stream.hpp"
 
 namespace grpvss::app {
 namespace {
@@ -50,6 +55,44 @@ int run_verify(const VerifyArguments& args) {
   certify::VerifyOptions options = make_verify_options(args, robot);
   options.path_label = file_label(args.path_file);
   const auto ik = motion::select_ik(args.ik, robot, args.robot_file);
+  if (!args.certificate.empty() && options.mode != certify::ResolutionMode::kCertified) {
+    throw InputError("--certificate", 0, "--mode certified (thesis mode proves nothing)");
+  }
+  // Refused before a long run rather than after it; the publication itself still never
+  // clobbers (a file that appears meanwhile is refused then).
+  if (!args.force) {
+    for (const std::string* output : {&args.out, &args.json, &args.html, &args.certificate}) {
+      if (!output->empty() && std::filesystem::exists(*output)) {
+        throw report::OutputExistsError(*output);
+      }
+    }
+  }
+
+  // The outputs are written while the verification runs, in memory independent of the number
+  // of steps (docs/reliability.md#resource-bounds); each is published only at its finish().
+  std::optional<report::ThesisOutputStream> thesis_output;
+  std::optional<report::JsonReportStream> json_report;
+  std::optional<report::CertificateStream> certificate;
+  if (!args.out.empty()) {
+    thesis_output.emplace(args.out, args.force, report::joint_types_of(robot));
+    options.observers.push_back(&*thesis_output);
+  }
+  if (!args.json.empty() || !args.html.empty()) {
+    if (!args.html.empty()) require_viewer_bundle(args.html);
+    report::JsonReportStream::Outputs outputs;
+    outputs.json_path = args.json;
+    outputs.script_safe = !args.html.empty();  // the page embeds the report
+    outputs.scratch_path = args.json.empty() ? args.html : args.json;
+    outputs.force = args.force;
+    json_report.emplace(robot, std::move(outputs));
+    options.observers.push_back(&*json_report);
+  }
+  if (!args.certificate.empty()) {
+    certificate.emplace(args.certificate, args.force);
+    options.observers.push_back(&*certificate);
+  }
+  options.keep_steps = false;
+
   certify::VerificationRun run;
   {
     ProgressBar bar("verifying", !args.quiet && stderr_is_terminal());
@@ -58,33 +101,21 @@ int run_verify(const VerifyArguments& args) {
                           options);
   }
 
-  // All outputs are rendered first, then published: a refused name leaves nothing half-done.
-  if (!args.certificate.empty() && run.result.mode != certify::ResolutionMode::kCertified) {
-    throw InputError("--certificate", 0, "--mode certified (thesis mode proves nothing)");
+  const geometry::OffsetShape offset_shape =
+      options.offset_shape.value_or(report::default_offset_shape(run.result.mode));
+  const std::string generated_at = report::utc_timestamp_now();
+  if (thesis_output) thesis_output->finish(run.result);
+  if (json_report) json_report->finish(run.result, environment, offset_shape, digests, generated_at);
+  if (!args.html.empty()) {
+    write_viewer_html(args.html, args.force, robot.name, [&](report::AtomicOutputFile& output) {
+      json_report->write_script_safe_report(output);
+    });
   }
-  if (!args.out.empty()) {
-    report::write_file_atomically(args.out, report::render_thesis_output(run.result, robot),
-                                  args.force);
-  }
-  if (!args.json.empty() || !args.html.empty()) {
-    nlohmann::json json_report = report::report_to_json(run.result, robot, digests);
-    json_report["scene"] = report::scene_to_json(
-        run.result, robot, environment,
-        options.offset_shape.value_or(report::default_offset_shape(run.result.mode)));
-    const std::string html =
-        args.html.empty() ? std::string() : render_viewer_html(json_report, args.html);
-    if (!args.json.empty()) {
-      report::write_file_atomically(args.json, report::render_json_report(json_report), args.force);
-    }
-    if (!args.html.empty()) report::write_file_atomically(args.html, html, args.force);
-  }
-  if (!args.certificate.empty()) {
-    nlohmann::json certificate = certify::certificate_to_json(run.certificate);
-    certificate["inputs"] = {{"robot", digests.robot.sha256},
-                             {"environment", digests.environment.sha256},
-                             {"path", digests.path.sha256},
-                             {"ik", ik->name()}};
-    report::write_file_atomically(args.certificate, certificate.dump(1) + "\n", args.force);
+  if (certificate) {
+    certificate->finish(run.certificate, {{"robot", digests.robot.sha256},
+                                          {"environment", digests.environment.sha256},
+                                          {"path", digests.path.sha256},
+                                          {"ik", ik->name()}});
   }
   if (!args.quiet) print_summary(run, args);
   return run.result.verdict == certify::Verdict::kClear ? kExitOk : kExitFinding;

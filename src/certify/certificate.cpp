@@ -77,6 +77,53 @@ Eigen::VectorXd vector_field(const json& object, const char* key, const std::str
 
 }  // namespace
 
+json certificate_step_to_json(const StepCertificate& step) {
+  json hulls = json::array();
+  for (const HullRecord& hull : step.hulls) {
+    json evidence = json::array();
+    for (const EvidenceRecord& record : hull.evidence) {
+      json item = {{"obstacle", record.obstacle},
+                   {"expanded", record.expanded},
+                   {"separated", record.separated}};
+      if (record.separated) {
+        item["normal"] = {record.witness.normal.x(), record.witness.normal.y(),
+                          record.witness.normal.z()};
+        item["offset_a"] = record.witness.offset_a;
+        item["offset_b"] = record.witness.offset_b;
+        item["lower_bound"] = record.lower_bound;
+      }
+      evidence.push_back(item);
+    }
+    hulls.push_back({{"link", hull.link},
+                     {"hull", hull.hull},
+                     {"radius", hull.radius},
+                     {"broadphase_margin", number_or_null(hull.broadphase_margin)},
+                     {"evidence", evidence}});
+  }
+  json item = {{"step", step.step},
+               {"parameter", step.parameter},
+               {"q", vector_to_json(step.q)},
+               {"hulls", hulls}};
+  if (!step.to_next.hull_motion_bounds.empty()) {
+    json governing = json::array();
+    for (GoverningTerm term : step.to_next.governing) governing.push_back(to_string(term));
+    item["to_next"] = {{"certified", step.to_next.certified},
+                       {"hull_motion_bounds", step.to_next.hull_motion_bounds},
+                       {"hull_allowances", step.to_next.hull_allowances},
+                       {"governing", governing}};
+  }
+  return item;
+}
+
+json certificate_segment_to_json(const SegmentCertificate& segment) {
+  json steps = json::array();
+  for (const StepCertificate& step : segment.steps) steps.push_back(certificate_step_to_json(step));
+  return {{"number", segment.number},
+          {"kind", segment.kind},
+          {"parameter_end", segment.parameter_end},
+          {"steps", steps}};
+}
+
 json certificate_to_json(const Certificate& certificate) {
   json document;
   document["format"] = "grpvss-certificate";
@@ -99,54 +146,13 @@ json certificate_to_json(const Certificate& certificate) {
   document["errors"] = errors;
   json segments = json::array();
   for (const SegmentCertificate& segment : certificate.segments) {
-    json steps = json::array();
-    for (const StepCertificate& step : segment.steps) {
-      json hulls = json::array();
-      for (const HullRecord& hull : step.hulls) {
-        json evidence = json::array();
-        for (const EvidenceRecord& record : hull.evidence) {
-          json item = {{"obstacle", record.obstacle},
-                       {"expanded", record.expanded},
-                       {"separated", record.separated}};
-          if (record.separated) {
-            item["normal"] = {record.witness.normal.x(), record.witness.normal.y(),
-                              record.witness.normal.z()};
-            item["offset_a"] = record.witness.offset_a;
-            item["offset_b"] = record.witness.offset_b;
-            item["lower_bound"] = record.lower_bound;
-          }
-          evidence.push_back(item);
-        }
-        hulls.push_back({{"link", hull.link},
-                         {"hull", hull.hull},
-                         {"radius", hull.radius},
-                         {"broadphase_margin", number_or_null(hull.broadphase_margin)},
-                         {"evidence", evidence}});
-      }
-      json item = {{"step", step.step},
-                   {"parameter", step.parameter},
-                   {"q", vector_to_json(step.q)},
-                   {"hulls", hulls}};
-      if (!step.to_next.hull_motion_bounds.empty()) {
-        json governing = json::array();
-        for (GoverningTerm term : step.to_next.governing) governing.push_back(to_string(term));
-        item["to_next"] = {{"certified", step.to_next.certified},
-                           {"hull_motion_bounds", step.to_next.hull_motion_bounds},
-                           {"hull_allowances", step.to_next.hull_allowances},
-                           {"governing", governing}};
-      }
-      steps.push_back(item);
-    }
-    segments.push_back({{"number", segment.number},
-                        {"kind", segment.kind},
-                        {"parameter_end", segment.parameter_end},
-                        {"steps", steps}});
+    segments.push_back(certificate_segment_to_json(segment));
   }
   document["segments"] = segments;
   return document;
 }
 
-Certificate certificate_from_json(const json& document, const std::string& file) {
+Certificate certificate_header_from_json(const json& document, const std::string& file) {
   // Compared as JSON values, not with value(): a "format" or "version" of another JSON type
   // made value() throw json::type_error past the InputError contract (found reviewing for the
   // certificate fuzz target).
@@ -179,55 +185,66 @@ Certificate certificate_from_json(const json& document, const std::string& file)
                                   field<int>(error, "step", "an error", file),
                                   field<std::string>(error, "message", "an error", file)});
   }
-  for (const json& segment_json : field<json>(document, "segments", top, file)) {
-    SegmentCertificate segment;
-    const std::string where = "a segment";
-    segment.number = field<int>(segment_json, "number", where, file);
-    segment.kind = field<std::string>(segment_json, "kind", where, file);
-    segment.parameter_end = field<double>(segment_json, "parameter_end", where, file);
-    for (const json& step_json : field<json>(segment_json, "steps", where, file)) {
-      StepCertificate step;
-      const std::string step_where = "step of segment " + std::to_string(segment.number);
-      step.step = field<int>(step_json, "step", step_where, file);
-      step.parameter = field<double>(step_json, "parameter", step_where, file);
-      step.q = vector_field(step_json, "q", step_where, file);
-      for (const json& hull_json : field<json>(step_json, "hulls", step_where, file)) {
-        HullRecord hull;
-        hull.link = field<int>(hull_json, "link", step_where, file);
-        hull.hull = field<int>(hull_json, "hull", step_where, file);
-        hull.radius = field<double>(hull_json, "radius", step_where, file);
-        hull.broadphase_margin = margin_field(hull_json, step_where, file);
-        for (const json& evidence_json : field<json>(hull_json, "evidence", step_where, file)) {
-          EvidenceRecord record;
-          record.obstacle = field<int>(evidence_json, "obstacle", step_where, file);
-          record.expanded = field<bool>(evidence_json, "expanded", step_where, file);
-          record.separated = field<bool>(evidence_json, "separated", step_where, file);
-          if (record.separated) {
-            const auto normal = field<std::vector<double>>(evidence_json, "normal", step_where, file);
-            if (normal.size() != 3) throw InputError(file, 0, "a 3-vector normal in " + step_where);
-            record.witness.normal = {normal[0], normal[1], normal[2]};
-            record.witness.offset_a = field<double>(evidence_json, "offset_a", step_where, file);
-            record.witness.offset_b = field<double>(evidence_json, "offset_b", step_where, file);
-            record.lower_bound = field<double>(evidence_json, "lower_bound", step_where, file);
-          }
-          hull.evidence.push_back(record);
+  // Present; its elements are read one by one (segment_certificate_from_json).
+  if (!document.contains("segments")) throw InputError(file, 0, "field 'segments' in " + top);
+  return certificate;
+}
+
+SegmentCertificate segment_certificate_from_json(const json& segment_json, const std::string& file) {
+  SegmentCertificate segment;
+  const std::string where = "a segment";
+  segment.number = field<int>(segment_json, "number", where, file);
+  segment.kind = field<std::string>(segment_json, "kind", where, file);
+  segment.parameter_end = field<double>(segment_json, "parameter_end", where, file);
+  for (const json& step_json : field<json>(segment_json, "steps", where, file)) {
+    StepCertificate step;
+    const std::string step_where = "step of segment " + std::to_string(segment.number);
+    step.step = field<int>(step_json, "step", step_where, file);
+    step.parameter = field<double>(step_json, "parameter", step_where, file);
+    step.q = vector_field(step_json, "q", step_where, file);
+    for (const json& hull_json : field<json>(step_json, "hulls", step_where, file)) {
+      HullRecord hull;
+      hull.link = field<int>(hull_json, "link", step_where, file);
+      hull.hull = field<int>(hull_json, "hull", step_where, file);
+      hull.radius = field<double>(hull_json, "radius", step_where, file);
+      hull.broadphase_margin = margin_field(hull_json, step_where, file);
+      for (const json& evidence_json : field<json>(hull_json, "evidence", step_where, file)) {
+        EvidenceRecord record;
+        record.obstacle = field<int>(evidence_json, "obstacle", step_where, file);
+        record.expanded = field<bool>(evidence_json, "expanded", step_where, file);
+        record.separated = field<bool>(evidence_json, "separated", step_where, file);
+        if (record.separated) {
+          const auto normal = field<std::vector<double>>(evidence_json, "normal", step_where, file);
+          if (normal.size() != 3) throw InputError(file, 0, "a 3-vector normal in " + step_where);
+          record.witness.normal = {normal[0], normal[1], normal[2]};
+          record.witness.offset_a = field<double>(evidence_json, "offset_a", step_where, file);
+          record.witness.offset_b = field<double>(evidence_json, "offset_b", step_where, file);
+          record.lower_bound = field<double>(evidence_json, "lower_bound", step_where, file);
         }
-        step.hulls.push_back(std::move(hull));
+        hull.evidence.push_back(record);
       }
-      if (step_json.contains("to_next")) {
-        const json& next = step_json.at("to_next");
-        step.to_next.certified = field<bool>(next, "certified", step_where, file);
-        step.to_next.hull_motion_bounds =
-            field<std::vector<double>>(next, "hull_motion_bounds", step_where, file);
-        step.to_next.hull_allowances =
-            field<std::vector<double>>(next, "hull_allowances", step_where, file);
-        for (const auto& name : field<std::vector<std::string>>(next, "governing", step_where, file)) {
-          step.to_next.governing.push_back(governing_from_string(name, file));
-        }
-      }
-      segment.steps.push_back(std::move(step));
+      step.hulls.push_back(std::move(hull));
     }
-    certificate.segments.push_back(std::move(segment));
+    if (step_json.contains("to_next")) {
+      const json& next = step_json.at("to_next");
+      step.to_next.certified = field<bool>(next, "certified", step_where, file);
+      step.to_next.hull_motion_bounds =
+          field<std::vector<double>>(next, "hull_motion_bounds", step_where, file);
+      step.to_next.hull_allowances =
+          field<std::vector<double>>(next, "hull_allowances", step_where, file);
+      for (const auto& name : field<std::vector<std::string>>(next, "governing", step_where, file)) {
+        step.to_next.governing.push_back(governing_from_string(name, file));
+      }
+    }
+    segment.steps.push_back(std::move(step));
+  }
+  return segment;
+}
+
+Certificate certificate_from_json(const json& document, const std::string& file) {
+  Certificate certificate = certificate_header_from_json(document, file);
+  for (const json& segment_json : document.at("segments")) {
+    certificate.segments.push_back(segment_certificate_from_json(segment_json, file));
   }
   return certificate;
 }

@@ -6,6 +6,8 @@
 #include <map>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
+#include <utility>
 
 #include <gmpxx.h>
 
@@ -52,19 +54,26 @@ bool boxes_farther_than(const std::vector<Eigen::Vector3d>& a,
 
 class Checker {
  public:
+  /// `certificate`: its header is read (its `segments` are not: they come to add_segment(),
+  /// `segment_count` of them).
   Checker(const RobotModel& robot, const Environment& environment, const PathProgram& program,
           const motion::KinematicsAccess& kinematics, const Certificate& certificate,
-          const CheckOptions& options)
+          std::size_t segment_count, const CheckOptions& options)
       : robot_(robot),
         environment_(environment),
         program_(program),
         kinematics_(kinematics),
         certificate_(certificate),
+        segment_count_(segment_count),
         options_(options),
         chain_(kinematics::make_chain(robot)),
         workspace_(robot) {}
 
-  CheckReport run();
+  // The check in three parts so that a certificate can be read one segment at a time:
+  // start() (header, hulls, trajectory), add_segment() in order, finish() (the claim).
+  void start();
+  void add_segment(const SegmentCertificate& segment);
+  CheckReport finish();
 
  private:
   void fail(const std::string& message) {
@@ -87,6 +96,7 @@ class Checker {
   const PathProgram& program_;
   const motion::KinematicsAccess& kinematics_;
   const Certificate& certificate_;
+  std::size_t segment_count_;
   CheckOptions options_;
   kinematics::KinematicChain chain_;
   kinematics::Workspace workspace_;
@@ -99,7 +109,12 @@ class Checker {
   bool any_raw_collision_ = false;
   bool coverage_complete_ = true;
   int previous_step_index_ = -1;
-  std::map<int, const StepCertificate*> steps_by_index_;
+  /// The configuration of the last step numbered collision_step (checked by the claim).
+  std::optional<Eigen::VectorXd> collision_step_q_;
+  std::optional<motion::Trajectory> trajectory_;
+  bool stopped_ = false;   ///< the header, hulls or segment order failed: no more checking
+  bool concluded_ = false;  ///< stopped before the claim: the report stays as it is
+  std::size_t segments_added_ = 0;
 };
 
 bool Checker::check_header() {
@@ -357,7 +372,7 @@ void Checker::check_segment(const SegmentCertificate& segment,
     }
     previous_radius = std::move(radius);
     previous = &step;
-    steps_by_index_[step.step] = &step;
+    if (step.step == certificate_.collision_step) collision_step_q_ = step.q;
   }
   previous_step_index_ = segment.steps.back().step;
 }
@@ -377,11 +392,10 @@ void Checker::check_claim() {
     if (!any_expanded_interference_) fail("claim WITHIN_TOLERANCE, but nothing interferes");
   } else if (claim == "COLLISION") {
     // The colliding configuration is re-decided exactly from scratch.
-    const auto found = steps_by_index_.find(certificate_.collision_step);
     bool proven = false;
     // A wrong joint count at that step was already rejected; it proves nothing here.
-    if (found != steps_by_index_.end() && found->second->q.size() == robot_.joint_count()) {
-      kinematics::forward_kinematics(chain_, found->second->q, workspace_);
+    if (collision_step_q_ && collision_step_q_->size() == robot_.joint_count()) {
+      kinematics::forward_kinematics(chain_, *collision_step_q_, workspace_);
       for (const CheckedHull& hull : hulls_) {
         place_points(workspace_.X_WL[hull.link], hull.raw_L, placed_);
         for (const auto& obstacle : obstacles_) {
@@ -398,27 +412,40 @@ void Checker::check_claim() {
   }
 }
 
-CheckReport Checker::run() {
+void Checker::start() {
   report_.claim = certificate_.claim;
-  if (!check_header() || !build_hulls()) return report_;
+  if (!check_header() || !build_hulls()) {
+    stopped_ = concluded_ = true;
+    return;
+  }
   motion::TrajectoryOptions trajectory_options;
   trajectory_options.timing = certificate_.timing == "synchronized" ? motion::PtpTiming::kSynchronized
                                                                      : motion::PtpTiming::kIndependent;
   trajectory_options.cp_speed = certificate_.cp_speed;
   trajectory_options.table = options_.profile_table;
-  const motion::Trajectory trajectory =
-      motion::Trajectory::plan(robot_, program_, kinematics_, trajectory_options);
-  if (certificate_.segments.size() != trajectory.segments().size() ||
-      !trajectory.errors().empty()) {
+  trajectory_ = motion::Trajectory::plan(robot_, program_, kinematics_, trajectory_options);
+  if (segment_count_ != trajectory_->segments().size() || !trajectory_->errors().empty()) {
     coverage_complete_ = false;
   }
-  if (certificate_.segments.size() > trajectory.segments().size()) return report_;
-  for (std::size_t s = 0; s < certificate_.segments.size(); ++s) {
-    if (certificate_.segments[s].number != trajectory.segments()[s].number) {
-      fail("segment numbers out of order");
-      break;
-    }
-    check_segment(certificate_.segments[s], trajectory.segments()[s]);
+  if (segment_count_ > trajectory_->segments().size()) stopped_ = concluded_ = true;
+}
+
+void Checker::add_segment(const SegmentCertificate& segment) {
+  const std::size_t s = segments_added_++;
+  if (stopped_) return;
+  if (s >= segment_count_) throw std::logic_error("certificate check: more segments than announced");
+  if (segment.number != trajectory_->segments()[s].number) {
+    fail("segment numbers out of order");
+    stopped_ = true;
+    return;
+  }
+  check_segment(segment, trajectory_->segments()[s]);
+}
+
+CheckReport Checker::finish() {
+  if (concluded_) return report_;
+  if (segments_added_ != segment_count_) {
+    throw std::logic_error("certificate check: fewer segments than announced");
   }
   check_claim();
   report_.accepted = report_.failures.empty();
@@ -431,8 +458,40 @@ CheckReport check_certificate(const RobotModel& robot, const Environment& enviro
                               const PathProgram& program,
                               const motion::KinematicsAccess& kinematics,
                               const Certificate& certificate, const CheckOptions& options) {
-  Checker checker(robot, environment, program, kinematics, certificate, options);
-  return checker.run();
+  Checker checker(robot, environment, program, kinematics, certificate,
+                  certificate.segments.size(), options);
+  checker.start();
+  for (const SegmentCertificate& segment : certificate.segments) checker.add_segment(segment);
+  return checker.finish();
 }
+
+struct CertificateCheck::Impl {
+  Impl(const RobotModel& robot, const Environment& environment, const PathProgram& program,
+       const motion::KinematicsAccess& kinematics, Certificate certificate_header,
+       std::size_t segment_count, const CheckOptions& options)
+      : header(std::move(certificate_header)),
+        checker(robot, environment, program, kinematics, header, segment_count, options) {}
+  Certificate header;  // the checker refers to it: declared first
+  Checker checker;
+};
+
+CertificateCheck::CertificateCheck(const RobotModel& robot, const Environment& environment,
+                                   const PathProgram& program,
+                                   const motion::KinematicsAccess& kinematics,
+                                   Certificate header, std::size_t segment_count,
+                                   const CheckOptions& options) {
+  header.segments.clear();
+  impl_ = std::make_unique<Impl>(robot, environment, program, kinematics, std::move(header),
+                                 segment_count, options);
+  impl_->checker.start();
+}
+
+CertificateCheck::~CertificateCheck() = default;
+
+void CertificateCheck::add_segment(const SegmentCertificate& segment) {
+  impl_->checker.add_segment(segment);
+}
+
+CheckReport CertificateCheck::finish() { return impl_->checker.finish(); }
 
 }  // namespace grpvss::certify

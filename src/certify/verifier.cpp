@@ -118,9 +118,9 @@ class PathVerifier {
                                double previous_step);
   std::vector<double> thesis_allowed_displacements(const Eigen::VectorXd& q);
   void add_error(int code, int segment, std::string message);
-  int last_step_index() const {
-    return run_.result.steps.empty() ? 0 : run_.result.steps.back().index;
-  }
+  int last_step_index() const { return last_step_index_; }
+  void track_summaries(const StepRecord& step);
+  void flush_certificate_step();
   void finish();
 
   const RobotModel& robot_;
@@ -140,6 +140,15 @@ class PathVerifier {
   bool any_uncertified_ = false;
   VerificationRun run_;
   SegmentCertificate* segment_certificate_ = nullptr;
+  // Kept whether or not the steps are (VerifyOptions::keep_steps): what the run needs of the
+  // steps so far, in memory independent of their number.
+  int last_step_index_ = 0;  ///< 0 before the first step
+  Eigen::VectorXd last_q_;   ///< the last step's configuration
+  bool any_expanded_ = false;
+  std::vector<LinkClearanceSummary> clearances_;
+  /// The current segment's last certificate step: complete (and passed on) only once the
+  /// transition to its successor was judged, or when the segment ends.
+  std::optional<StepCertificate> pending_certificate_step_;
 };
 
 void PathVerifier::add_error(int code, int segment, std::string message) {
@@ -178,7 +187,7 @@ void PathVerifier::record_step(const ProbeResult& probe, int segment, double par
                                bool refinement) {
   StepRecord step;
   const bool is_start = incoming == nullptr && !run_.result.start;
-  step.index = is_start ? 0 : static_cast<int>(run_.result.steps.size()) + 1;
+  step.index = is_start ? 0 : last_step_index_ + 1;
   step.segment = segment;
   step.path_time = path_time;
   step.segment_parameter = parameter;
@@ -210,19 +219,48 @@ void PathVerifier::record_step(const ProbeResult& probe, int segment, double par
   step.unexpanded_collides = probe.any_collision;
   step.refinement = refinement;
   if (probe.any_collision && !run_.result.collision_step) run_.result.collision_step = step.index;
+  track_summaries(step);
   if (is_start) {
     run_.result.start = std::move(step);
     return;
   }
-  run_.result.steps.push_back(std::move(step));
+  last_step_index_ = step.index;
+  last_q_ = step.q;
+  for (VerificationObserver* observer : options_.observers) observer->on_step(step);
+  if (options_.keep_steps) run_.result.steps.push_back(std::move(step));
 
   if (segment_certificate_ != nullptr) {
-    if (incoming != nullptr && !segment_certificate_->steps.empty()) {
-      segment_certificate_->steps.back().to_next = *incoming;
+    // The previous step's record is complete once its transition is known.
+    if (incoming != nullptr && pending_certificate_step_) {
+      pending_certificate_step_->to_next = *incoming;
     }
-    segment_certificate_->steps.push_back(
-        certificate_step(probe, run_.result.steps.back().index, parameter));
+    flush_certificate_step();
+    pending_certificate_step_ = certificate_step(probe, last_step_index_, parameter);
   }
+}
+
+void PathVerifier::track_summaries(const StepRecord& step) {
+  // Per-link minimum clearance and where it first occurs, in step order (start first).
+  for (LinkClearanceSummary& summary : clearances_) {
+    const LinkStepRecord& link = step.links[summary.link];
+    if (link.clearance < summary.min_clearance) {
+      summary.min_clearance = link.clearance;
+      summary.step = step.index;
+      summary.obstacle = link.nearest_obstacle;
+    }
+  }
+  any_expanded_ |= step.expanded_interferes;
+}
+
+void PathVerifier::flush_certificate_step() {
+  if (!pending_certificate_step_) return;
+  for (VerificationObserver* observer : options_.observers) {
+    observer->on_certificate_step(*pending_certificate_step_);
+  }
+  if (options_.keep_steps) {
+    segment_certificate_->steps.push_back(std::move(*pending_certificate_step_));
+  }
+  pending_certificate_step_.reset();
 }
 
 // proof: proofs/two-ball-cover.md#corollary-step, proofs/motion-bound.md#lemma-motion-bound
@@ -480,27 +518,8 @@ bool PathVerifier::march_segment(const SegmentPath& path, int segment_number) {
 
 void PathVerifier::finish() {
   VerificationResult& result = run_.result;
-  // Per-link minimum clearance and where it occurs.
-  for (int link = 0; link < static_cast<int>(robot_.links.size()); ++link) {
-    LinkClearanceSummary summary;
-    summary.link = link;
-    summary.min_clearance = kInfinity;
-    std::vector<const StepRecord*> all_steps;
-    if (result.start) all_steps.push_back(&*result.start);
-    for (const StepRecord& step : result.steps) all_steps.push_back(&step);
-    for (const StepRecord* step_pointer : all_steps) {
-      const StepRecord& step = *step_pointer;
-      if (step.links[link].clearance < summary.min_clearance) {
-        summary.min_clearance = step.links[link].clearance;
-        summary.step = step.index;
-        summary.obstacle = step.links[link].nearest_obstacle;
-      }
-    }
-    result.link_clearances.push_back(summary);
-  }
-  bool any_expanded = false;
-  if (result.start) any_expanded |= result.start->expanded_interferes;
-  for (const StepRecord& step : result.steps) any_expanded |= step.expanded_interferes;
+  result.link_clearances = clearances_;
+  const bool any_expanded = any_expanded_;
   if (result.collision_step) {
     result.verdict = Verdict::kCollision;
   } else if (!result.errors.empty()) {
@@ -528,6 +547,12 @@ VerificationRun PathVerifier::run() {
   result.tolerance = options_.tolerance;
   result.mode = options_.mode;
   result.path_file_label = options_.path_label;
+  for (int link = 0; link < static_cast<int>(robot_.links.size()); ++link) {
+    LinkClearanceSummary summary;
+    summary.link = link;
+    summary.min_clearance = kInfinity;
+    clearances_.push_back(summary);
+  }
   if (certified()) {
     Certificate& certificate = run_.certificate;
     certificate.mode = "certified";
@@ -567,11 +592,13 @@ VerificationRun PathVerifier::run() {
       segment_certificate.number = segment.number;
       segment_certificate.kind = segment_kind_name(segment.kind);
       segment_certificate.parameter_end = path.parameter_end();
-      // Every segment's certificate starts with its start configuration (the previous end).
-      segment_certificate.steps.push_back(
-          certificate_step(current_, last_step_index(), 0.0));
+      for (VerificationObserver* observer : options_.observers) {
+        observer->on_certificate_segment_begin(segment_certificate);
+      }
       run_.certificate.segments.push_back(std::move(segment_certificate));
       segment_certificate_ = &run_.certificate.segments.back();
+      // Every segment's certificate starts with its start configuration (the previous end).
+      pending_certificate_step_ = certificate_step(current_, last_step_index(), 0.0);
     }
     const int first_step = last_step_index() + 1;
     keep_going = march_segment(path, segment.number);
@@ -581,6 +608,12 @@ VerificationRun PathVerifier::run() {
     if (record.first_step == 0) record.last_step = 0;
     record.simulated = keep_going;
     result.segments.push_back(std::move(record));
+    if (segment_certificate_ != nullptr) {
+      flush_certificate_step();
+      for (VerificationObserver* observer : options_.observers) {
+        observer->on_certificate_segment_end();
+      }
+    }
     segment_certificate_ = nullptr;
   }
   // Segments the motion stage refused (thesis errors 3-6) stop the path there.
@@ -590,7 +623,7 @@ VerificationRun PathVerifier::run() {
       SegmentRecord refused;
       refused.number = error.segment;
       refused.input = program_.segments[error.segment - 1];
-      refused.start_q = result.steps.empty() ? result.start->q : result.steps.back().q;
+      refused.start_q = last_step_index_ == 0 ? result.start->q : last_q_;
       refused.simulated = false;
       result.segments.push_back(std::move(refused));
     }

@@ -9,6 +9,8 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <stdexcept>
+#include <utility>
 
 #include <fmt/core.h>
 
@@ -24,54 +26,6 @@ namespace {
   throw InputError(path, 0, "a writable output location",
                    fmt::format("{} failed: {}", what, std::strerror(error_number)));
 }
-
-/// Owns the temporary file: closes and unlinks it unless the content was published.
-class TemporaryFile {
- public:
-  TemporaryFile(const std::string& final_path, const std::filesystem::path& directory) {
-    static std::atomic<unsigned> counter{0};
-    const std::string base = std::filesystem::path(final_path).filename().string();
-    for (int attempt = 0; attempt < 100; ++attempt) {
-      name_ = (directory / fmt::format(".{}.{}.{}.grpvss-tmp", base, ::getpid(),
-                                       counter.fetch_add(1)))
-                  .string();
-      // O_EXCL: never reuse (or follow a symlink planted at) an existing name.
-      fd_ = ::open(name_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-      if (fd_ >= 0) return;
-      if (errno != EEXIST) throw_system(final_path, "creating a temporary file", errno);
-    }
-    throw_system(final_path, "creating a temporary file", EEXIST);
-  }
-  TemporaryFile(const TemporaryFile&) = delete;
-  TemporaryFile& operator=(const TemporaryFile&) = delete;
-  ~TemporaryFile() {
-    if (fd_ >= 0) ::close(fd_);
-    if (!name_.empty()) ::unlink(name_.c_str());
-  }
-
-  void write_all(const std::string& final_path, std::string_view content) {
-    while (!content.empty()) {
-      const ssize_t written = ::write(fd_, content.data(), content.size());
-      if (written < 0) {
-        if (errno == EINTR) continue;
-        throw_system(final_path, "writing", errno);
-      }
-      content.remove_prefix(static_cast<std::size_t>(written));
-    }
-    // Durable before it becomes visible: a crash must not publish an empty/partial file.
-    if (::fsync(fd_) != 0) throw_system(final_path, "fsync", errno);
-    const int fd = fd_;
-    fd_ = -1;
-    if (::close(fd) != 0) throw_system(final_path, "closing", errno);
-  }
-
-  const std::string& name() const { return name_; }
-  void forget() { name_.clear(); }
-
- private:
-  std::string name_;
-  int fd_ = -1;
-};
 
 /// Publishes `from` as `to` only if `to` does not exist; returns errno (0 on success).
 int publish_without_clobbering(const std::string& from, const std::string& to) {
@@ -93,28 +47,122 @@ void sync_directory(const std::filesystem::path& directory) {
 
 }  // namespace
 
-void write_file_atomically(const std::string& path, std::string_view content, bool force) {
-  if (path.empty()) throw InputError(path, 0, "a non-empty output path");
-  std::filesystem::path directory = std::filesystem::path(path).parent_path();
-  if (directory.empty()) directory = ".";
+/// Owns the temporary file: closes and unlinks it unless the content was published.
+class AtomicOutputFile::Temporary {
+ public:
+  Temporary(const std::string& final_path, const std::filesystem::path& directory) {
+    static std::atomic<unsigned> counter{0};
+    const std::string base = std::filesystem::path(final_path).filename().string();
+    for (int attempt = 0; attempt < 100; ++attempt) {
+      name_ = (directory / fmt::format(".{}.{}.{}.grpvss-tmp", base, ::getpid(),
+                                       counter.fetch_add(1)))
+                  .string();
+      // O_EXCL: never reuse (or follow a symlink planted at) an existing name.
+      fd_ = ::open(name_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+      if (fd_ >= 0) return;
+      if (errno != EEXIST) throw_system(final_path, "creating a temporary file", errno);
+    }
+    throw_system(final_path, "creating a temporary file", EEXIST);
+  }
+  Temporary(const Temporary&) = delete;
+  Temporary& operator=(const Temporary&) = delete;
+  ~Temporary() {
+    if (fd_ >= 0) ::close(fd_);
+    if (!name_.empty()) ::unlink(name_.c_str());
+  }
 
-  {
-    TemporaryFile temporary(path, directory);
-    temporary.write_all(path, content);
-    if (force) {
-      if (std::rename(temporary.name().c_str(), path.c_str()) != 0) {
-        throw_system(path, "renaming the temporary file over the output", errno);
+  void write_all(const std::string& final_path, std::string_view content) {
+    while (!content.empty()) {
+      const ssize_t written = ::write(fd_, content.data(), content.size());
+      if (written < 0) {
+        if (errno == EINTR) continue;
+        throw_system(final_path, "writing", errno);
       }
-      temporary.forget();  // the name now belongs to the output
-    } else {
-      const int error = publish_without_clobbering(temporary.name(), path);
-      if (error == EEXIST) throw OutputExistsError(path);
-      if (error != 0) throw_system(path, "publishing the output", error);
-      // After link(2) the temporary is a second name of the output: ~TemporaryFile drops it
-      // (after renameat2 it is already gone and unlink fails harmlessly).
+      content.remove_prefix(static_cast<std::size_t>(written));
     }
   }
-  sync_directory(directory);
+
+  void sync_and_close(const std::string& final_path) {
+    // Durable before it becomes visible: a crash must not publish an empty/partial file.
+    if (::fsync(fd_) != 0) throw_system(final_path, "fsync", errno);
+    const int fd = fd_;
+    fd_ = -1;
+    if (::close(fd) != 0) throw_system(final_path, "closing", errno);
+  }
+
+  const std::string& name() const { return name_; }
+  void forget() { name_.clear(); }
+
+ private:
+  std::string name_;
+  int fd_ = -1;
+};
+
+namespace {
+
+std::filesystem::path directory_of(const std::string& path) {
+  std::filesystem::path directory = std::filesystem::path(path).parent_path();
+  if (directory.empty()) directory = ".";
+  return directory;
+}
+
+// Small pieces are gathered to about this size before a write(2).
+constexpr std::size_t kWriteBufferBytes = std::size_t{1} << 20;
+
+}  // namespace
+
+AtomicOutputFile::AtomicOutputFile(std::string path, bool force)
+    : path_(std::move(path)), force_(force) {
+  if (path_.empty()) throw InputError(path_, 0, "a non-empty output path");
+  temporary_ = std::make_unique<Temporary>(path_, directory_of(path_));
+}
+
+AtomicOutputFile::~AtomicOutputFile() = default;
+
+void AtomicOutputFile::flush() {
+  temporary_->write_all(path_, buffer_);
+  buffer_.clear();
+}
+
+void AtomicOutputFile::write(std::string_view bytes) {
+  if (!temporary_) throw std::logic_error("AtomicOutputFile: write after commit");
+  if (buffer_.size() + bytes.size() <= kWriteBufferBytes) {
+    buffer_.append(bytes);
+    return;
+  }
+  flush();
+  if (bytes.size() >= kWriteBufferBytes) {
+    temporary_->write_all(path_, bytes);
+  } else {
+    buffer_.append(bytes);
+  }
+}
+
+void AtomicOutputFile::commit() {
+  if (!temporary_) throw std::logic_error("AtomicOutputFile: committed twice");
+  flush();
+  std::string().swap(buffer_);
+  temporary_->sync_and_close(path_);
+  if (force_) {
+    if (std::rename(temporary_->name().c_str(), path_.c_str()) != 0) {
+      throw_system(path_, "renaming the temporary file over the output", errno);
+    }
+    temporary_->forget();  // the name now belongs to the output
+  } else {
+    const int error = publish_without_clobbering(temporary_->name(), path_);
+    if (error == EEXIST) throw OutputExistsError(path_);
+    if (error != 0) throw_system(path_, "publishing the output", error);
+    // After link(2) the temporary is a second name of the output: ~Temporary drops it
+    // (after renameat2 it is already gone and unlink fails harmlessly).
+  }
+  temporary_.reset();
+  sync_directory(directory_of(path_));
+}
+
+void write_file_atomically(const std::string& path, std::string_view content, bool force) {
+  AtomicOutputFile output(path, force);
+  output.write(content);
+  output.commit();
 }
 
 }  // namespace grpvss::report

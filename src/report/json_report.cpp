@@ -112,6 +112,15 @@ class JsonWriter {
   }
 
   json step(const certify::StepRecord& record) const {
+    return step_json(record, types_);
+  }
+
+  static json step_json(const certify::StepRecord& record, const std::vector<JointType>& types) {
+    const auto joint_values = [&types](const Eigen::VectorXd& q, const char* what) {
+      json values = json::array();
+      for (double value : joint_values_in_file_units(q, types)) values.push_back(finite(value, what));
+      return values;
+    };
     json links = json::array();
     for (std::size_t k = 0; k < record.links.size(); ++k) {
       links.push_back(link_record(static_cast<int>(k), record.links[k]));
@@ -205,6 +214,17 @@ class JsonWriter {
 nlohmann::json report_to_json(const certify::VerificationResult& result, const RobotModel& robot,
                               const InputDigests& digests, const std::string& generated_at) {
   return JsonWriter(result, robot).render(digests, generated_at);
+}
+
+nlohmann::json report_segment_to_json(const certify::SegmentRecord& segment,
+                                      const RobotModel& robot) {
+  static const certify::VerificationResult kNoRun;
+  return JsonWriter(kNoRun, robot).segment(segment);
+}
+
+nlohmann::json report_step_to_json(const certify::StepRecord& step,
+                                   const std::vector<JointType>& joint_types) {
+  return JsonWriter::step_json(step, joint_types);
 }
 
 nlohmann::json report_to_json(const certify::VerificationResult& result, const RobotModel& robot,

@@ -114,14 +114,15 @@ nlohmann::json scene_to_json(const certify::VerificationResult& result, const Ro
     entry["obstacle"] = static_cast<int>(o);
     obstacles.push_back(entry);
   }
-  const kinematics::KinematicChain chain = kinematics::make_chain(robot);
-  kinematics::Workspace workspace(robot);
+  SceneStepPoses poses(robot);
   json steps = json::array();
-  for (const auto& step : result.steps) {
-    steps.push_back({{"step", step.index}, {"X_WL", link_poses(chain, step.q, workspace)}});
-  }
+  for (const auto& step : result.steps) steps.push_back(poses.step(step));
   json start = nullptr;
-  if (result.start) start = {{"step", 0}, {"X_WL", link_poses(chain, result.start->q, workspace)}};
+  if (result.start) {
+    certify::StepRecord start_step = *result.start;
+    start_step.index = 0;
+    start = poses.step(start_step);
+  }
   return {{"expansion",
            {{"radius", finite(cell.expansion_radius(), "expansion radius")},
             {"shape", offset_shape == geometry::OffsetShape::kCube ? "cube" : "rhombicuboctahedron"}}},
@@ -129,6 +130,23 @@ nlohmann::json scene_to_json(const certify::VerificationResult& result, const Ro
           {"obstacles", obstacles},
           {"start", start},
           {"steps", steps}};
+}
+
+struct SceneStepPoses::Kinematics {
+  explicit Kinematics(const RobotModel& robot)
+      : chain(kinematics::make_chain(robot)), workspace(robot) {}
+  kinematics::KinematicChain chain;
+  kinematics::Workspace workspace;
+};
+
+SceneStepPoses::SceneStepPoses(const RobotModel& robot)
+    : kinematics_(std::make_unique<Kinematics>(robot)) {}
+
+SceneStepPoses::~SceneStepPoses() = default;
+
+nlohmann::json SceneStepPoses::step(const certify::StepRecord& step) {
+  return {{"step", step.index},
+          {"X_WL", link_poses(kinematics_->chain, step.q, kinematics_->workspace)}};
 }
 
 }  // namespace grpvss::report

@@ -1,10 +1,15 @@
 #include "grpvss/report/thesis_output.hpp"
 
+#include <algorithm>
+#include <functional>
+#include <unordered_set>
 #include <stdexcept>
+#include <utility>
 #include <variant>
 
 #include <fmt/core.h>
 
+#include "grpvss/report/atomic_output.hpp"
 #include "grpvss/report/file_units.hpp"
 
 namespace grpvss::report {
@@ -27,12 +32,41 @@ std::string joined(const std::vector<double>& values, const char* separator) {
   return text;
 }
 
+std::vector<double> in_file_units(const Eigen::VectorXd& q, const std::vector<JointType>& types) {
+  return joint_values_in_file_units(q, types);
+}
+
+}  // namespace
+
+std::string thesis_step_block(const certify::StepRecord& step,
+                              const std::vector<JointType>& joint_types) {
+  std::string out = fmt::format("IN {}TH STEP, THE JOINT VALUES ARE\n", step.index);
+  out += joined(in_file_units(step.q, joint_types), " ") + "\n\n";
+  out += fmt::format("THERE ARE {} INTERFERENCE POINTS IN THIS STEP\n\n",
+                     step.interference_points.size());
+  if (step.interference_points.empty()) return out;
+  for (const certify::InterferencePoint& point : step.interference_points) {
+    out += joined({point.p_W.x(), point.p_W.y(), point.p_W.z()}, "\t") + "\n";
+  }
+  out += "\n";
+  return out;
+}
+
+namespace {
+
+/// The A.3 layout around the steps; where the steps come from (the result, or a stream's
+/// scratch file) and where the text goes are the caller's.
 class ThesisWriter {
  public:
-  ThesisWriter(const certify::VerificationResult& result, const std::vector<JointType>& types)
-      : result_(result), types_(types) {}
+  using Sink = std::function<void(const std::string&)>;
+  using StepsOf = std::function<void(int segment)>;
 
-  std::string render() {
+  ThesisWriter(const certify::VerificationResult& result, const std::vector<JointType>& types,
+               Sink sink)
+      : result_(result), types_(types), sink_(std::move(sink)) {}
+
+  /// `steps_of(k)` emits segment k's step blocks; `total`, `collisions`: the closing lines.
+  void render(const StepsOf& steps_of, int total, bool collisions) {
     line(fmt::format("THE TOLERANCE VALUE = {}", fixed2(result_.tolerance)));
     blank();
     // The only line A.3 does not have: a certified run steps differently from the thesis.
@@ -40,36 +74,21 @@ class ThesisWriter {
       line("THE RESOLUTION MODE = CERTIFIED");
       blank();
     }
-    std::size_t steps_written = 0;
     for (const certify::SegmentRecord& segment : result_.segments) {
       segment_block(segment);
-      for (const certify::StepRecord& step : result_.steps) {
-        if (step.segment != segment.number) continue;
-        step_block(step);
-        ++steps_written;
-      }
+      steps_of(segment.number);
       for (const certify::PathError& error : result_.errors) {
         if (error.segment == segment.number) error_block(error);
       }
     }
-    if (steps_written != result_.steps.size()) {
-      throw std::logic_error("thesis output: a step belongs to no segment record");
-    }
     for (const certify::PathError& error : result_.errors) {
       if (!has_segment(error.segment)) error_block(error);
     }
-    line(fmt::format("TOTAL {} STEPS IN THIS PATH", total_steps(result_)));
-    line(thesis_reports_collision(result_) ? "COLLISIONS DETECTED IN THIS PATH"
-                                           : "NO COLLISION DETECTED IN THIS PATH");
-    return std::move(out_);
+    line(fmt::format("TOTAL {} STEPS IN THIS PATH", total));
+    line(collisions ? "COLLISIONS DETECTED IN THIS PATH" : "NO COLLISION DETECTED IN THIS PATH");
   }
 
- private:
-  void line(const std::string& text) {
-    out_ += text;
-    out_ += '\n';
-  }
-  void blank() { out_ += '\n'; }
+  void emit(const std::string& text) { sink_(text); }
 
   bool has_segment(int number) const {
     for (const auto& segment : result_.segments) {
@@ -77,6 +96,10 @@ class ThesisWriter {
     }
     return false;
   }
+
+ private:
+  void line(const std::string& text) { sink_(text + '\n'); }
+  void blank() { sink_("\n"); }
 
   std::vector<double> in_file_units(const Eigen::VectorXd& q) const {
     return joint_values_in_file_units(q, types_);
@@ -127,20 +150,6 @@ class ThesisWriter {
     blank();
   }
 
-  void step_block(const certify::StepRecord& step) {
-    line(fmt::format("IN {}TH STEP, THE JOINT VALUES ARE", step.index));
-    line(joined(in_file_units(step.q), " "));
-    blank();
-    line(fmt::format("THERE ARE {} INTERFERENCE POINTS IN THIS STEP",
-                     step.interference_points.size()));
-    blank();
-    if (step.interference_points.empty()) return;
-    for (const certify::InterferencePoint& point : step.interference_points) {
-      line(joined({point.p_W.x(), point.p_W.y(), point.p_W.z()}, "\t"));
-    }
-    blank();
-  }
-
   void error_block(const certify::PathError& error) {
     line("THIS PATH IS NOT QUALIFIED.");
     line(fmt::format("THE ERROR IS TYPE {}", error.code));
@@ -150,18 +159,19 @@ class ThesisWriter {
 
   const certify::VerificationResult& result_;
   const std::vector<JointType>& types_;
-  std::string out_;
+  Sink sink_;
 };
 
 }  // namespace
 
+bool step_reports_collision(const certify::StepRecord& step) {
+  return !step.interference_points.empty() || step.expanded_interferes || step.unexpanded_collides;
+}
+
 bool thesis_reports_collision(const certify::VerificationResult& result) {
   if (result.collision_step) return true;
   for (const certify::StepRecord& step : result.steps) {
-    if (!step.interference_points.empty() || step.expanded_interferes ||
-        step.unexpanded_collides) {
-      return true;
-    }
+    if (step_reports_collision(step)) return true;
   }
   return false;
 }
@@ -177,7 +187,65 @@ int total_steps(const certify::VerificationResult& result) {
 
 std::string render_thesis_output(const certify::VerificationResult& result,
                                  const std::vector<JointType>& joint_types) {
-  return ThesisWriter(result, joint_types).render();
+  std::string out;
+  ThesisWriter writer(result, joint_types, [&out](const std::string& text) { out += text; });
+  std::size_t steps_written = 0;
+  const auto steps_of = [&](int segment) {
+    for (const certify::StepRecord& step : result.steps) {
+      if (step.segment != segment) continue;
+      out += thesis_step_block(step, joint_types);
+      ++steps_written;
+    }
+  };
+  writer.render(steps_of, total_steps(result), thesis_reports_collision(result));
+  if (steps_written != result.steps.size()) {
+    throw std::logic_error("thesis output: a step belongs to no segment record");
+  }
+  return out;
+}
+
+ThesisOutputStream::ThesisOutputStream(std::string path, bool force,
+                                       std::vector<JointType> joint_types)
+    : path_(std::move(path)), force_(force), joint_types_(std::move(joint_types)),
+      steps_(path_) {}
+
+ThesisOutputStream::~ThesisOutputStream() = default;
+
+void ThesisOutputStream::on_step(const certify::StepRecord& step) {
+  if (step.index <= last_index_) throw std::logic_error("report: step indices do not increase");
+  last_index_ = step.index;
+  collisions_ |= step_reports_collision(step);
+  if (ranges_.empty() || ranges_.back().segment != step.segment) {
+    // The verifier runs the segments in order: increasing numbers keep the lookup a search.
+    if (!ranges_.empty() && step.segment < ranges_.back().segment) {
+      throw std::logic_error("thesis output stream: the steps' segments do not increase");
+    }
+    ranges_.push_back({step.segment, steps_.size(), steps_.size()});
+  }
+  steps_.append(thesis_step_block(step, joint_types_));
+  ranges_.back().end = steps_.size();
+}
+
+void ThesisOutputStream::finish(const certify::VerificationResult& result) {
+  AtomicOutputFile output(path_, force_);
+  ThesisWriter writer(result, joint_types_, [&output](const std::string& text) { output.write(text); });
+  std::unordered_set<int> recorded;
+  for (const certify::SegmentRecord& segment : result.segments) recorded.insert(segment.number);
+  for (const SegmentRange& range : ranges_) {
+    if (recorded.count(range.segment) == 0) {
+      throw std::logic_error("thesis output: a step belongs to no segment record");
+    }
+  }
+  const auto steps_of = [&](int segment) {
+    const auto found = std::lower_bound(
+        ranges_.begin(), ranges_.end(), segment,
+        [](const SegmentRange& range, int number) { return range.segment < number; });
+    if (found != ranges_.end() && found->segment == segment) {
+      steps_.copy_to(output, found->begin, found->end);
+    }
+  };
+  writer.render(steps_of, last_index_, collisions_ || result.collision_step.has_value());
+  output.commit();
 }
 
 std::string render_thesis_output(const certify::VerificationResult& result,

@@ -71,7 +71,18 @@ struct Certificate {
 };
 
 nlohmann::json certificate_to_json(const Certificate& certificate);
+/// One element of a segment's "steps" in certificate_to_json().
+nlohmann::json certificate_step_to_json(const StepCertificate& step);
+/// One element of "segments" in certificate_to_json(), its steps included.
+nlohmann::json certificate_segment_to_json(const SegmentCertificate& segment);
 /// \throws InputError (file = `file_name`) when the document is not a well-formed certificate.
 Certificate certificate_from_json(const nlohmann::json& document, const std::string& file_name);
+/// Everything but the segments (`segments` must be present; it is not read).
+/// \throws InputError as certificate_from_json().
+Certificate certificate_header_from_json(const nlohmann::json& document,
+                                         const std::string& file_name);
+/// One element of `segments`. \throws InputError as certificate_from_json().
+SegmentCertificate segment_certificate_from_json(const nlohmann::json& segment,
+                                                 const std::string& file_name);
 
 }  // namespace grpvss::certify

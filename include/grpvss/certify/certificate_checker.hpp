@@ -6,6 +6,7 @@
 /// tolerance offsets itself and checks each recorded number against them.
 /// proof: proofs/README.md (every lemma the check relies on)
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -34,5 +35,31 @@ CheckReport check_certificate(const RobotModel& robot, const Environment& enviro
                               const PathProgram& program,
                               const motion::KinematicsAccess& kinematics,
                               const Certificate& certificate, const CheckOptions& options = {});
+
+/// \brief check_certificate() fed one segment at a time, so that a certificate file can be read
+/// and checked in memory independent of its number of steps (`grpvss check-certificate`,
+/// docs/reliability.md#resource-bounds). The same report as check_certificate() of the
+/// certificate with those segments.
+class CertificateCheck {
+ public:
+  /// `header`: the certificate without its segments (any it has are dropped); `segment_count`:
+  /// how many add_segment() calls will follow. Checks the header at once.
+  CertificateCheck(const RobotModel& robot, const Environment& environment,
+                   const PathProgram& program, const motion::KinematicsAccess& kinematics,
+                   Certificate header, std::size_t segment_count, const CheckOptions& options = {});
+  CertificateCheck(const CertificateCheck&) = delete;
+  CertificateCheck& operator=(const CertificateCheck&) = delete;
+  ~CertificateCheck();
+
+  /// The next segment in certificate order. \throws std::logic_error beyond `segment_count`.
+  void add_segment(const SegmentCertificate& segment);
+
+  /// The report, after the last segment. \throws std::logic_error if segments are missing.
+  CheckReport finish();
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
 
 }  // namespace grpvss::certify

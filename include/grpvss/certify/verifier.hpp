@@ -17,6 +17,7 @@
 
 #include "grpvss/certify/certificate.hpp"
 #include "grpvss/certify/robot_cell.hpp"
+#include "grpvss/certify/verification_observer.hpp"
 #include "grpvss/certify/verification_result.hpp"
 #include "grpvss/geometry/minkowski_offset.hpp"
 #include "grpvss/model/environment.hpp"
@@ -53,6 +54,14 @@ struct VerifyOptions {
   /// Optional: called with the fraction of the path done (0..1, non-decreasing) after each
   /// accepted step, e.g. for a progress bar. Never changes the result.
   std::function<void(double fraction)> progress;
+  /// Optional: told every step and certificate step as the run produces them (in this order;
+  /// not owned, must outlive verify()). Streaming writers use them (docs/reliability.md#resource-bounds).
+  std::vector<VerificationObserver*> observers;
+  /// true: VerificationResult::steps and the certificate's per-segment steps hold every step.
+  /// false: both stay empty (the observers saw them) and memory does not grow with the number
+  /// of steps; everything else in the result (segments, errors, start, summaries, verdict) is
+  /// the same.
+  bool keep_steps = true;
 };
 
 struct VerificationRun {

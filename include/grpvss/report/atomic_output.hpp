@@ -5,6 +5,7 @@
 /// A reader (or a crash) never sees a partial output: the content goes to a temporary file in
 /// the same directory, is fsync'ed, and only then appears under its final name in one step.
 
+#include <memory>
 #include <string>
 #include <string_view>
 
@@ -35,5 +36,38 @@ class OutputExistsError : public InputError {
 /// \throws InputError (file = `path`, line 0) when the directory is missing or not writable,
 ///         the disk is full, or `path` names a directory.
 void write_file_atomically(const std::string& path, std::string_view content, bool force);
+
+/// \brief The same guarantees for an output written piece by piece (streaming writers,
+/// docs/reliability.md#resource-bounds): the pieces go to the temporary file (buffered), and
+/// commit() fsyncs and publishes it exactly as write_file_atomically() does. Destroyed without
+/// a successful commit() (an exception on the way), it removes the temporary file: no partial
+/// output is ever visible under `path`.
+class AtomicOutputFile {
+ public:
+  /// Creates the temporary file next to `path`.
+  /// \throws InputError (file = `path`) when the directory is missing or not writable.
+  AtomicOutputFile(std::string path, bool force);
+  AtomicOutputFile(const AtomicOutputFile&) = delete;
+  AtomicOutputFile& operator=(const AtomicOutputFile&) = delete;
+  ~AtomicOutputFile();
+
+  /// Appends `bytes`. \throws InputError (disk full, ...).
+  void write(std::string_view bytes);
+
+  /// Publishes the content under `path` (at most once).
+  /// \throws OutputExistsError when `path` exists and `force` is false; InputError otherwise.
+  void commit();
+
+  const std::string& path() const { return path_; }
+
+ private:
+  class Temporary;
+  void flush();
+
+  std::string path_;
+  bool force_ = false;
+  std::unique_ptr<Temporary> temporary_;
+  std::string buffer_;
+};
 
 }  // namespace grpvss::report

@@ -12,6 +12,7 @@
 /// except for the one field `generated_at`.
 
 #include <string>
+#include <vector>
 
 #include <nlohmann/json_fwd.hpp>
 
@@ -33,6 +34,16 @@ nlohmann::json report_to_json(const certify::VerificationResult& result, const R
 /// Same with a given `generated_at` (any string; tests and reproducible builds pin it).
 nlohmann::json report_to_json(const certify::VerificationResult& result, const RobotModel& robot,
                               const InputDigests& digests, const std::string& generated_at);
+
+/// One element of the report's `segments` array, as report_to_json() writes it.
+/// \throws std::logic_error on a NaN or a wrong-sized joint vector.
+nlohmann::json report_segment_to_json(const certify::SegmentRecord& segment,
+                                      const RobotModel& robot);
+
+/// One element of the report's `steps` array, as report_to_json() writes it; `joint_types[i]`
+/// is the type of joint i+1. \throws std::logic_error on a NaN or a wrong-sized joint vector.
+nlohmann::json report_step_to_json(const certify::StepRecord& step,
+                                   const std::vector<JointType>& joint_types);
 
 /// The report as text: 2-space indentation, keys sorted, final newline.
 std::string render_json_report(const nlohmann::json& report);

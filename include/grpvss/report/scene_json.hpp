@@ -9,6 +9,8 @@
 /// X_WL from forward kinematics of the step's joint values. Deterministic: the same inputs give
 /// the same numbers bit for bit (no clock, no randomness).
 
+#include <memory>
+
 #include <nlohmann/json_fwd.hpp>
 
 #include "grpvss/certify/verification_result.hpp"
@@ -30,5 +32,23 @@ geometry::OffsetShape default_offset_shape(certify::ResolutionMode mode);
 /// \throws std::logic_error when a step's joint vector does not match the robot.
 nlohmann::json scene_to_json(const certify::VerificationResult& result, const RobotModel& robot,
                              const Environment& environment, geometry::OffsetShape offset_shape);
+
+/// \brief The elements of the scene's `steps` array one at a time, for writers that stream
+/// the steps (docs/reliability.md#resource-bounds): step(s) is the element scene_to_json()
+/// writes for s.
+class SceneStepPoses {
+ public:
+  explicit SceneStepPoses(const RobotModel& robot);
+  SceneStepPoses(const SceneStepPoses&) = delete;
+  SceneStepPoses& operator=(const SceneStepPoses&) = delete;
+  ~SceneStepPoses();
+
+  /// `{"step": index, "X_WL": [...]}`. \throws std::logic_error on a joint vector of the wrong size.
+  nlohmann::json step(const certify::StepRecord& step);
+
+ private:
+  struct Kinematics;
+  std::unique_ptr<Kinematics> kinematics_;
+};
 
 }  // namespace grpvss::report

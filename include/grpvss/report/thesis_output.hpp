@@ -14,8 +14,10 @@
 #include <string>
 #include <vector>
 
+#include "grpvss/certify/verification_observer.hpp"
 #include "grpvss/certify/verification_result.hpp"
 #include "grpvss/model/robot_model.hpp"
+#include "grpvss/report/spill_file.hpp"
 
 namespace grpvss::report {
 
@@ -29,6 +31,48 @@ std::string render_thesis_output(const certify::VerificationResult& result,
 /// Same, with the joint types taken from `robot`.
 std::string render_thesis_output(const certify::VerificationResult& result,
                                  const RobotModel& robot);
+
+/// One step's block: `IN nTH STEP, THE JOINT VALUES ARE`, the values, the interference count
+/// and the points, with their blank lines.
+std::string thesis_step_block(const certify::StepRecord& step,
+                              const std::vector<JointType>& joint_types);
+
+/// \brief The thesis output file written while the verification runs, memory independent of
+/// the number of steps (docs/reliability.md#resource-bounds): each step's block goes to a
+/// scratch file as it arrives (SpillFile), finish() writes the file around them. The bytes are
+/// those of render_thesis_output() for the same run. Nothing appears under `path` before
+/// finish() succeeds (AtomicOutputFile).
+class ThesisOutputStream : public certify::VerificationObserver {
+ public:
+  /// \throws InputError when no scratch file can be created next to `path`.
+  ThesisOutputStream(std::string path, bool force, std::vector<JointType> joint_types);
+  ~ThesisOutputStream() override;
+
+  /// \throws std::logic_error if the indices do not increase or a segment's steps are split.
+  void on_step(const certify::StepRecord& step) override;
+
+  /// Writes and publishes the file; `result` is the finished run (its `steps` are not read).
+  /// \throws OutputExistsError, InputError as write_file_atomically(); std::logic_error when a
+  ///         step's segment has no record.
+  void finish(const certify::VerificationResult& result);
+
+ private:
+  struct SegmentRange {
+    int segment;
+    std::uint64_t begin;  ///< byte range of the segment's step blocks in `steps_`
+    std::uint64_t end;
+  };
+  std::string path_;
+  bool force_;
+  std::vector<JointType> joint_types_;
+  SpillFile steps_;
+  std::vector<SegmentRange> ranges_;  ///< one per segment with steps, in path order
+  int last_index_ = 0;
+  bool collisions_ = false;
+};
+
+/// True when a step makes the thesis print `COLLISIONS DETECTED IN THIS PATH`.
+bool step_reports_collision(const certify::StepRecord& step);
 
 /// True when the thesis would print `COLLISIONS DETECTED IN THIS PATH`: some step has
 /// interference points, an interfering expanded robot, or a colliding unexpanded robot.

@@ -1,8 +1,23 @@
 #include "interactive/verdict_summary.hpp"
 
+#include <algorithm>
+
 #include <fmt/core.h>
 
 namespace grpvss::app {
+namespace {
+
+// Also without the steps (VerifyOptions::keep_steps false): each segment records its last one.
+int last_step_index(const certify::VerificationResult& result) {
+  if (!result.steps.empty()) return result.steps.back().index;
+  int last = 0;
+  for (const certify::SegmentRecord& segment : result.segments) {
+    last = std::max(last, segment.last_step);
+  }
+  return last;
+}
+
+}  // namespace
 
 std::string verdict_summary(const certify::VerificationResult& result) {
   const bool certified = result.mode == certify::ResolutionMode::kCertified;
@@ -10,7 +25,7 @@ std::string verdict_summary(const certify::VerificationResult& result) {
                                  certified ? "" : " (thesis mode: NOT certified)");
   text += fmt::format("mode: {}  tolerance: {}  steps: {}  cycle time: {:.3f} s\n",
                       certify::to_string(result.mode), result.tolerance,
-                      result.steps.empty() ? 0 : result.steps.back().index,
+                      last_step_index(result),
                       result.total_cycle_time);
   if (result.collision_step) text += fmt::format("first collision at step {}\n", *result.collision_step);
   for (const certify::PathError& error : result.errors) {
