@@ -179,6 +179,19 @@ TEST_F(ClearCell, CheckerRejectsARemovedStep) {
   EXPECT_FALSE(accepted(document_));
 }
 
+TEST_F(ClearCell, CheckerRejectsACleanClaimOnASegmentCutToItsStart) {
+  // A segment reduced to its start step is accepted only as a stopped path (ERROR); a CLEAR
+  // claim over it must fail because the motion is no longer covered.
+  auto& steps = document_["segments"][0]["steps"];
+  ASSERT_GE(steps.size(), 2u);
+  steps.erase(steps.begin() + 1, steps.end());
+  const CheckReport report = check(cell_, certificate_from_json(document_, "cert.json"));
+  EXPECT_FALSE(report.accepted);
+  ASSERT_FALSE(report.failures.empty());
+  EXPECT_NE(report.failures.back().find("do not cover the whole path"), std::string::npos)
+      << report.failures.back();
+}
+
 TEST_F(ClearCell, CheckerRejectsAWeakenedWitness) {
   // Moving the slab's obstacle side into the obstacle breaks n.b >= offset_b.
   for (auto& step : document_["segments"][0]["steps"]) {
