@@ -129,6 +129,25 @@ TEST(ConvexPolytopeTemplate, RandomPrismsUnderRandomPosesEqualTheFullHull) {
   EXPECT_GE(accepted, 295);
 }
 
+TEST(ConvexPolytopeTemplate, LargeHullsUseTheSparseEdgeTableAndStillEqualTheFullHull) {
+  // 300 points on a sphere (all extreme): more vertices than the dense half-edge table takes.
+  std::mt19937_64 rng(1988);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  Points sphere;
+  for (int i = 0; i < 300; ++i) {
+    sphere.push_back(5.0 * Eigen::Vector3d(normal(rng), normal(rng), normal(rng)).normalized());
+  }
+  const Points vertices = ConvexPolytope::from_points(sphere).vertices();
+  ASSERT_GT(vertices.size(), 128u);
+  const ConvexPolytope reference = ConvexPolytope::from_points(vertices);
+  for (int pose = 0; pose < 5; ++pose) {
+    const Points points_W = placed(vertices, random_pose(rng));
+    const std::optional<ConvexPolytope> fast = ConvexPolytope::from_template(points_W, reference);
+    ASSERT_TRUE(fast.has_value());
+    expect_same_polytope(ConvexPolytope::from_points(points_W), *fast);
+  }
+}
+
 TEST(ConvexPolytopeTemplate, AnIdentityPlacementReproducesTheReferenceExactly) {
   const Points cube = test::cube(Eigen::Vector3d(-1.0, -2.0, 0.5), 2.0);
   const ConvexPolytope reference = ConvexPolytope::from_points(cube);

@@ -25,6 +25,7 @@
 #include <stdexcept>
 #include <string>
 #include <tuple>
+#include <unordered_map>
 #include <vector>
 
 #include "grpvss/geometry/convex_polytope.hpp"
@@ -142,6 +143,34 @@ int orientation_sign(const Eigen::Vector3d& p, const Eigen::Vector3d& q, const E
                       u[2] * (w[0] * z[1] - w[1] * z[0]);
   return static_cast<int>(CGAL::sign(exact));
 }
+
+/// Directed-edge table of a triangulated surface on n vertices: u->v -> half-edge id.
+class HalfEdgeTable {
+ public:
+  explicit HalfEdgeTable(std::size_t n) : n_(n) {
+    if (n_ <= kDenseLimit) dense_.assign(n_ * n_, -1);
+  }
+  int get(std::size_t u, std::size_t v) const {
+    if (!dense_.empty()) return dense_[u * n_ + v];
+    const auto it = sparse_.find(u * n_ + v);
+    return it == sparse_.end() ? -1 : it->second;
+  }
+  void set(std::size_t u, std::size_t v, int id) {
+    if (!dense_.empty()) {
+      dense_[u * n_ + v] = id;
+    } else if (id < 0) {
+      sparse_.erase(u * n_ + v);
+    } else {
+      sparse_[u * n_ + v] = id;
+    }
+  }
+
+ private:
+  static constexpr std::size_t kDenseLimit = 128;  // 64 KiB of ints
+  std::size_t n_;
+  std::vector<int> dense_;
+  std::unordered_map<std::size_t, int> sparse_;
+};
 
 struct UnionFind {
   explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
@@ -500,7 +529,6 @@ std::optional<ConvexPolytope> ConvexPolytopeBuilder::build_from_template(
   // The reference's faces, fan-triangulated. Placement rounding bends planar faces and can
   // bend nearly flat edges the other way: every reflex edge is flipped (Lawson), and the
   // surface is accepted only when no edge is reflex (H1), decided exactly.
-  if (n > 4096) return std::nullopt;  // the dense half-edge table below would be too large
   std::vector<Triangle> triangles;
   triangles.reserve(2 * n);
   for (const auto& loop : reference.faces()) {
@@ -509,14 +537,15 @@ std::optional<ConvexPolytope> ConvexPolytopeBuilder::build_from_template(
                            static_cast<std::size_t>(loop[i + 1])});
     }
   }
-  // half_edge[u n + v] = 3 t + k for the directed edge u->v at corner k of triangle t.
-  std::vector<int> half_edge(n * n, -1);
+  // half_edge(u, v) = 3 t + k for the directed edge u->v at corner k of triangle t, -1 if
+  // absent: a dense table for the usual small hulls, a hash map beyond.
+  HalfEdgeTable half_edge(n);
   std::vector<signed char> edge_signs(3 * triangles.size(), 0);
   std::vector<char> decided(3 * triangles.size(), 0);
   const auto link = [&](std::size_t t, bool present) {
     for (int k = 0; k < 3; ++k) {
-      half_edge[triangles[t][k] * n + triangles[t][(k + 1) % 3]] =
-          present ? static_cast<int>(3 * t + k) : -1;
+      half_edge.set(triangles[t][k], triangles[t][(k + 1) % 3],
+                    present ? static_cast<int>(3 * t + k) : -1);
       decided[3 * t + k] = 0;
     }
   };
@@ -524,7 +553,7 @@ std::optional<ConvexPolytope> ConvexPolytopeBuilder::build_from_template(
   std::vector<std::array<std::size_t, 2>> pending;
   for (const Triangle& t : triangles) {
     for (int k = 0; k < 3; ++k) {
-      if (half_edge[t[(k + 1) % 3] * n + t[k]] < 0) {
+      if (half_edge.get(t[(k + 1) % 3], t[k]) < 0) {
         throw std::logic_error("placed hull template is not a closed surface");
       }
       if (t[k] < t[(k + 1) % 3]) pending.push_back({t[k], t[(k + 1) % 3]});
@@ -535,8 +564,8 @@ std::optional<ConvexPolytope> ConvexPolytopeBuilder::build_from_template(
   while (!pending.empty()) {
     const auto [u, v] = pending.back();
     pending.pop_back();
-    const int near = half_edge[u * n + v];
-    const int far = half_edge[v * n + u];
+    const int near = half_edge.get(u, v);
+    const int far = half_edge.get(v, u);
     if (near < 0 || far < 0) continue;  // flipped away meanwhile
     const std::size_t t = static_cast<std::size_t>(near) / 3, t2 = static_cast<std::size_t>(far) / 3;
     const std::size_t c = triangles[t][(near % 3 + 2) % 3];
@@ -549,7 +578,7 @@ std::optional<ConvexPolytope> ConvexPolytopeBuilder::build_from_template(
       continue;
     }
     // Reflex edge u-v: replace triangles (u, v, c), (v, u, d) by (u, d, c), (d, v, c).
-    if (half_edge[c * n + d] >= 0 || ++flips > flip_limit) return std::nullopt;
+    if (half_edge.get(c, d) >= 0 || ++flips > flip_limit) return std::nullopt;
     link(t, false);
     link(t2, false);
     triangles[t] = {u, d, c};
@@ -557,7 +586,7 @@ std::optional<ConvexPolytope> ConvexPolytopeBuilder::build_from_template(
     link(t, true);
     link(t2, true);
     // The new diagonal's sign is exactly -side (same four points, two of them swapped).
-    const int dc = half_edge[d * n + c], cd = half_edge[c * n + d];
+    const int dc = half_edge.get(d, c), cd = half_edge.get(c, d);
     edge_signs[dc] = edge_signs[cd] = static_cast<signed char>(-side);
     decided[dc] = decided[cd] = 1;
     for (const auto& [a, b] : {std::array<std::size_t, 2>{u, d}, {d, v}, {v, c}, {c, u}}) {
