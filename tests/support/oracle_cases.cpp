@@ -279,7 +279,10 @@ OracleCase random_scara_cp_case(std::uint64_t seed) {
   std::vector<Eigen::VectorXd> visited{q};
   const int n = robot.joint_count();
   for (int s = 0; s < segments; ++s) {
-    const Eigen::VectorXd target = random_joint_move(rng, robot, q, fraction);
+    // One move in ten is long (half the joint ranges): its line may leave the workspace, wrap
+    // joint 4 or pass the elbow singularity (errors 5, 7, 8: never CLEAR).
+    const bool long_move = uniform(rng, 0, 1) < 0.1;
+    const Eigen::VectorXd target = random_joint_move(rng, robot, q, long_move ? 0.5 : fraction);
     // At least one CP line; otherwise CP with probability 0.7.
     if (s == 0 || uniform(rng, 0, 1) < 0.7) {
       add_visited(visited, q, target);  // the line's neighbourhood, roughly

@@ -8,7 +8,8 @@
 ///   in a random direction; PTP joint segments; numeric IK (unused by PTP(JCS)).
 /// - `random_scara_cp_case`: robots of the IBM 7545 structure (R, R, P, R with random link
 ///   lengths, offsets, limits and tool hulls), closed-form IK, paths mixing CP lines (with a
-///   yaw change) and PTP joint segments.
+///   yaw change) and PTP joint segments; one move in ten is long (half the joint ranges), so
+///   some lines leave the workspace or need a joint jump (errors 5, 7, 8).
 ///
 /// Both: tolerance log-uniform from tiny (0.02) to large (2); 1-3 obstacles placed next to a
 /// hull vertex at a configuration on the commanded path, with a signed face gap from -0.5 to
