@@ -36,21 +36,17 @@ bool sphere_witness(const Eigen::Vector3d& center_a, double radius_a,
   return true;
 }
 
-// Radii are certified lower bounds: every sum or difference forming one is rounded down.
-double add_down(double a, double b) {
-  geometry::rounding::UpwardRoundingScope upward;
-  return geometry::rounding::add_down(a, b);
-}
-double sub_down(double a, double b) {
-  geometry::rounding::UpwardRoundingScope upward;
-  return geometry::rounding::sub_down(a, b);
-}
+// Radii are certified lower bounds: every sum or difference forming one is rounded down
+// (exactly, without switching the rounding mode: directed_rounding.hpp).
+double add_down(double a, double b) { return geometry::rounding::nearest_mode_add_down(a, b); }
+double sub_down(double a, double b) { return geometry::rounding::nearest_mode_sub_down(a, b); }
 
 double placed_sphere_radius(double radius_L, double placement_error) {
   // |p~ - c~| <= |p - c| + 2 eps for rigidly placed p, c computed with error < eps each.
   namespace r = geometry::rounding;
-  r::UpwardRoundingScope upward;
-  return r::add_up(radius_L, r::mul_up(2.0, placement_error));
+  const double twice_error = 2.0 * placement_error;  // exact (no overflow for a valid cell)
+  if (!std::isfinite(twice_error)) return std::numeric_limits<double>::infinity();
+  return r::nearest_mode_add_up(radius_L, twice_error);
 }
 
 }  // namespace
@@ -188,9 +184,11 @@ void CellProbe::probe_hull(int hull_index, bool with_points, ProbeResult& out) {
     out.any_expanded_interference = true;
     out.evidence.push_back(evidence);
     if (with_points) {
-      // The placed offset is hulled once per hull; the obstacle's hull was built once.
+      // The placed offset is hulled once per hull, from its link-frame template; the
+      // obstacle's hull was built once.
       if (!expanded_polytope_) {
-        expanded_polytope_ = geometry::ConvexPolytope::from_points(placed_expanded_);
+        expanded_polytope_ = geometry::ConvexPolytope::from_points_like(
+            placed_expanded_, cell.expanded_polytope_L(static_cast<std::size_t>(hull_index)));
       }
       for (const auto& point :
            geometry::interference_points(*expanded_polytope_, cell.obstacle_polytopes_W()[o])) {

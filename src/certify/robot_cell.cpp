@@ -73,6 +73,7 @@ RobotCell::RobotCell(const RobotModel& robot, const Environment& environment,
     const geometry::ConvexPolytope expanded =
         geometry::minkowski_offset(raw_polytopes[i], expansion_radius_, options.offset_shape);
     hulls_[i].expanded_L = expanded.vertices();
+    expanded_polytopes_L_.push_back(geometry::ConvexPolytope::from_points(hulls_[i].expanded_L));
     hulls_[i].raw_sphere_L = geometry::certified_sphere(hulls_[i].raw_L);
     hulls_[i].expanded_sphere_L = geometry::certified_sphere(hulls_[i].expanded_L);
   }

@@ -197,6 +197,35 @@ void BM_InterferencePointsPrebuilt(benchmark::State& state) {
 }
 BENCHMARK(BM_InterferencePointsPrebuilt)->Unit(benchmark::kMicrosecond);
 
+// What the verifier pays per interfering step: the placed link hull's POINTS are hulled
+// from the link-frame template (ConvexPolytope::from_points_like; proofs/placed-hull.md),
+// the static obstacle's hull was built once, then the exact interference points.
+void BM_InterferencePointsPlacedFromTemplate(benchmark::State& state) {
+  const auto [a, b] = make_pair(kOverlappingPair);
+  // The link frame: a pose of a; the template is the exact hull there.
+  std::mt19937_64 rng(4341);
+  Eigen::Isometry3d X_WL = Eigen::Isometry3d::Identity();
+  X_WL.linear() = test::random_rotation(rng);
+  X_WL.translation() = Vector3d(0.25, -0.5, 0.125);
+  Points a_L;
+  for (const auto& p_W : a) a_L.push_back(X_WL.inverse() * p_W);
+  const ConvexPolytope template_L = ConvexPolytope::from_points(ConvexPolytope::from_points(a_L).vertices());
+  Points a_W;
+  for (const auto& p_L : template_L.vertices()) a_W.push_back(X_WL * p_L);
+  const ConvexPolytope pb = ConvexPolytope::from_points(b);
+  const bool from_template = ConvexPolytope::from_template(a_W, template_L).has_value();
+  std::size_t count = 0;
+  for (auto _ : state) {
+    const ConvexPolytope pa = ConvexPolytope::from_points_like(a_W, template_L);
+    const auto points = interference_points(pa, pb);
+    count = points.size();
+    benchmark::DoNotOptimize(points.data());
+  }
+  state.SetLabel(std::string("overlapping, placed hull from template") +
+                 (from_template ? "" : " (FELL BACK)") + ", " + std::to_string(count) + " points");
+}
+BENCHMARK(BM_InterferencePointsPlacedFromTemplate)->Unit(benchmark::kMicrosecond);
+
 // Exact hull of one rotated 16-point prism (the per-call cost of the point-set overloads).
 void BM_HullFromPoints(benchmark::State& state) {
   const auto [a, b] = make_pair(kOverlappingPair);

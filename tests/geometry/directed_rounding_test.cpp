@@ -1,7 +1,10 @@
 #include "grpvss/geometry/directed_rounding.hpp"
 
 #include <cmath>
+#include <limits>
 #include <random>
+#include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -65,6 +68,42 @@ TEST(DirectedRounding, SquareRootsBracketTheExactRoot) {
     EXPECT_GE(std::fma(up, up, -x), 0.0) << x;
     EXPECT_LE(std::fma(down, down, -x), 0.0) << x;
     EXPECT_LE(up - down, 3 * std::ldexp(std::sqrt(x), -52));
+  }
+}
+
+}  // namespace
+}  // namespace grpvss::geometry::rounding
+
+namespace grpvss::geometry::rounding {
+namespace {
+
+// The nearest-mode sums (no rounding-mode switch) must equal the hardware's directed
+// rounding bit for bit, including cancellation, exact sums and overflow.
+TEST(DirectedRounding, NearestModeSumsEqualTheHardwareDirectedSums) {
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> mantissa(-1.0, 1.0);
+  std::uniform_int_distribution<int> exponent(-60, 60);
+  std::vector<std::pair<double, double>> cases = {
+      {1.0, 0x1p-60}, {1.0, -0x1p-60}, {0.5, 0.25}, {1e308, 1e308}, {-1e308, -1e308},
+      {std::numeric_limits<double>::max(), 1e292}, {0.0, -0.0}, {3.0, -3.0}};
+  for (int trial = 0; trial < 100000; ++trial) {
+    cases.emplace_back(std::ldexp(mantissa(rng), exponent(rng)),
+                       std::ldexp(mantissa(rng), exponent(rng)));
+  }
+  for (const auto& [a, b] : cases) {
+    const double down = nearest_mode_add_down(a, b);
+    const double up = nearest_mode_add_up(a, b);
+    const double difference_down = nearest_mode_sub_down(a, -b);
+    ASSERT_EQ(std::fegetround(), FE_TONEAREST);
+    double hardware_down, hardware_up;
+    {
+      const UpwardRoundingScope upward;
+      hardware_down = add_down(a, b);
+      hardware_up = add_up(a, b);
+    }
+    ASSERT_EQ(down, hardware_down) << a << " + " << b;
+    ASSERT_EQ(up, hardware_up) << a << " + " << b;
+    ASSERT_EQ(difference_down, hardware_down) << a << " - " << -b;
   }
 }
 

@@ -45,6 +45,12 @@ class RobotCell {
   const RobotModel& robot() const { return *robot_; }
   const kinematics::KinematicChain& chain() const { return chain_; }
   const std::vector<LinkHull>& hulls() const { return hulls_; }
+  /// Exact hull of hull i's expanded_L (its input indices are positions in expanded_L):
+  /// the combinatorial template that placed offsets are hulled from
+  /// (ConvexPolytope::from_points_like).
+  const geometry::ConvexPolytope& expanded_polytope_L(std::size_t i) const {
+    return expanded_polytopes_L_[i];
+  }
   /// Exact-hull vertices of obstacle o, world frame.
   const std::vector<std::vector<Eigen::Vector3d>>& obstacles_W() const { return obstacles_W_; }
   /// The obstacles' exact hulls, built once (interference points reuse them).
@@ -74,6 +80,7 @@ class RobotCell {
   double placement_error_ = 0.0;
   double expansion_radius_ = 0.0;
   std::vector<LinkHull> hulls_;
+  std::vector<geometry::ConvexPolytope> expanded_polytopes_L_;
   std::vector<std::vector<Eigen::Vector3d>> obstacles_W_;
   std::vector<geometry::ConvexPolytope> obstacle_polytopes_W_;
   std::vector<geometry::CertifiedSphere> obstacle_spheres_W_;

@@ -10,6 +10,7 @@
 /// constructed. No CGAL type appears here.
 
 #include <array>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -47,6 +48,24 @@ class ConvexPolytope {
   ///         collinear or coplanar — decided exactly) or contain NaN/inf.
   static ConvexPolytope from_points(const std::vector<Eigen::Vector3d>& points);
 
+  /// \brief Exact convex hull of \p points where `points[reference.input_indices()[j]]` is
+  /// a nearby image of `reference.vertices()[j]` (e.g. a link hull placed by floating-point
+  /// forward kinematics): the reference's faces, triangulated, are tried first and accepted
+  /// only after an exact check that they bound conv(points) (local convexity at every edge,
+  /// a centre below every triangle, one ray meeting one triangle;
+  /// proof: proofs/placed-hull.md#lemma-placed-hull), otherwise from_points(points).
+  /// Either way the result is the same polytope as from_points(points): same vertices in
+  /// the same order, same faces up to their order and loop starts.
+  static ConvexPolytope from_points_like(const std::vector<Eigen::Vector3d>& points,
+                                         const ConvexPolytope& reference);
+
+  /// \brief The template step of from_points_like() alone: the reference's faces, with
+  /// reflex edges flipped, if the exact check proves they bound conv(points); nullopt when
+  /// it does not (the caller then needs from_points()). Never returns a wrong hull.
+  /// proof: proofs/placed-hull.md#lemma-placed-hull
+  static std::optional<ConvexPolytope> from_template(const std::vector<Eigen::Vector3d>& points,
+                                                     const ConvexPolytope& reference);
+
   /// Hull vertices, bit-identical copies of input points.
   const std::vector<Eigen::Vector3d>& vertices() const { return vertices_; }
   /// Index in the input vector of each hull vertex.
@@ -58,14 +77,23 @@ class ConvexPolytope {
   /// For each edge the two incident faces: [0] has u->v on its loop, [1] has v->u.
   const std::vector<std::array<int, 2>>& edge_faces() const { return edge_faces_; }
   /// Unit outward face normals, rounded (display/filtering only).
-  const std::vector<Eigen::Vector3d>& face_normals() const { return face_normals_; }
+  const std::vector<Eigen::Vector3d>& face_normals() const {
+    ensure_measures();
+    return face_normals_;
+  }
   /// Face offsets c = max over the face's vertices of n.v in double (display/filtering).
-  const std::vector<double>& face_offsets() const { return face_offsets_; }
+  const std::vector<double>& face_offsets() const {
+    ensure_measures();
+    return face_offsets_;
+  }
 
   /// \brief Volume, computed EXACTLY (sum of signed tetrahedra over the exact faces, in
   /// exact arithmetic), converted to double and divided by 6 at the end (relative error
   /// below 2^-51: two roundings).
-  double volume() const { return volume_; }
+  double volume() const {
+    ensure_measures();
+    return volume_;
+  }
 
  private:
   friend struct ConvexPolytopeBuilder;
@@ -76,9 +104,17 @@ class ConvexPolytope {
   std::vector<std::vector<int>> faces_;
   std::vector<std::array<int, 2>> edges_;
   std::vector<std::array<int, 2>> edge_faces_;
-  std::vector<Eigen::Vector3d> face_normals_;
-  std::vector<double> face_offsets_;
-  double volume_ = 0.0;
+  // Display planes and volume: computed by from_points(), on first use for
+  // from_points_like() (the verifier's placed hulls never need them). A lazily filled
+  // cache: GRPVSS is single-threaded; do not share one polytope between threads.
+  void ensure_measures() const {
+    if (!measures_ready_) compute_measures();
+  }
+  void compute_measures() const;
+  mutable bool measures_ready_ = false;
+  mutable std::vector<Eigen::Vector3d> face_normals_;
+  mutable std::vector<double> face_offsets_;
+  mutable double volume_ = 0.0;
 };
 
 }  // namespace grpvss::geometry

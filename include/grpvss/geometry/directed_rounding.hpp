@@ -95,4 +95,28 @@ inline double dot_down(const double* n, const double* p) {
   return -dot_up(m, p);
 }
 
+// --- directed sums WITHOUT a scope (round-to-nearest mode, the default) ---
+// Switching the rounding mode costs two std::fesetround calls, which dominated the verifier's
+// per-step radius arithmetic. A sum's rounding error is exactly representable (Knuth's
+// TwoSum), so the sum rounded down / up is the nearest sum moved one ulp when the error has
+// the wrong sign: bit-identical to add_down / add_up under a scope.
+// proof: proofs/fast-path.md#directed-rounding
+
+/// \brief \f$\mathrm{RD}(a + b)\f$ computed in round-to-nearest mode (no scope may be
+/// active). Falls back to a scope when the sum overflows.
+inline double nearest_mode_add_down(double a, double b) {
+  const double s = barrier(barrier(a) + barrier(b));
+  if (!std::isfinite(s)) {
+    UpwardRoundingScope upward;
+    return add_down(a, b);
+  }
+  const double bb = barrier(s - a);
+  const double error = barrier(barrier(a - barrier(s - bb)) + barrier(b - bb));
+  return error < 0.0 ? std::nextafter(s, -std::numeric_limits<double>::infinity()) : s;
+}
+/// \brief \f$\mathrm{RU}(a + b)\f$ in round-to-nearest mode (no scope may be active).
+inline double nearest_mode_add_up(double a, double b) { return -nearest_mode_add_down(-a, -b); }
+/// \brief \f$\mathrm{RD}(a - b)\f$ in round-to-nearest mode (no scope may be active).
+inline double nearest_mode_sub_down(double a, double b) { return nearest_mode_add_down(a, -b); }
+
 }  // namespace grpvss::geometry::rounding

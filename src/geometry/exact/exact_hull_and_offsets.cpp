@@ -21,6 +21,7 @@
 #include <limits>
 #include <map>
 #include <numeric>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <tuple>
@@ -105,6 +106,43 @@ void require_full_dimensional(const std::vector<Point>& pts) {
   }
 }
 
+/// Sign of det[q - p, r - p, s - p] (positive: s on the side (q - p) x (r - p) points to),
+/// decided exactly: a semi-static floating-point filter (Shewchuk's orient3d error bound
+/// A, which covers the rounding of the differences too), then exact Mpzf arithmetic.
+/// Cheaper than Epick's Gmpq fallback for the nearly coplanar quadruples that rounding the
+/// vertices of planar faces produces.
+int orientation_sign(const Eigen::Vector3d& p, const Eigen::Vector3d& q, const Eigen::Vector3d& r,
+                     const Eigen::Vector3d& s) {
+  // Shewchuk's orient3d(pa, pb, pc, pd) with pd = p: the same determinant.
+  const double adx = q.x() - p.x(), ady = q.y() - p.y(), adz = q.z() - p.z();
+  const double bdx = r.x() - p.x(), bdy = r.y() - p.y(), bdz = r.z() - p.z();
+  const double cdx = s.x() - p.x(), cdy = s.y() - p.y(), cdz = s.z() - p.z();
+  const double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
+  const double cdxady = cdx * ady, adxcdy = adx * cdy;
+  const double adxbdy = adx * bdy, bdxady = bdx * ady;
+  const double det = adz * (bdxcdy - cdxbdy) + bdz * (cdxady - adxcdy) + cdz * (adxbdy - bdxady);
+  const double permanent = (std::abs(bdxcdy) + std::abs(cdxbdy)) * std::abs(adz) +
+                           (std::abs(cdxady) + std::abs(adxcdy)) * std::abs(bdz) +
+                           (std::abs(adxbdy) + std::abs(bdxady)) * std::abs(cdz);
+  constexpr double kEpsilon = 0x1p-53;
+  constexpr double kErrorBoundA = (7.0 + 56.0 * kEpsilon) * kEpsilon;
+  // The bound assumes no underflow: tiny permanents go to the exact path.
+  if (std::isfinite(permanent) && permanent > 0x1p-900) {
+    const double bound = kErrorBoundA * permanent;
+    if (det > bound) return 1;
+    if (-det > bound) return -1;
+  }
+  const std::array<Exact, 3> u{Exact(q.x()) - Exact(p.x()), Exact(q.y()) - Exact(p.y()),
+                               Exact(q.z()) - Exact(p.z())};
+  const std::array<Exact, 3> w{Exact(r.x()) - Exact(p.x()), Exact(r.y()) - Exact(p.y()),
+                               Exact(r.z()) - Exact(p.z())};
+  const std::array<Exact, 3> z{Exact(s.x()) - Exact(p.x()), Exact(s.y()) - Exact(p.y()),
+                               Exact(s.z()) - Exact(p.z())};
+  const Exact exact = u[0] * (w[1] * z[2] - w[2] * z[1]) + u[1] * (w[2] * z[0] - w[0] * z[2]) +
+                      u[2] * (w[0] * z[1] - w[1] * z[0]);
+  return static_cast<int>(CGAL::sign(exact));
+}
+
 struct UnionFind {
   explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
   std::size_t find(std::size_t x) {
@@ -116,14 +154,15 @@ struct UnionFind {
 };
 
 /// Removes loop vertices that lie (exactly) on the segment between their neighbours.
-void drop_collinear(std::vector<int>& loop, const std::vector<Point>& pts) {
+void drop_collinear(std::vector<int>& loop, const std::vector<Eigen::Vector3d>& input) {
   bool changed = true;
   while (changed && loop.size() > 3) {
     changed = false;
     for (std::size_t i = 0; i < loop.size(); ++i) {
       const std::size_t prev = (i + loop.size() - 1) % loop.size();
       const std::size_t next = (i + 1) % loop.size();
-      if (CGAL::collinear(pts[loop[prev]], pts[loop[i]], pts[loop[next]])) {
+      if (CGAL::collinear(to_point(input[loop[prev]]), to_point(input[loop[i]]),
+                          to_point(input[loop[next]]))) {
         loop.erase(loop.begin() + static_cast<std::ptrdiff_t>(i));
         changed = true;
         break;
@@ -136,7 +175,18 @@ void drop_collinear(std::vector<int>& loop, const std::vector<Point>& pts) {
 
 /// Builds ConvexPolytope instances (the only friend allowed to fill one).
 struct ConvexPolytopeBuilder {
+  using Triangle = std::array<std::size_t, 3>;
   static ConvexPolytope build(const std::vector<Eigen::Vector3d>& input);
+  static std::optional<ConvexPolytope> build_from_template(const std::vector<Eigen::Vector3d>& input,
+                                                  const ConvexPolytope& reference);
+  /// From the outward triangles of the exact hull (corners index `corner_input`, which maps
+  /// them to input indices): merged coplanar faces, edges, display planes, exact volume.
+  /// `edge_signs`, when given, holds for triangle t and corner k the orientation sign of
+  /// the apex of the triangle across edge (k, k+1) against t's plane (saves re-deciding).
+  static ConvexPolytope finish(const std::vector<Eigen::Vector3d>& input,
+                               const std::vector<int>& corner_input,
+                               const std::vector<Triangle>& triangles,
+                               const std::vector<signed char>* edge_signs);
 };
 
 ConvexPolytope ConvexPolytopeBuilder::build(const std::vector<Eigen::Vector3d>& input) {
@@ -198,6 +248,16 @@ ConvexPolytope ConvexPolytopeBuilder::build(const std::vector<Eigen::Vector3d>& 
     }
     hull_to_input[v] = *it;
   }
+  return finish(input, hull_to_input, triangles, nullptr);
+}
+
+ConvexPolytope ConvexPolytopeBuilder::finish(const std::vector<Eigen::Vector3d>& input,
+                                             const std::vector<int>& hull_to_input,
+                                             const std::vector<Triangle>& triangles,
+                                             const std::vector<signed char>* edge_signs) {
+  const auto corner_point = [&](std::size_t corner) -> const Eigen::Vector3d& {
+    return input[static_cast<std::size_t>(hull_to_input[corner])];
+  };
 
   // Directed edge u->v of triangle t at slot k (edge from corner k to corner k+1); the
   // opposite half-edge is found by binary search in the sorted list.
@@ -242,8 +302,11 @@ ConvexPolytope ConvexPolytopeBuilder::build(const std::vector<Eigen::Vector3d>& 
       for (std::size_t c : other) {
         if (c != tri[k] && c != tri[(k + 1) % 3]) apex = c;
       }
-      if (CGAL::orientation(hull_points[tri[0]], hull_points[tri[1]], hull_points[tri[2]],
-                            hull_points[apex]) == CGAL::COPLANAR) {
+      const int side = edge_signs != nullptr
+                           ? (*edge_signs)[3 * t + k]
+                           : orientation_sign(corner_point(tri[0]), corner_point(tri[1]),
+                                              corner_point(tri[2]), corner_point(apex));
+      if (side == 0) {
         groups.unite(t, static_cast<std::size_t>(o));
       }
     }
@@ -288,7 +351,7 @@ ConvexPolytope ConvexPolytopeBuilder::build(const std::vector<Eigen::Vector3d>& 
       }
     }
   }
-  for (auto& loop : loops_input) drop_collinear(loop, pts);
+  for (auto& loop : loops_input) drop_collinear(loop, input);
 
   // Vertices: referenced input points, ordered by input index (deterministic).
   std::vector<int> used;
@@ -330,6 +393,16 @@ ConvexPolytope ConvexPolytopeBuilder::build(const std::vector<Eigen::Vector3d>& 
     if (ef[0] < 0 || ef[1] < 0) throw std::logic_error("hull edge with a single face");
   }
 
+  // The template path's callers (placed hulls in the verifier) never read the display
+  // planes or the volume; they are computed on first use there.
+  if (edge_signs == nullptr) poly.compute_measures();
+  return poly;
+}
+
+void ConvexPolytope::compute_measures() const {
+  const ConvexPolytope& poly = *this;  // fills the mutable cache only
+  poly.face_normals_.clear();
+  poly.face_offsets_.clear();
   // Display planes (rounded) and exact volume.
   Exact six_volume(0);
   for (std::size_t f = 0; f < poly.faces_.size(); ++f) {
@@ -357,11 +430,139 @@ ConvexPolytope ConvexPolytopeBuilder::build(const std::vector<Eigen::Vector3d>& 
     throw std::logic_error("exact hull volume is not positive (orientation broken)");
   }
   poly.volume_ = truncate_to_double(six_volume) / 6.0;
-  return poly;
+  measures_ready_ = true;
 }
 
 ConvexPolytope ConvexPolytope::from_points(const std::vector<Eigen::Vector3d>& points) {
   return ConvexPolytopeBuilder::build(points);
+}
+
+// proof: proofs/placed-hull.md#lemma-placed-hull (every check below is one of its hypotheses)
+std::optional<ConvexPolytope> ConvexPolytopeBuilder::build_from_template(
+    const std::vector<Eigen::Vector3d>& input, const ConvexPolytope& reference) {
+  const std::size_t n = input.size();
+  // Hypothesis (H0): the candidate surface uses every input point as a vertex.
+  if (reference.vertices().size() != n || n < 4) return std::nullopt;
+  const std::vector<int>& corner_input = reference.input_indices();
+  std::vector<char> seen(n, 0);
+  for (int i : corner_input) {
+    if (i < 0 || static_cast<std::size_t>(i) >= n || seen[i]) return std::nullopt;
+    seen[i] = 1;
+  }
+  for (const auto& p : input) {
+    if (!p.allFinite()) return std::nullopt;
+  }
+  const auto at = [&](std::size_t corner) -> const Eigen::Vector3d& {
+    return input[static_cast<std::size_t>(corner_input[corner])];
+  };
+
+  // The reference's faces, fan-triangulated. Placement rounding bends planar faces and can
+  // bend nearly flat edges the other way: every reflex edge is flipped (Lawson), and the
+  // surface is accepted only when no edge is reflex (H1), decided exactly.
+  if (n > 4096) return std::nullopt;  // the dense half-edge table below would be too large
+  std::vector<Triangle> triangles;
+  triangles.reserve(2 * n);
+  for (const auto& loop : reference.faces()) {
+    for (std::size_t i = 1; i + 1 < loop.size(); ++i) {
+      triangles.push_back({static_cast<std::size_t>(loop[0]), static_cast<std::size_t>(loop[i]),
+                           static_cast<std::size_t>(loop[i + 1])});
+    }
+  }
+  // half_edge[u n + v] = 3 t + k for the directed edge u->v at corner k of triangle t.
+  std::vector<int> half_edge(n * n, -1);
+  std::vector<signed char> edge_signs(3 * triangles.size(), 0);
+  std::vector<char> decided(3 * triangles.size(), 0);
+  const auto link = [&](std::size_t t, bool present) {
+    for (int k = 0; k < 3; ++k) {
+      half_edge[triangles[t][k] * n + triangles[t][(k + 1) % 3]] =
+          present ? static_cast<int>(3 * t + k) : -1;
+      decided[3 * t + k] = 0;
+    }
+  };
+  for (std::size_t t = 0; t < triangles.size(); ++t) link(t, true);
+  std::vector<std::array<std::size_t, 2>> pending;
+  for (const Triangle& t : triangles) {
+    for (int k = 0; k < 3; ++k) {
+      if (half_edge[t[(k + 1) % 3] * n + t[k]] < 0) {
+        throw std::logic_error("placed hull template is not a closed surface");
+      }
+      if (t[k] < t[(k + 1) % 3]) pending.push_back({t[k], t[(k + 1) % 3]});
+    }
+  }
+  const std::size_t flip_limit = 4 * triangles.size();
+  std::size_t flips = 0;
+  while (!pending.empty()) {
+    const auto [u, v] = pending.back();
+    pending.pop_back();
+    const int near = half_edge[u * n + v];
+    const int far = half_edge[v * n + u];
+    if (near < 0 || far < 0) continue;  // flipped away meanwhile
+    const std::size_t t = static_cast<std::size_t>(near) / 3, t2 = static_cast<std::size_t>(far) / 3;
+    const std::size_t c = triangles[t][(near % 3 + 2) % 3];
+    const std::size_t d = triangles[t2][(far % 3 + 2) % 3];
+    const int side = orientation_sign(at(triangles[t][0]), at(triangles[t][1]),
+                                      at(triangles[t][2]), at(d));
+    if (side <= 0) {
+      edge_signs[near] = edge_signs[far] = static_cast<signed char>(side);
+      decided[near] = decided[far] = 1;
+      continue;
+    }
+    // Reflex edge u-v: replace triangles (u, v, c), (v, u, d) by (u, d, c), (d, v, c).
+    if (half_edge[c * n + d] >= 0 || ++flips > flip_limit) return std::nullopt;
+    link(t, false);
+    link(t2, false);
+    triangles[t] = {u, d, c};
+    triangles[t2] = {d, v, c};
+    link(t, true);
+    link(t2, true);
+    // The new diagonal's sign is exactly -side (same four points, two of them swapped).
+    const int dc = half_edge[d * n + c], cd = half_edge[c * n + d];
+    edge_signs[dc] = edge_signs[cd] = static_cast<signed char>(-side);
+    decided[dc] = decided[cd] = 1;
+    for (const auto& [a, b] : {std::array<std::size_t, 2>{u, d}, {d, v}, {v, c}, {c, u}}) {
+      pending.push_back({std::min(a, b), std::max(a, b)});
+    }
+  }
+  if (std::find(decided.begin(), decided.end(), 0) != decided.end()) {
+    throw std::logic_error("placed hull: an edge was left undecided");
+  }
+  // (H2) a centre strictly below every triangle's plane.
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  for (const auto& p : input) centre += p;
+  centre /= static_cast<double>(n);
+  for (const Triangle& t : triangles) {
+    if (orientation_sign(at(t[0]), at(t[1]), at(t[2]), centre) >= 0) return std::nullopt;
+  }
+  // (H3) the ray from the centre through a point inside triangle 0's cone meets no other
+  // triangle's closed cone: the radial projection has degree one.
+  const Triangle& first = triangles.front();
+  const Eigen::Vector3d target = (at(first[0]) + at(first[1]) + at(first[2])) / 3.0;
+  const auto cone_sides = [&](const Triangle& t, std::array<int, 3>& sides) {
+    for (int k = 0; k < 3; ++k) {
+      // Positive: target on the same side of plane(centre, t_k, t_k+1) as the third corner.
+      sides[k] = orientation_sign(centre, at(t[k]), at(t[(k + 1) % 3]), target) *
+                 orientation_sign(centre, at(t[k]), at(t[(k + 1) % 3]), at(t[(k + 2) % 3]));
+    }
+  };
+  std::array<int, 3> sides{};
+  cone_sides(first, sides);
+  if (sides[0] <= 0 || sides[1] <= 0 || sides[2] <= 0) return std::nullopt;
+  for (std::size_t t = 1; t < triangles.size(); ++t) {
+    cone_sides(triangles[t], sides);
+    if (sides[0] >= 0 && sides[1] >= 0 && sides[2] >= 0) return std::nullopt;
+  }
+  return finish(input, corner_input, triangles, &edge_signs);
+}
+
+std::optional<ConvexPolytope> ConvexPolytope::from_template(
+    const std::vector<Eigen::Vector3d>& points, const ConvexPolytope& reference) {
+  return ConvexPolytopeBuilder::build_from_template(points, reference);
+}
+
+ConvexPolytope ConvexPolytope::from_points_like(const std::vector<Eigen::Vector3d>& points,
+                                                const ConvexPolytope& reference) {
+  if (auto placed = from_template(points, reference)) return *std::move(placed);
+  return from_points(points);
 }
 
 // ---------------------------------------------------------------------------------------------
