@@ -284,15 +284,16 @@ OracleContact MotionOracle::check(const Eigen::VectorXd& q, bool stop_at_contact
 // most max(spacing, clearance - reserve), `clearance` being the (float, conservative) lower
 // bound on the distance at the last sample: every configuration in between is then farther
 // than `reserve` from every obstacle (no contact skipped; and wherever the clearance is below
-// `reserve` the samples are `spacing` apart). A step that still moves too far at 1e-9 of the
-// range is a jump: visit(nullptr, t). Returns true if stopped.
+// `reserve` the samples are `spacing` apart). Steps are at most `max_h`. A step that still
+// moves too far at 1e-9 of the range is a jump: visit(nullptr, t). Returns true if stopped.
 template <typename Motion, typename Visit>
-bool MotionOracle::march(const Motion& next, double spacing, Visit&& visit, const double& clearance) const {
+bool MotionOracle::march(const Motion& next, double spacing, Visit&& visit, const double& clearance,
+                         double max_h) const {
   const double reserve = kReserveSpacings * spacing;
   double t = 0.0;
   std::optional<Eigen::VectorXd> q = next(0.0, Eigen::VectorXd(), 0.0);
   if (!q) return visit(nullptr, 0.0);
-  double h = 1.0 / 64.0;
+  double h = std::min(max_h, 1.0 / 64.0);
   while (t < 1.0) {
     const double allowed = std::max(spacing, clearance - reserve);
     const double t1 = std::min(1.0, t + h);
@@ -305,7 +306,7 @@ bool MotionOracle::march(const Motion& next, double spacing, Visit&& visit, cons
       }
       return visit(nullptr, t1);  // a jump or an unreachable stretch
     }
-    if (bound < 0.5 * allowed) h = std::min(0.25, h * 1.5);
+    if (bound < 0.5 * allowed) h = std::min(max_h, h * 1.5);
     t = t1;
     q = q1;
     if (visit(&*q, t)) return true;
@@ -356,7 +357,7 @@ OraclePathResult MotionOracle::sample_path(const PathProgram& program, double sp
       auto next = [&](double, const Eigen::VectorXd&, double t) {
         return std::optional<Eigen::VectorXd>(motion.joints_at(t * duration));
       };
-      done = march(next, spacing, visit, clearance);
+      done = march(next, spacing, visit, clearance, 0.25);
       q_start = ptp->target;  // the motion stage starts the next segment at the target
     } else if (const auto* cp = std::get_if<CpLineSegment>(&program.segments[s].spec)) {
       const motion::CpLine line(kinematics.forward(q_start), cp->target);
@@ -370,7 +371,9 @@ OraclePathResult MotionOracle::sample_path(const PathProgram& program, double sp
         if (t == 0.0) return q_line_start;
         return motion::solve_within_limits(robot, kinematics, line.pose_at(t * line.length()), q_from);
       };
-      done = march(next, spacing, visit, clearance);
+      // IK is checked at least every max(spacing, 0.05) of path length, also far from obstacles:
+      // an unreachable stretch or a jump there stops the oracle ("line not followed").
+      done = march(next, spacing, visit, clearance, std::max(spacing, 0.05) / line.length());
       q_start = last_q;
     } else {
       throw std::invalid_argument("MotionOracle: PTP(JCS) and CP segments only");
@@ -408,7 +411,7 @@ OraclePathResult MotionOracle::sample_joint_linear(const std::vector<Eigen::Vect
     auto next = [&](double, const Eigen::VectorXd&, double t) {
       return std::optional<Eigen::VectorXd>(q0 + t * (q1 - q0));
     };
-    done = march(next, spacing, visit, clearance);
+    done = march(next, spacing, visit, clearance, 0.25);
   }
   result.exact_checks = exact_checks_ - exact_before;
   if (result.first_contact.contact) result.min_distance_estimate = 0.0;

@@ -77,7 +77,8 @@ class MotionOracle {
   /// stage's PtpMotion (independent timing, as the verifier's trajectory). CP lines: the
   /// oracle's own samples of the commanded line (motion::CpLine, IK nearest the previous
   /// sample through `kinematics`, accepted within the limits), dense enough that consecutive
-  /// IK solutions move every point at most `spacing` (joint-linear in between, at that scale).
+  /// IK solutions move every point at most `spacing` (joint-linear in between, at that scale)
+  /// and at most max(spacing, 0.05) of path length apart (IK checked along the whole line).
   /// \throws std::invalid_argument for a PTP(WCS) segment.
   OraclePathResult sample_path(const PathProgram& program, double spacing,
                                const motion::KinematicsAccess& kinematics) const;
@@ -105,7 +106,7 @@ class MotionOracle {
   /// Samples q(t), t in [0, 1], monotone in every joint, adaptively; calls `visit` per sample
   /// after the first (returns true to stop). Returns true if stopped.
   template <typename Motion, typename Visit>
-  bool march(const Motion& next, double spacing, Visit&& visit, const double& clearance) const;
+  bool march(const Motion& next, double spacing, Visit&& visit, const double& clearance, double max_h) const;
 
   const RobotModel* robot_;
   std::vector<std::vector<Shape>> hulls_L_;  ///< [link][hull], in the link frame
