@@ -7,5 +7,9 @@ foreach(test IN LISTS grpvss_tests_TESTS)
   elseif(test MATCHES "^ResourceBounds\\.")
     # The 10,000-obstacle, 100,000-step run: Release only (the sanitizer suite skips the label).
     set_tests_properties("${test}" PROPERTIES TIMEOUT 300 LABELS heavy)
+  elseif(test MATCHES "^OracleSoundness\\.(RandomPtp|ScaraCp)Shard[1-9]")
+    set_tests_properties("${test}" PROPERTIES LABELS heavy)  # shard 0 also runs under ASan
+  elseif(test MATCHES "^OracleFindings\\.")
+    set_tests_properties("${test}" PROPERTIES WILL_FAIL TRUE)  # KNOWN BUG, reported: remove when fixed
   endif()
 endforeach()

@@ -1,16 +1,26 @@
 // Soundness of the certified verifier against a brute-force oracle written independently of
-// it (tests/support/motion_oracle.hpp): random robots, cells and PTP paths with fixed seeds.
+// it (tests/support/motion_oracle.hpp, exact LP contact in tests/support/exact_hull_lp.hpp):
+// random robots, cells and PTP / CP paths with fixed seeds (tests/support/oracle_cases.hpp).
 // Property (must hold for every case): certified mode never says CLEAR where the oracle finds
-// a real contact, a reported COLLISION step really collides, and every certificate is
-// accepted by check_certificate. Statistics (thesis-mode misses, certified false alarms) are
-// printed and recorded in docs/soundness-oracle.md.
+// a real contact on the commanded path, nor where it finds one on the joint-linear path
+// through the recorded CP samples (what a CP certificate covers); a reported COLLISION step
+// really collides; every certificate is accepted by check_certificate (except the reported
+// known bugs, recognised narrowly by is_known_certificate_bug). Statistics
+// (thesis-mode misses, certified false alarms against the oracle's clearance) are printed as
+// "[oracle]" lines and recorded in docs/soundness-oracle.md.
 //
-// Normal run: kDefaultCases cases. Long run: GRPVSS_LONG_ORACLE=1 (kLongCases cases; also
-// GRPVSS_ORACLE_CASES=<n> for any count).
+// The cases run in shards (separate ctest tests, so ctest -j runs them in parallel); shard s
+// of a family takes the case indices s, s + S, s + 2S, ... Normal run: kCiCasesPerShard per
+// shard. Long run: GRPVSS_LONG_ORACLE=1 (kLongCasesPerShard per shard) or
+// GRPVSS_ORACLE_CASES_PER_SHARD=<n>; it contains the normal run's cases. One case:
+// GRPVSS_ORACLE_CASE=<index> (with the shard index % 8); per-case lines: GRPVSS_ORACLE_VERBOSE=1.
+#include <algorithm>
+#include <array>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
-#include <random>
+#include <limits>
 #include <string>
 
 #include <Eigen/Geometry>
@@ -23,197 +33,34 @@
 #include "grpvss/io/path_file.hpp"
 #include "grpvss/io/robot_file.hpp"
 #include "grpvss/motion/kinematics_adapter.hpp"
-#include "support/kinematics_reference.hpp"
 #include "support/motion_oracle.hpp"
-#include "support/random_shapes.hpp"  // random_rotation
+#include "support/oracle_cases.hpp"
 
 namespace grpvss::certify {
 namespace {
 
-constexpr int kDefaultCases = 60;
-constexpr int kLongCases = 1000;
+constexpr int kShards = 8;            // per family
+#ifdef __SANITIZE_ADDRESS__
+// Under the sanitizers (scripts/test-sanitizers.sh, ~10x slower) only shard 0 runs (the others
+// are labelled `heavy`), with fewer cases.
+constexpr int kCiCasesPerShard = 8;
+#else
+constexpr int kCiCasesPerShard = 20;  // 2 families x 8 shards x 20 = 320 cases
+#endif
+constexpr int kLongCasesPerShard = 250;  // 4000 cases
 constexpr double kOracleSpacingFraction = 1.0 / 20.0;  // of the tolerance
+constexpr std::uint64_t kPtpSeedBase = 0x5eed0000ULL;
+constexpr std::uint64_t kCpSeedBase = 0xc0de0000ULL;
 
-int case_count() {
-  if (const char* count = std::getenv("GRPVSS_ORACLE_CASES")) return std::max(1, std::atoi(count));
+int cases_per_shard() {
+  if (const char* count = std::getenv("GRPVSS_ORACLE_CASES_PER_SHARD")) return std::max(1, std::atoi(count));
   if (const char* long_run = std::getenv("GRPVSS_LONG_ORACLE"); long_run && std::string(long_run) == "1") {
-    return kLongCases;
+    return kLongCasesPerShard;
   }
-  return kDefaultCases;
+  return kCiCasesPerShard;
 }
 
-struct RandomCase {
-  RobotModel robot;
-  Environment environment;
-  PathProgram program;
-  double tolerance = 0.5;
-};
-
-double uniform(std::mt19937_64& rng, double lo, double hi) {
-  return std::uniform_real_distribution<double>(lo, hi)(rng);
-}
-
-Eigen::Vector3d random_unit(std::mt19937_64& rng) {
-  std::normal_distribution<double> normal(0.0, 1.0);
-  Eigen::Vector3d v(normal(rng), normal(rng), normal(rng));
-  return v.normalized();
-}
-
-// A box with half extents h, rotated at random, centred at c (8 points: cheap exact offsets).
-std::vector<Eigen::Vector3d> random_box(std::mt19937_64& rng, const Eigen::Vector3d& c,
-                                        const Eigen::Vector3d& h) {
-  const Eigen::Matrix3d rotation = test::random_rotation(rng);
-  std::vector<Eigen::Vector3d> points;
-  for (int k = 0; k < 8; ++k) {
-    const Eigen::Vector3d p_L((k & 1 ? 1 : -1) * h.x(), (k & 2 ? 1 : -1) * h.y(),
-                              (k & 4 ? 1 : -1) * h.z());
-    points.push_back(c + rotation * p_L);
-  }
-  return points;
-}
-
-// A box from the origin along a random direction u to length `length` (a tool sticking out
-// beyond the frame origin), cross-section half-width w.
-std::vector<Eigen::Vector3d> random_tool(std::mt19937_64& rng, double length, double w) {
-  const Eigen::Matrix3d rotation = test::random_rotation(rng);
-  std::vector<Eigen::Vector3d> points;
-  for (int k = 0; k < 8; ++k) {
-    const Eigen::Vector3d p_L(k & 1 ? length : -w, (k & 2 ? 1 : -1) * w, (k & 4 ? 1 : -1) * w);
-    points.push_back(rotation * p_L);
-  }
-  return points;
-}
-
-// 2-5 joints, mixed revolute/prismatic, random DH; 1-2 hulls per link, the second often a
-// "tool" far from the link skeleton (beyond the frame origin).
-RobotModel random_robot(std::mt19937_64& rng) {
-  RobotModel robot;
-  robot.name = "random";
-  const int joints = std::uniform_int_distribution<int>(2, 5)(rng);
-  const double alphas[] = {0.0, M_PI / 2, -M_PI / 2, uniform(rng, -M_PI, M_PI)};
-  for (int j = 0; j < joints; ++j) {
-    Joint joint;
-    joint.type = (j > 0 && uniform(rng, 0, 1) < 0.3) ? JointType::kPrismatic : JointType::kRevolute;
-    joint.dh.a = uniform(rng, 0.0, 4.0);
-    joint.dh.d = uniform(rng, 0.0, 3.0);
-    joint.dh.alpha = alphas[std::uniform_int_distribution<int>(0, 3)(rng)];
-    if (joint.type == JointType::kRevolute) {
-      joint.minimum = -uniform(rng, 1.0, M_PI);
-      joint.maximum = uniform(rng, 1.0, M_PI);
-      joint.acceleration = uniform(rng, 1.0, 4.0);
-      joint.deceleration = uniform(rng, 1.0, 4.0);
-    } else {
-      joint.minimum = 0.0;
-      joint.maximum = uniform(rng, 1.0, 4.0);
-      joint.acceleration = uniform(rng, 2.0, 6.0);
-      joint.deceleration = uniform(rng, 2.0, 6.0);
-    }
-    joint.home = uniform(rng, joint.minimum, joint.maximum);
-    robot.joints.push_back(joint);
-  }
-  robot.links.resize(joints + 1);
-  for (int link = 1; link <= joints; ++link) {
-    robot.links[link].thickness = 1.0;
-    const Joint& joint = robot.joints[link - 1];
-    // The link body: between the previous frame's origin (at -a along x) and this origin.
-    const Eigen::Vector3d body_center(-0.5 * joint.dh.a, 0.0, 0.0);
-    const Eigen::Vector3d body_half(0.5 * joint.dh.a + uniform(rng, 0.2, 0.6), uniform(rng, 0.2, 0.6),
-                                    uniform(rng, 0.2, 0.6));
-    robot.links[link].hulls.push_back({random_box(rng, body_center, body_half), 0});
-    if (uniform(rng, 0, 1) < 0.6) {
-      // A tool sticking out far beyond the frame origin.
-      robot.links[link].hulls.push_back(
-          {random_tool(rng, uniform(rng, 3.0, 8.0), uniform(rng, 0.1, 0.5)), 0});
-    }
-  }
-  if (uniform(rng, 0, 1) < 0.5) {
-    robot.links[0].hulls.push_back(
-        {random_box(rng, Eigen::Vector3d(0, 0, -1.5), Eigen::Vector3d(1.0, 1.0, 0.5)), 0});
-  }
-  return robot;
-}
-
-Eigen::VectorXd random_target(std::mt19937_64& rng, const RobotModel& robot,
-                              const Eigen::VectorXd& from) {
-  Eigen::VectorXd target(robot.joint_count());
-  for (int j = 0; j < robot.joint_count(); ++j) {
-    const Joint& joint = robot.joints[j];
-    const double span = joint.maximum - joint.minimum;
-    target[j] = std::clamp(from[j] + uniform(rng, -0.3, 0.3) * span, joint.minimum, joint.maximum);
-  }
-  return target;
-}
-
-RandomCase random_case(std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  RandomCase c;
-  c.robot = random_robot(rng);
-  c.tolerance = uniform(rng, 0.3, 1.0);
-  // Path: 1-2 PTP joint segments.
-  const int segments = std::uniform_int_distribution<int>(1, 2)(rng);
-  Eigen::VectorXd q(c.robot.joint_count());
-  for (int j = 0; j < c.robot.joint_count(); ++j) q[j] = c.robot.joints[j].home;
-  std::vector<Eigen::VectorXd> visited{q};
-  for (int s = 0; s < segments; ++s) {
-    PtpJointSegment segment;
-    segment.target = random_target(rng, c.robot, q);
-    segment.velocity.resize(c.robot.joint_count());
-    for (int j = 0; j < c.robot.joint_count(); ++j) {
-      segment.velocity[j] =
-          c.robot.joints[j].type == JointType::kRevolute ? uniform(rng, 0.3, 1.5) : uniform(rng, 0.5, 2.0);
-    }
-    // Configurations along the move (linear in joints: the sweep's neighbourhood).
-    for (double f : {0.25, 0.5, 0.75, 1.0}) visited.push_back(q + f * (segment.target - q));
-    q = segment.target;
-    c.program.segments.push_back({segment, s + 2});
-  }
-  // Obstacles near the swept volume (at a random hull point of a configuration on the path,
-  // with a random surface gap from -1 to +3 tolerances) and far away.
-  const int near = std::uniform_int_distribution<int>(1, 3)(rng);
-  const int far = std::uniform_int_distribution<int>(0, 2)(rng);
-  double smallest_thickness = 10.0;
-  std::vector<std::pair<int, int>> hull_ids;
-  for (int link = 1; link <= c.robot.joint_count(); ++link) {
-    for (int h = 0; h < static_cast<int>(c.robot.links[link].hulls.size()); ++h) hull_ids.push_back({link, h});
-  }
-  for (int k = 0; k < near; ++k) {
-    const Eigen::VectorXd& q_on_path =
-        visited[std::uniform_int_distribution<std::size_t>(1, visited.size() - 1)(rng)];
-    const auto [link, h] = hull_ids[std::uniform_int_distribution<std::size_t>(0, hull_ids.size() - 1)(rng)];
-    const auto& points_L = c.robot.links[link].hulls[h].points;
-    const Eigen::Vector3d p_L = points_L[std::uniform_int_distribution<std::size_t>(0, points_L.size() - 1)(rng)];
-    const Eigen::Matrix4d X_WL = test::reference_link_pose<double>(c.robot, q_on_path, link);
-    const Eigen::Vector3d p_W = X_WL.topLeftCorner<3, 3>() * p_L + X_WL.topRightCorner<3, 1>();
-    const Eigen::Vector3d direction = random_unit(rng);
-    const double gap = uniform(rng, -0.5, 4.0) * c.tolerance;
-    if (uniform(rng, 0, 1) < 0.4) {
-      // A thin plate (what the thesis rule's Dmin step can jump over).
-      const double thickness = uniform(rng, 0.05, 0.3);
-      const Eigen::Vector3d half(uniform(rng, 1.0, 4.0), uniform(rng, 1.0, 4.0), 0.5 * thickness);
-      c.environment.obstacles.push_back(
-          {random_box(rng, p_W + direction * (half.norm() + gap), half), 0});
-      smallest_thickness = std::min(smallest_thickness, thickness);
-    } else {
-      const Eigen::Vector3d half(uniform(rng, 0.3, 2.0), uniform(rng, 0.3, 2.0), uniform(rng, 0.3, 2.0));
-      c.environment.obstacles.push_back(
-          {random_box(rng, p_W + direction * (half.norm() + gap), half), 0});
-      smallest_thickness = std::min(smallest_thickness, 2.0 * half.minCoeff());
-    }
-  }
-  double reach = 10.0;
-  for (const Joint& joint : c.robot.joints) reach += joint.dh.a + joint.dh.d + std::abs(joint.maximum);
-  for (int k = 0; k < far; ++k) {
-    const Eigen::Vector3d half(uniform(rng, 1.0, 4.0), uniform(rng, 1.0, 4.0), uniform(rng, 1.0, 4.0));
-    c.environment.obstacles.push_back(
-        {random_box(rng, random_unit(rng) * (reach + half.norm() + uniform(rng, 1.0, 20.0)), half), 0});
-    smallest_thickness = std::min(smallest_thickness, 2.0 * half.minCoeff());
-  }
-  c.environment.smallest_angle = M_PI / 2.0;
-  c.environment.smallest_thickness = smallest_thickness;
-  return c;
-}
-
-VerificationRun run_mode(const RandomCase& c, const motion::KinematicsAccess& kinematics,
+VerificationRun run_mode(const test::OracleCase& c, const motion::KinematicsAccess& kinematics,
                          ResolutionMode mode) {
   VerifyOptions options;
   options.tolerance = c.tolerance;
@@ -223,106 +70,267 @@ VerificationRun run_mode(const RandomCase& c, const motion::KinematicsAccess& ki
   return verify(c.robot, c.environment, c.program, kinematics, options);
 }
 
+// Oracle clearance / Delta bins of the cases without oracle contact.
+constexpr std::array<double, 6> kClearanceBins = {0.5, 1.0, 1.1, 1.5, 2.0, 4.0};
+int clearance_bin(double clearance_over_delta) {
+  int bin = 0;
+  while (bin < static_cast<int>(kClearanceBins.size()) && clearance_over_delta >= kClearanceBins[bin]) ++bin;
+  return bin;
+}
+
 struct Statistics {
   int cases = 0;
   int oracle_contact = 0;
-  int oracle_clear_beyond_tolerance = 0;  // oracle: no contact and sampled min distance >= Delta
-  int certified[5] = {0, 0, 0, 0, 0};     // by Verdict
+  int oracle_not_followed = 0;  // a CP line the oracle could not follow (IK fails or jumps)
+  int oracle_clear = 0;         // no contact, whole path sampled
+  int certified[5] = {0, 0, 0, 0, 0};  // by Verdict
   int thesis[5] = {0, 0, 0, 0, 0};
-  int thesis_misses = 0;            // thesis CLEAR, oracle contact
-  int certified_misses = 0;         // certified CLEAR, oracle contact (must stay 0)
-  int certified_false_alarms = 0;   // non-CLEAR with oracle min distance >= Delta, or
-                                    // COLLISION without oracle contact
+  int certified_misses = 0;        // certified CLEAR, oracle contact on the commanded path
+  int certified_claim_misses = 0;  // certified CLEAR, contact on the recorded CP joint path
+  int certified_clear_line_not_followed = 0;
+  int error_when_clear = 0;  // verdict ERROR, oracle followed the whole path without contact
+  int thesis_misses = 0;           // thesis CLEAR, oracle contact
+  // Certified verdicts of the oracle-clear cases, by clearance / Delta bin: CLEAR or not.
+  int clear_by_bin[7] = {0, 0, 0, 0, 0, 0, 0};
+  int not_clear_by_bin[7] = {0, 0, 0, 0, 0, 0, 0};
+  double largest_not_clear_ratio = 0.0;  // largest oracle clearance / Delta of a non-CLEAR case
+  double smallest_clear_ratio = std::numeric_limits<double>::infinity();  // ... of a CLEAR case
   int certified_false_collisions = 0;
   int certificates_rejected = 0;
+  int known_bug_rejections = 0;  // see is_known_certificate_bug
+  int cp_segments_checked = 0;  // CP segments whose recorded joint path the oracle sampled
   long long oracle_samples = 0;
   long long oracle_exact_checks = 0;
   long long certified_steps = 0;
-  long long thesis_steps = 0;
+  // Wall time (reported, never asserted): oracle, certified, thesis, checker.
+  double seconds[4] = {0, 0, 0, 0};
 };
 
-TEST(OracleSoundness, CertifiedModeNeverMissesAContactTheOracleFinds) {
-  const int cases = case_count();
-  Statistics stats;
-  for (int i = 0; i < cases; ++i) {
-    const std::uint64_t seed = 0x5eed0000ULL + static_cast<std::uint64_t>(i);
-    SCOPED_TRACE(fmt::format("case {} (seed {:#x})", i, seed));
-    const RandomCase c = random_case(seed);
-    const auto kinematics =
-        motion::make_kinematics_access(c.robot, motion::select_ik("numeric", c.robot, "random"));
-    const test::MotionOracle oracle(c.robot, c.environment);
-    const test::OraclePathResult truth =
-        oracle.sample_path(c.program, kOracleSpacingFraction * c.tolerance);
-    const VerificationRun certified = run_mode(c, kinematics, ResolutionMode::kCertified);
-    const VerificationRun thesis = run_mode(c, kinematics, ResolutionMode::kThesis);
-    const Verdict verdict = certified.result.verdict;
-
-    ++stats.cases;
-    stats.oracle_samples += truth.samples;
-    stats.oracle_exact_checks += truth.exact_checks;
-    stats.certified_steps += static_cast<long long>(certified.result.steps.size());
-    stats.thesis_steps += static_cast<long long>(thesis.result.steps.size());
-    ++stats.certified[static_cast<int>(verdict)];
-    ++stats.thesis[static_cast<int>(thesis.result.verdict)];
-    const bool contact = truth.first_contact.contact;
-    stats.oracle_contact += contact;
-    const bool clear_beyond_tolerance = !contact && truth.min_distance_estimate >= c.tolerance;
-    stats.oracle_clear_beyond_tolerance += clear_beyond_tolerance;
-
-    // The soundness property.
-    if (contact) {
-      EXPECT_NE(verdict, Verdict::kClear)
-          << "certified CLEAR but the oracle found contact at segment " << truth.contact_segment
-          << " t=" << truth.contact_time << " link " << truth.first_contact.link << " hull "
-          << truth.first_contact.hull << " obstacle " << truth.first_contact.obstacle;
-      stats.certified_misses += verdict == Verdict::kClear;
-      stats.thesis_misses += thesis.result.verdict == Verdict::kClear;
+// The known checker/verifier disagreements (reported; tests/certify/oracle_findings_test.cpp,
+// WILL_FAIL there until fixed). The verdict is never CLEAR and the checker rejects exactly one
+// thing: (a) "segment N: fewer than two steps" for a segment the run left without steps (not
+// simulated after an error at its first step, or a zero-motion PTP segment); (b) "claim
+// COLLISION, but the robot at the named step touches no obstacle" for a collision at the
+// start configuration (step 0) that the oracle confirms, the path then stopped by an error.
+bool is_known_certificate_bug(const VerificationRun& run, const CheckReport& report,
+                              const test::MotionOracle& oracle) {
+  if (report.accepted || run.result.verdict == Verdict::kClear || report.failures.size() != 1) return false;
+  const std::string& failure = report.failures.front();
+  const std::string suffix = ": fewer than two steps";
+  if (failure.rfind("segment ", 0) == 0 && failure.size() > suffix.size() &&
+      failure.compare(failure.size() - suffix.size(), suffix.size(), suffix) == 0) {
+    const int segment = std::atoi(failure.c_str() + 8);
+    for (const SegmentRecord& record : run.result.segments) {
+      if (record.number == segment) return !record.simulated || record.first_step == 0;
     }
-    // A reported collision is real.
-    if (verdict == Verdict::kCollision) {
-      ASSERT_TRUE(certified.result.collision_step.has_value());
-      const int step = *certified.result.collision_step;
-      const StepRecord& record =
-          step == 0 ? *certified.result.start : certified.result.steps.at(step - 1);
-      EXPECT_TRUE(oracle.check(record.q).contact) << "reported collision step " << step;
-      stats.certified_false_collisions += !contact;
-    }
-    if (verdict != Verdict::kClear && verdict != Verdict::kError &&
-        (clear_beyond_tolerance || (verdict == Verdict::kCollision && !contact))) {
-      ++stats.certified_false_alarms;
-    }
-    // Every certificate is accepted by the independent checker.
-    const CheckReport report = check_certificate(c.robot, c.environment, c.program, kinematics,
-                                                 certified.certificate);
-    EXPECT_TRUE(report.accepted) << (report.failures.empty() ? "" : report.failures.front());
-    EXPECT_EQ(report.claim, to_string(verdict));
-    stats.certificates_rejected += !report.accepted;
+    return false;
   }
-  // The generator must exercise both sides of the property.
-  EXPECT_GT(stats.oracle_contact, 0);
-  EXPECT_GT(stats.oracle_clear_beyond_tolerance, 0);
-  EXPECT_EQ(stats.certified_misses, 0);
-
-  auto verdicts = [](const int* counts) {
-    return fmt::format("CLEAR {} COLLISION {} WITHIN_TOLERANCE {} UNDECIDED {} ERROR {}", counts[0],
-                       counts[1], counts[2], counts[3], counts[4]);
-  };
-  const int not_clear_truth = stats.cases - stats.oracle_contact;
-  std::cout << fmt::format(
-      "[oracle] cases {}; oracle contact {}, oracle clear by >= Delta {}; oracle samples {} "
-      "(exact checks {})\n"
-      "[oracle] certified: {}; steps {}; misses {}; false alarms {} ({:.1f}% of the {} cases "
-      "clear by >= Delta); false collisions {}; certificates rejected {}\n"
-      "[oracle] thesis: {}; steps {}; misses {} ({:.1f}% of the {} contact cases)\n",
-      stats.cases, stats.oracle_contact, stats.oracle_clear_beyond_tolerance, stats.oracle_samples,
-      stats.oracle_exact_checks, verdicts(stats.certified), stats.certified_steps,
-      stats.certified_misses, stats.certified_false_alarms,
-      100.0 * stats.certified_false_alarms / std::max(1, stats.oracle_clear_beyond_tolerance),
-      stats.oracle_clear_beyond_tolerance, stats.certified_false_collisions,
-      stats.certificates_rejected, verdicts(stats.thesis), stats.thesis_steps, stats.thesis_misses,
-      100.0 * stats.thesis_misses / std::max(1, stats.oracle_contact), stats.oracle_contact);
-  (void)not_clear_truth;
+  return failure == "claim COLLISION, but the robot at the named step touches no obstacle" &&
+         run.result.collision_step == 0 && !run.result.errors.empty() && run.result.start.has_value() &&
+         oracle.check(run.result.start->q).contact;
 }
+
+void run_case(const test::OracleCase& c, const std::string& label, Statistics& stats) {
+  const auto kinematics = motion::make_kinematics_access(c.robot, motion::select_ik(c.ik, c.robot, "random"));
+  const test::MotionOracle oracle(c.robot, c.environment);
+  const double spacing = kOracleSpacingFraction * c.tolerance;
+  using Clock = std::chrono::steady_clock;
+  const auto t0 = Clock::now();
+  const test::OraclePathResult truth = oracle.sample_path(c.program, spacing, kinematics);
+  const auto t1 = Clock::now();
+  const VerificationRun certified = run_mode(c, kinematics, ResolutionMode::kCertified);
+  const auto t2 = Clock::now();
+  const VerificationRun thesis = run_mode(c, kinematics, ResolutionMode::kThesis);
+  const auto t3 = Clock::now();
+  stats.seconds[0] += std::chrono::duration<double>(t1 - t0).count();
+  stats.seconds[1] += std::chrono::duration<double>(t2 - t1).count();
+  stats.seconds[2] += std::chrono::duration<double>(t3 - t2).count();
+  if (std::getenv("GRPVSS_ORACLE_VERBOSE")) {
+    std::cout << fmt::format("[oracle-case] tol {:.3f} verdict {} steps {} contact {} oracle {:.2f}s certified {:.2f}s\n",
+                             c.tolerance, to_string(certified.result.verdict), certified.result.steps.size(),
+                             truth.first_contact.contact, std::chrono::duration<double>(t1 - t0).count(),
+                             std::chrono::duration<double>(t2 - t1).count());
+    for (const PathError& error : certified.result.errors) {
+      std::cout << fmt::format("[oracle-case] error {} segment {} step {}: {}\n", error.code, error.segment,
+                               error.step, error.message);
+    }
+    for (const SegmentRecord& segment : certified.result.segments) {
+      std::cout << fmt::format("[oracle-case] segment {} simulated {} steps {}..{}\n", segment.number,
+                               segment.simulated, segment.first_step, segment.last_step);
+    }
+  }
+  const Verdict verdict = certified.result.verdict;
+
+  ++stats.cases;
+  stats.oracle_samples += truth.samples;
+  stats.oracle_exact_checks += truth.exact_checks;
+  stats.certified_steps += static_cast<long long>(certified.result.steps.size());
+  ++stats.certified[static_cast<int>(verdict)];
+  ++stats.thesis[static_cast<int>(thesis.result.verdict)];
+  const bool contact = truth.first_contact.contact;
+  stats.oracle_contact += contact;
+  stats.oracle_not_followed += !contact && truth.line_not_followed;
+
+  // The soundness property on the commanded path.
+  if (contact) {
+    EXPECT_NE(verdict, Verdict::kClear)
+        << "certified CLEAR but the oracle found contact at segment " << truth.contact_segment
+        << " parameter " << truth.contact_parameter << " link " << truth.first_contact.link << " hull "
+        << truth.first_contact.hull << " obstacle " << truth.first_contact.obstacle << " q "
+        << truth.contact_q.transpose();
+    stats.certified_misses += verdict == Verdict::kClear;
+    stats.thesis_misses += thesis.result.verdict == Verdict::kClear;
+    if (thesis.result.verdict == Verdict::kClear) {
+      std::cout << fmt::format("[oracle-thesis-miss] {} tolerance {:.4f} contact segment {} link {} hull {} obstacle {}\n",
+                               label, c.tolerance, truth.contact_segment, truth.first_contact.link,
+                               truth.first_contact.hull, truth.first_contact.obstacle);
+    }
+  } else if (!truth.line_not_followed && verdict == Verdict::kError) {
+    // A path error (5, 7, 8, 9) on a path the oracle followed without contact: not CLEAR for
+    // a reason other than clearance; kept out of the false-alarm bins.
+    ++stats.oracle_clear;
+    ++stats.error_when_clear;
+  } else if (!truth.line_not_followed) {
+    ++stats.oracle_clear;
+    const double ratio = truth.min_distance_estimate / c.tolerance;
+    ++(verdict == Verdict::kClear ? stats.clear_by_bin : stats.not_clear_by_bin)[clearance_bin(ratio)];
+    if (verdict == Verdict::kClear) {
+      stats.smallest_clear_ratio = std::min(stats.smallest_clear_ratio, ratio);
+    } else {
+      stats.largest_not_clear_ratio = std::max(stats.largest_not_clear_ratio, ratio);
+      if (ratio >= 1.0) {
+        std::cout << fmt::format("[oracle-false-alarm] {} tolerance {:.4f} clearance/Delta {:.4f} verdict {}\n", label,
+                                 c.tolerance, ratio, to_string(verdict));
+      }
+    }
+  } else {
+    stats.certified_clear_line_not_followed += verdict == Verdict::kClear;
+    if (verdict == Verdict::kClear) {
+      std::cout << fmt::format("[oracle-clear-line-not-followed] {} segment {}\n", label, truth.stopped_segment);
+    }
+  }
+  // ... and on what a CP certificate covers: the joint-linear motion through the recorded
+  // samples (proofs/cp-joint-path.md#guarantee).
+  for (const SegmentRecord& segment : certified.result.segments) {
+    if (!segment.simulated || !std::holds_alternative<CpLineSegment>(segment.input.spec)) continue;
+    std::vector<Eigen::VectorXd> q_samples{segment.start_q};
+    for (const StepRecord& step : certified.result.steps) {
+      if (step.segment == segment.number) q_samples.push_back(step.q);
+    }
+    const test::OraclePathResult claim = oracle.sample_joint_linear(q_samples, spacing, segment.number);
+    ++stats.cp_segments_checked;
+    stats.oracle_samples += claim.samples;
+    stats.oracle_exact_checks += claim.exact_checks;
+    if (claim.first_contact.contact) {
+      EXPECT_NE(verdict, Verdict::kClear)
+          << "certified CLEAR but the joint-linear path through the recorded CP samples of segment "
+          << segment.number << " touches obstacle " << claim.first_contact.obstacle << " at q "
+          << claim.contact_q.transpose();
+      stats.certified_claim_misses += verdict == Verdict::kClear;
+    }
+  }
+  // A reported collision is real.
+  if (verdict == Verdict::kCollision) {
+    ASSERT_TRUE(certified.result.collision_step.has_value());
+    const int step = *certified.result.collision_step;
+    const StepRecord& record = step == 0 ? *certified.result.start : certified.result.steps.at(step - 1);
+    EXPECT_TRUE(oracle.check(record.q).contact) << "reported collision step " << step;
+    stats.certified_false_collisions += !contact && !oracle.check(record.q).contact;
+  }
+  // Every certificate is accepted by the independent checker.
+  const auto t4 = Clock::now();
+  const CheckReport report =
+      check_certificate(c.robot, c.environment, c.program, kinematics, certified.certificate);
+  stats.seconds[3] += std::chrono::duration<double>(Clock::now() - t4).count();
+  EXPECT_EQ(report.claim, to_string(verdict));
+  if (is_known_certificate_bug(certified, report, oracle)) {
+    // KNOWN BUG (tests/certify/oracle_findings_test.cpp, WILL_FAIL there until fixed): counted
+    // and printed, not failed here, so that the soundness shards stay meaningful meanwhile.
+    ++stats.known_bug_rejections;
+    std::cout << fmt::format("[oracle-known-bug] {}: {}\n", label, report.failures.front());
+    return;
+  }
+  EXPECT_TRUE(report.accepted) << fmt::format("{} failure(s), first: {}", report.failures.size(),
+                                              report.failures.empty() ? "" : report.failures.front());
+  for (const std::string& failure : report.failures) std::cout << "[oracle-rejected] " << failure << "\n";
+  stats.certificates_rejected += !report.accepted;
+}
+
+std::string verdicts(const int* counts) {
+  return fmt::format("CLEAR {} COLLISION {} WITHIN_TOLERANCE {} UNDECIDED {} ERROR {}", counts[0], counts[1],
+                     counts[2], counts[3], counts[4]);
+}
+
+void print(const std::string& label, const Statistics& s) {
+  auto bins = [](const int* counts) {
+    return fmt::format("{} {} {} {} {} {} {}", counts[0], counts[1], counts[2], counts[3], counts[4], counts[5],
+                       counts[6]);
+  };
+  std::cout << fmt::format(
+      "[oracle] {} cases {} contact {} clear {} not_followed {} error_when_clear {} samples {} exact {} cp_segments {}\n"
+      "[oracle] {} certified {} steps {} misses {} claim_misses {} clear_not_followed {} "
+      "false_collisions {} rejected {} known_bug_rejections {}\n"
+      "[oracle] {} clear_by_bin {} not_clear_by_bin {} (bins of clearance/Delta: <0.5 <1 <1.1 <1.5 <2 <4 "
+      ">=4) ratio_max_not_clear {:.4f} ratio_min_clear {:.4f}\n"
+      "[oracle] {} thesis {} misses {}\n"
+      "[oracle] {} seconds oracle {:.2f} certified {:.2f} thesis {:.2f} checker {:.2f}\n",
+      label, s.cases, s.oracle_contact, s.oracle_clear, s.oracle_not_followed, s.error_when_clear, s.oracle_samples,
+      s.oracle_exact_checks, s.cp_segments_checked, label, verdicts(s.certified), s.certified_steps,
+      s.certified_misses, s.certified_claim_misses, s.certified_clear_line_not_followed,
+      s.certified_false_collisions, s.certificates_rejected, s.known_bug_rejections, label, bins(s.clear_by_bin),
+      bins(s.not_clear_by_bin), s.largest_not_clear_ratio, s.smallest_clear_ratio, label, verdicts(s.thesis), s.thesis_misses, label, s.seconds[0],
+      s.seconds[1], s.seconds[2], s.seconds[3]);
+}
+
+enum class Family { kPtp, kScaraCp };
+
+void run_shard(Family family, int shard) {
+  const char* only_case = std::getenv("GRPVSS_ORACLE_CASE");
+  const int count = only_case != nullptr ? std::atoi(only_case) / kShards + 1 : cases_per_shard();
+  Statistics stats;
+  // GRPVSS_ORACLE_CASE=<index>: only that case (reproducing a report).
+  for (int k = 0; k < count; ++k) {
+    const int index = shard + k * kShards;
+    if (only_case != nullptr && index != std::atoi(only_case)) continue;
+    const std::uint64_t seed =
+        (family == Family::kPtp ? kPtpSeedBase : kCpSeedBase) + static_cast<std::uint64_t>(index);
+    const std::string label = fmt::format("case {} (seed {:#x})", index, seed);
+    SCOPED_TRACE(label);
+    const test::OracleCase c = family == Family::kPtp ? test::random_ptp_case(seed) : test::random_scara_cp_case(seed);
+    run_case(c, label, stats);
+    if (::testing::Test::HasFatalFailure()) return;
+  }
+  print(fmt::format("{}-{}", family == Family::kPtp ? "ptp" : "cp", shard), stats);
+  // The generator must exercise both sides of the property in every shard.
+  if (only_case == nullptr) {
+    EXPECT_GT(stats.oracle_contact, 0);
+    EXPECT_GT(stats.oracle_clear, 0);
+  }
+  EXPECT_EQ(stats.certified_misses, 0);
+  EXPECT_EQ(stats.certified_claim_misses, 0);
+  EXPECT_EQ(stats.certified_false_collisions, 0);
+  EXPECT_EQ(stats.certificates_rejected, 0);
+  if (family == Family::kScaraCp && only_case == nullptr) EXPECT_GT(stats.cp_segments_checked, 0);
+}
+
+// Shard 0 of each family runs under the sanitizers too; the others carry the ctest label
+// `heavy` (tests/ctest_properties.cmake) and run in the Release suite only.
+TEST(OracleSoundness, RandomPtpShard0) { run_shard(Family::kPtp, 0); }
+TEST(OracleSoundness, RandomPtpShard1) { run_shard(Family::kPtp, 1); }
+TEST(OracleSoundness, RandomPtpShard2) { run_shard(Family::kPtp, 2); }
+TEST(OracleSoundness, RandomPtpShard3) { run_shard(Family::kPtp, 3); }
+TEST(OracleSoundness, RandomPtpShard4) { run_shard(Family::kPtp, 4); }
+TEST(OracleSoundness, RandomPtpShard5) { run_shard(Family::kPtp, 5); }
+TEST(OracleSoundness, RandomPtpShard6) { run_shard(Family::kPtp, 6); }
+TEST(OracleSoundness, RandomPtpShard7) { run_shard(Family::kPtp, 7); }
+TEST(OracleSoundness, ScaraCpShard0) { run_shard(Family::kScaraCp, 0); }
+TEST(OracleSoundness, ScaraCpShard1) { run_shard(Family::kScaraCp, 1); }
+TEST(OracleSoundness, ScaraCpShard2) { run_shard(Family::kScaraCp, 2); }
+TEST(OracleSoundness, ScaraCpShard3) { run_shard(Family::kScaraCp, 3); }
+TEST(OracleSoundness, ScaraCpShard4) { run_shard(Family::kScaraCp, 4); }
+TEST(OracleSoundness, ScaraCpShard5) { run_shard(Family::kScaraCp, 5); }
+TEST(OracleSoundness, ScaraCpShard6) { run_shard(Family::kScaraCp, 6); }
+TEST(OracleSoundness, ScaraCpShard7) { run_shard(Family::kScaraCp, 7); }
 
 // One revolute joint about the world z axis; the link's box reaches from the axis (x = -10)
 // to radius 30 (x = +20) while frame 1 sits at radius 10: a tool sticking out 20 beyond the
@@ -356,51 +364,23 @@ HULL 8
       }
     }
   }
-  RandomCase c;
+  test::OracleCase c;
   c.robot = io::parse_robot_file(robot_text, "robot.txt");
   c.environment = io::parse_environment_file(environment_text, "environment.txt");
   c.program = io::parse_path_file("1\n1\n120.,30.\n", "path.txt", c.robot);
   c.tolerance = 0.1;
-  const auto kinematics =
-      motion::make_kinematics_access(c.robot, motion::select_ik("numeric", c.robot, "robot.txt"));
+  const auto kinematics = motion::make_kinematics_access(c.robot, motion::select_ik("numeric", c.robot, "robot.txt"));
   const test::MotionOracle oracle(c.robot, c.environment);
-  const test::OraclePathResult truth = oracle.sample_path(c.program, kOracleSpacingFraction * c.tolerance);
+  const test::OraclePathResult truth =
+      oracle.sample_path(c.program, kOracleSpacingFraction * c.tolerance, kinematics);
   ASSERT_TRUE(truth.first_contact.contact);
   // The tool's half-width 0.5 at radius 25 meets the plate's 0.1 near 60 degrees.
   EXPECT_NEAR(truth.contact_q[0] * 180.0 / M_PI, 60.0, 2.0);
   EXPECT_EQ(run_mode(c, kinematics, ResolutionMode::kThesis).result.verdict, Verdict::kClear);
   const VerificationRun certified = run_mode(c, kinematics, ResolutionMode::kCertified);
   EXPECT_EQ(certified.result.verdict, Verdict::kCollision);
-  const CheckReport report =
-      check_certificate(c.robot, c.environment, c.program, kinematics, certified.certificate);
+  const CheckReport report = check_certificate(c.robot, c.environment, c.program, kinematics, certified.certificate);
   EXPECT_TRUE(report.accepted) << (report.failures.empty() ? "" : report.failures.front());
-}
-
-TEST(MotionOracle, SamplesKeepEveryHullPointWithinTheSpacing) {
-  // The oracle's own sampling guarantee, checked against the reference FK: consecutive
-  // samples of a random case move no hull vertex by more than the spacing.
-  const RandomCase c = random_case(0x5eed0000ULL);
-  const test::MotionOracle oracle(c.robot, c.environment);
-  std::mt19937_64 rng(7);
-  for (int trial = 0; trial < 200; ++trial) {
-    Eigen::VectorXd q0(c.robot.joint_count()), dq(c.robot.joint_count());
-    for (int j = 0; j < c.robot.joint_count(); ++j) {
-      q0[j] = uniform(rng, c.robot.joints[j].minimum, c.robot.joints[j].maximum);
-      dq[j] = uniform(rng, -0.05, 0.05);
-    }
-    const double bound = oracle.motion_bound(dq);
-    for (int link = 0; link <= c.robot.joint_count(); ++link) {
-      const Eigen::Matrix4d X0 = test::reference_link_pose<double>(c.robot, q0, link);
-      const Eigen::Matrix4d X1 = test::reference_link_pose<double>(c.robot, q0 + dq, link);
-      for (const HullPoints& hull : c.robot.links[link].hulls) {
-        for (const auto& p_L : hull.points) {
-          const Eigen::Vector4d p(p_L.x(), p_L.y(), p_L.z(), 1.0);
-          // The straight displacement is at most the path length, which the bound covers.
-          EXPECT_LE(((X1 - X0) * p).norm(), bound * (1.0 + 1e-9) + 1e-12);
-        }
-      }
-    }
-  }
 }
 
 }  // namespace

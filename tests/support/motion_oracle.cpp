@@ -2,21 +2,22 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <variant>
 
 #include <Eigen/Geometry>
 
-#include "grpvss/geometry/exact_contact.hpp"
-#include "grpvss/geometry/gjk.hpp"
+#include "grpvss/motion/cp_line.hpp"
 #include "grpvss/motion/ptp_motion.hpp"
+#include "support/exact_hull_lp.hpp"
 #include "support/kinematics_reference.hpp"
 
 namespace grpvss::test {
 namespace {
 
-// Margins far above double rounding (coordinates here are < 10^3, rounding ~10^-13): a
-// plane or sphere gap larger than this separates exactly.
+// Margins far above double rounding (coordinates here are < 10^3, a dot product's rounding
+// ~10^-13 |v|_1 (1 + scale)): a plane or sphere gap larger than this separates exactly.
 double rounding_margin(double scale) { return 1e-9 * (1.0 + scale); }
 
 double max_abs(const std::vector<Eigen::Vector3d>& points) {
@@ -25,36 +26,151 @@ double max_abs(const std::vector<Eigen::Vector3d>& points) {
   return largest;
 }
 
+// Gilbert's original iteration (Frank-Wolfe on conv(A - B), 1966): v moves towards the
+// origin along the segment to the support point of -v. Only PROPOSES a direction; the caller
+// verifies the plane over every point. Start: the centroid difference (a point of A - B).
+Eigen::Vector3d gilbert_direction(const std::vector<Eigen::Vector3d>& a, const Eigen::Vector3d& a_center,
+                                  const std::vector<Eigen::Vector3d>& b, const Eigen::Vector3d& b_center) {
+  Eigen::Vector3d v = a_center - b_center;
+  if (v.squaredNorm() == 0.0) v = Eigen::Vector3d::UnitX();
+  for (int iteration = 0; iteration < 64; ++iteration) {
+    const Eigen::Vector3d* a_low = &a.front();
+    for (const auto& p : a) {
+      if (v.dot(p) < v.dot(*a_low)) a_low = &p;
+    }
+    const Eigen::Vector3d* b_high = &b.front();
+    for (const auto& p : b) {
+      if (v.dot(p) > v.dot(*b_high)) b_high = &p;
+    }
+    const Eigen::Vector3d w = *a_low - *b_high;
+    const double vv = v.squaredNorm();
+    const double vw = v.dot(w);
+    // Converged: the lower bound vw/|v| is within 0.1% of the upper bound |v|.
+    if (vw > 0.0 && vv - vw <= 2e-3 * vv) break;
+    const Eigen::Vector3d d = w - v;
+    const double dd = d.squaredNorm();
+    if (dd == 0.0) break;
+    const double t = std::clamp(-v.dot(d) / dd, 0.0, 1.0);
+    if (t == 0.0) break;  // no progress: v is (numerically) the closest point
+    v += t * d;
+    if (v.squaredNorm() < 1e-24) break;  // the hulls (nearly) meet: the exact test decides
+  }
+  return v;
+}
+
+// Float facet normals (outward, unit) and edge directions (unit) of conv(points), by brute
+// force: a triple spans a facet plane when every point lies on one side (within `slack`); a
+// pair is an edge when both points lie on two distinct facet planes. Approximate (proposals).
+void float_features(const std::vector<Eigen::Vector3d>& points, std::vector<Eigen::Vector3d>& normals,
+                    std::vector<Eigen::Vector3d>& edges) {
+  const std::size_t n = points.size();
+  const double slack = 1e-9 * (1.0 + max_abs(points));
+  auto add_unique = [](std::vector<Eigen::Vector3d>& list, const Eigen::Vector3d& d, bool oriented) {
+    for (const auto& e : list) {
+      if (e.dot(d) > 1.0 - 1e-9 || (!oriented && e.dot(d) < -1.0 + 1e-9)) return;
+    }
+    list.push_back(d);
+  };
+  std::vector<std::pair<Eigen::Vector3d, double>> planes;
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j = i + 1; j < n; ++j) {
+      for (std::size_t k = j + 1; k < n; ++k) {
+        Eigen::Vector3d normal = (points[j] - points[i]).cross(points[k] - points[i]);
+        if (normal.norm() <= slack) continue;
+        normal.normalize();
+        for (const double sign : {1.0, -1.0}) {
+          const Eigen::Vector3d m = sign * normal;
+          const double offset = m.dot(points[i]);
+          bool facet = true;
+          for (const auto& p : points) facet = facet && m.dot(p) <= offset + slack;
+          if (facet) {
+            add_unique(normals, m, true);
+            planes.push_back({m, offset});
+          }
+        }
+      }
+    }
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j = i + 1; j < n; ++j) {
+      int containing = 0;
+      const Eigen::Vector3d* first = nullptr;
+      for (const auto& [m, offset] : planes) {
+        if (std::abs(m.dot(points[i]) - offset) > slack || std::abs(m.dot(points[j]) - offset) > slack) continue;
+        if (first != nullptr && first->dot(m) > 1.0 - 1e-9) continue;
+        if (first == nullptr) first = &m;
+        ++containing;
+      }
+      const Eigen::Vector3d d = points[j] - points[i];
+      if (containing >= 2 && d.norm() > slack) add_unique(edges, d.normalized(), false);
+    }
+  }
+}
+
+// The separating-axis proposal: the axis (oriented from b towards a) with the largest float
+// gap among facet normals of both and edge cross products.
+Eigen::Vector3d best_float_axis(const std::vector<Eigen::Vector3d>& a, const std::vector<Eigen::Vector3d>& a_normals,
+                                const std::vector<Eigen::Vector3d>& a_edges, const std::vector<Eigen::Vector3d>& b,
+                                const std::vector<Eigen::Vector3d>& b_normals,
+                                const std::vector<Eigen::Vector3d>& b_edges) {
+  Eigen::Vector3d best = Eigen::Vector3d::UnitX();
+  double best_gap = -std::numeric_limits<double>::infinity();
+  auto consider = [&](const Eigen::Vector3d& axis) {
+    double a_low = std::numeric_limits<double>::infinity(), a_high = -a_low;
+    double b_low = a_low, b_high = -a_low;
+    for (const auto& p : a) {
+      const double s = axis.dot(p);
+      a_low = std::min(a_low, s);
+      a_high = std::max(a_high, s);
+    }
+    for (const auto& p : b) {
+      const double s = axis.dot(p);
+      b_low = std::min(b_low, s);
+      b_high = std::max(b_high, s);
+    }
+    if (a_low - b_high > best_gap) {
+      best_gap = a_low - b_high;
+      best = axis;
+    }
+    if (b_low - a_high > best_gap) {
+      best_gap = b_low - a_high;
+      best = -axis;
+    }
+  };
+  for (const auto& n : a_normals) consider(n);
+  for (const auto& n : b_normals) consider(n);
+  for (const auto& e : a_edges) {
+    for (const auto& f : b_edges) {
+      const Eigen::Vector3d axis = e.cross(f);
+      const double norm = axis.norm();
+      if (norm > 1e-9) consider(axis / norm);
+    }
+  }
+  return best;
+}
+
 }  // namespace
 
 MotionOracle::MotionOracle(const RobotModel& robot, const Environment& environment)
     : robot_(&robot) {
-  for (const Link& link : robot.links) {
-    hulls_.emplace_back();
-    for (const HullPoints& hull : link.hulls) {
-      PlacedHull placed;
-      placed.points_L = hull.points;
-      Eigen::Vector3d center = Eigen::Vector3d::Zero();
-      for (const auto& p : hull.points) center += p;
-      center /= static_cast<double>(hull.points.size());
-      double radius = 0.0;
-      for (const auto& p : hull.points) radius = std::max(radius, (p - center).norm());
-      placed.center_L = center;
-      placed.radius = radius * (1.0 + 1e-12);
-      hulls_.back().push_back(std::move(placed));
-    }
-  }
-  for (const HullPoints& obstacle : environment.obstacles) {
-    obstacles_W_.push_back(obstacle.points);
-    obstacle_polytopes_.push_back(geometry::ConvexPolytope::from_points(obstacle.points));
+  auto make_shape = [](const std::vector<Eigen::Vector3d>& points) {
+    Shape shape;
+    shape.points = points;
     Eigen::Vector3d center = Eigen::Vector3d::Zero();
-    for (const auto& p : obstacle.points) center += p;
-    center /= static_cast<double>(obstacle.points.size());
+    for (const auto& p : points) center += p;
+    center /= static_cast<double>(points.size());
     double radius = 0.0;
-    for (const auto& p : obstacle.points) radius = std::max(radius, (p - center).norm());
-    obstacle_centers_W_.push_back(center);
-    obstacle_radii_.push_back(radius * (1.0 + 1e-12));
+    for (const auto& p : points) radius = std::max(radius, (p - center).norm());
+    shape.center = center;
+    shape.radius = radius * (1.0 + 1e-12);
+    float_features(points, shape.face_normals, shape.edge_directions);
+    return shape;
+  };
+  for (const Link& link : robot.links) {
+    hulls_L_.emplace_back();
+    for (const HullPoints& hull : link.hulls) hulls_L_.back().push_back(make_shape(hull.points));
   }
+  for (const HullPoints& obstacle : environment.obstacles) obstacles_W_.push_back(make_shape(obstacle.points));
   // R_j: a point of link i >= j is at most sum_{m=j..i} |translation of A_m| + |p_L| from the
   // origin of frame j-1, which lies on axis j; |translation of A_m| <= |a_m| + max|d_m|.
   const int n = robot.joint_count();
@@ -88,50 +204,65 @@ double MotionOracle::motion_bound(const Eigen::VectorXd& dq) const {
 
 OracleContact MotionOracle::check(const Eigen::VectorXd& q, bool stop_at_contact) const {
   OracleContact result;
-  std::vector<Eigen::Vector3d> placed;
-  for (int link = 0; link < static_cast<int>(hulls_.size()); ++link) {
-    if (hulls_[link].empty()) continue;
-    const Eigen::Matrix4d X_WL = reference_link_pose<double>(*robot_, q, link);
+  std::vector<Eigen::Vector3d> placed, rotated_normals, rotated_edges;
+  Eigen::Matrix4d X_WL = Eigen::Matrix4d::Identity();
+  for (int link = 0; link < static_cast<int>(hulls_L_.size()); ++link) {
+    if (link > 0) X_WL = (X_WL * dh_matrix<double>(robot_->joints[link - 1], q[link - 1])).eval();
+    if (hulls_L_[link].empty()) continue;
     const Eigen::Matrix3d R_WL = X_WL.topLeftCorner<3, 3>();
     const Eigen::Vector3d t_WL = X_WL.topRightCorner<3, 1>();
-    for (int h = 0; h < static_cast<int>(hulls_[link].size()); ++h) {
-      const PlacedHull& hull = hulls_[link][h];
-      const Eigen::Vector3d center_W = R_WL * hull.center_L + t_WL;
+    for (int h = 0; h < static_cast<int>(hulls_L_[link].size()); ++h) {
+      const Shape& hull = hulls_L_[link][h];
+      const Eigen::Vector3d center_W = R_WL * hull.center + t_WL;
       bool placed_ready = false;
       for (int o = 0; o < static_cast<int>(obstacles_W_.size()); ++o) {
+        const Shape& obstacle = obstacles_W_[o];
         const double scale = center_W.cwiseAbs().maxCoeff() + hull.radius +
-                             obstacle_centers_W_[o].cwiseAbs().maxCoeff() + obstacle_radii_[o];
-        const double sphere_gap = (center_W - obstacle_centers_W_[o]).norm() - hull.radius -
-                                  obstacle_radii_[o] - rounding_margin(scale);
-        // The spheres prove separation, and the gap bounds the distance from below.
+                             obstacle.center.cwiseAbs().maxCoeff() + obstacle.radius;
+        const double sphere_gap = (center_W - obstacle.center).norm() - hull.radius -
+                                  obstacle.radius - 3.0 * rounding_margin(scale);
+        // The spheres prove separation, and the gap bounds the distance from below: nothing
+        // to learn from this pair.
         if (sphere_gap > 0.0 && sphere_gap >= result.min_distance_estimate) continue;
         if (!placed_ready) {
-          placed.resize(hull.points_L.size());
-          for (std::size_t k = 0; k < placed.size(); ++k) placed[k] = R_WL * hull.points_L[k] + t_WL;
+          placed.resize(hull.points.size());
+          for (std::size_t k = 0; k < placed.size(); ++k) placed[k] = R_WL * hull.points[k] + t_WL;
           placed_ready = true;
         }
-        const geometry::GjkResult gjk = geometry::gjk(placed, obstacles_W_[o]);
-        bool separated = false;
-        if (gjk.status == geometry::GjkStatus::kSeparated) {
-          // GJK only proposes the direction v (from the obstacle to the hull); the plane is
-          // verified here over every point with a margin beyond rounding.
-          const Eigen::Vector3d& v = gjk.closest_vector;
+        // Pre-filter: a plane normal to v with a gap beyond rounding over EVERY point.
+        const double scale_points = std::max(max_abs(placed), max_abs(obstacle.points));
+        auto plane_gap = [&](const Eigen::Vector3d& v) {
           double hull_low = std::numeric_limits<double>::infinity();
           double obstacle_high = -std::numeric_limits<double>::infinity();
           for (const auto& p : placed) hull_low = std::min(hull_low, v.dot(p));
-          for (const auto& p : obstacles_W_[o]) obstacle_high = std::max(obstacle_high, v.dot(p));
-          const double margin = rounding_margin(std::max(max_abs(placed), max_abs(obstacles_W_[o]))) *
-                                v.lpNorm<1>();
-          separated = hull_low - obstacle_high > margin;
+          for (const auto& p : obstacle.points) obstacle_high = std::max(obstacle_high, v.dot(p));
+          return hull_low - obstacle_high - rounding_margin(scale_points) * v.lpNorm<1>();
+        };
+        Eigen::Vector3d v = gilbert_direction(placed, center_W, obstacle.points, obstacle.center);
+        double gap = plane_gap(v);
+        // Gilbert's iteration converges slowly next to contact: unless its plane is within 1%
+        // of its upper bound |v| on the distance, try the facet/edge axes too.
+        if (!(gap > 0.0) || (gap < 0.99 * v.squaredNorm() && gap < result.min_distance_estimate * v.norm())) {
+          rotated_normals.clear();
+          rotated_edges.clear();
+          for (const auto& n : hull.face_normals) rotated_normals.push_back(R_WL * n);
+          for (const auto& e : hull.edge_directions) rotated_edges.push_back(R_WL * e);
+          const Eigen::Vector3d axis = best_float_axis(placed, rotated_normals, rotated_edges, obstacle.points,
+                                                       obstacle.face_normals, obstacle.edge_directions);
+          const double axis_gap = plane_gap(axis);
+          if (axis_gap > gap) {
+            v = axis;
+            gap = axis_gap;
+          }
         }
+        bool separated = gap > 0.0;
         if (!separated) {
           ++exact_checks_;
-          const geometry::Contact contact = geometry::classify_exact(
-              geometry::ConvexPolytope::from_points(placed), obstacle_polytopes_[o]);
-          separated = contact == geometry::Contact::kSeparated;
+          separated = !hulls_intersect_exact_lp(placed, obstacle.points);
         }
         if (separated) {
-          result.min_distance_estimate = std::min(result.min_distance_estimate, gjk.distance);
+          const double distance = std::max(0.0, gap / v.norm());
+          result.min_distance_estimate = std::min(result.min_distance_estimate, distance);
           continue;
         }
         result.min_distance_estimate = 0.0;
@@ -148,52 +279,142 @@ OracleContact MotionOracle::check(const Eigen::VectorXd& q, bool stop_at_contact
   return result;
 }
 
-OraclePathResult MotionOracle::sample_path(const PathProgram& program, double spacing) const {
+// Marches t over [0, 1]: `next(t_from, q_from, t_to)` gives the configuration at t_to (or
+// nothing: the motion cannot be followed). A step is accepted when its motion bound is at
+// most max(spacing, clearance - reserve), `clearance` being the (float, conservative) lower
+// bound on the distance at the last sample: every configuration in between is then farther
+// than `reserve` from every obstacle (no contact skipped; and wherever the clearance is below
+// `reserve` the samples are `spacing` apart). Steps are at most `max_h`. A step that still
+// moves too far at 1e-9 of the range is a jump: visit(nullptr, t). Returns true if stopped.
+template <typename Motion, typename Visit>
+bool MotionOracle::march(const Motion& next, double spacing, Visit&& visit, const double& clearance,
+                         double max_h) const {
+  const double reserve = kReserveSpacings * spacing;
+  double t = 0.0;
+  std::optional<Eigen::VectorXd> q = next(0.0, Eigen::VectorXd(), 0.0);
+  if (!q) return visit(nullptr, 0.0);
+  double h = std::min(max_h, 1.0 / 64.0);
+  while (t < 1.0) {
+    const double allowed = std::max(spacing, clearance - reserve);
+    const double t1 = std::min(1.0, t + h);
+    const std::optional<Eigen::VectorXd> q1 = next(t, *q, t1);
+    const double bound = q1 ? motion_bound(*q1 - *q) : std::numeric_limits<double>::infinity();
+    if (bound > allowed) {
+      if (h > 1e-9) {
+        h *= 0.5;
+        continue;
+      }
+      return visit(nullptr, t1);  // a jump or an unreachable stretch
+    }
+    if (bound < 0.5 * allowed) h = std::min(max_h, h * 1.5);
+    t = t1;
+    q = q1;
+    if (visit(&*q, t)) return true;
+  }
+  return false;
+}
+
+OraclePathResult MotionOracle::sample_path(const PathProgram& program, double spacing,
+                                           const motion::KinematicsAccess& kinematics) const {
   const RobotModel& robot = *robot_;
   const long long exact_before = exact_checks_;
   OraclePathResult result;
   Eigen::VectorXd q_start(robot.joint_count());
   for (int j = 0; j < robot.joint_count(); ++j) q_start[j] = robot.joints[j].home;
 
-  auto visit = [&](const Eigen::VectorXd& q, int segment, double t) {
+  // Returns true to stop: at a contact, or (q == nullptr) where a line cannot be followed.
+  int segment = 1;
+  double parameter_scale = 0.0;
+  Eigen::VectorXd last_q = q_start;
+  double clearance = 0.0;
+  auto visit = [&](const Eigen::VectorXd* q, double t) {
+    if (q == nullptr) {
+      result.line_not_followed = true;
+      result.stopped_segment = segment;
+      return true;
+    }
+    last_q = *q;
     ++result.samples;
-    const OracleContact contact = check(q);
+    const OracleContact contact = check(*q);
+    clearance = contact.min_distance_estimate;
     result.min_distance_estimate = std::min(result.min_distance_estimate, contact.min_distance_estimate);
     if (!contact.contact) return false;
     result.first_contact = contact;
     result.contact_segment = segment;
-    result.contact_time = t;
-    result.contact_q = q;
+    result.contact_parameter = t * parameter_scale;
+    result.contact_q = *q;
     return true;
   };
 
-  bool done = visit(q_start, 1, 0.0);
+  bool done = visit(&q_start, 0.0);
   for (int s = 0; s < static_cast<int>(program.segments.size()) && !done; ++s) {
-    const auto* ptp = std::get_if<PtpJointSegment>(&program.segments[s].spec);
-    if (ptp == nullptr) throw std::invalid_argument("MotionOracle: PTP joint segments only");
-    const motion::PtpMotion motion = motion::PtpMotion::plan(
-        robot, q_start, ptp->target, ptp->velocity, motion::PtpTiming::kIndependent);
-    const double duration = motion.duration();
-    double t = 0.0;
-    Eigen::VectorXd q = motion.joints_at(0.0);
-    double h = duration / 64.0;
-    while (t < duration && !done) {
-      const double t1 = std::min(duration, t + h);
-      const Eigen::VectorXd q1 = motion.joints_at(t1);
-      const double bound = motion_bound(q1 - q);
-      if (bound > spacing && h > duration * 1e-12) {
-        h *= 0.5;
-        continue;
+    segment = s + 1;
+    if (const auto* ptp = std::get_if<PtpJointSegment>(&program.segments[s].spec)) {
+      const motion::PtpMotion motion = motion::PtpMotion::plan(
+          robot, q_start, ptp->target, ptp->velocity, motion::PtpTiming::kIndependent);
+      const double duration = motion.duration();
+      parameter_scale = duration;
+      auto next = [&](double, const Eigen::VectorXd&, double t) {
+        return std::optional<Eigen::VectorXd>(motion.joints_at(t * duration));
+      };
+      done = march(next, spacing, visit, clearance, 0.25);
+      q_start = ptp->target;  // the motion stage starts the next segment at the target
+    } else if (const auto* cp = std::get_if<CpLineSegment>(&program.segments[s].spec)) {
+      const motion::CpLine line(kinematics.forward(q_start), cp->target);
+      if (line.is_zero_length()) {
+        done = visit(nullptr, 0.0);
+        break;
       }
-      if (bound < 0.5 * spacing) h *= 1.5;
-      t = t1;
-      q = q1;
-      done = visit(q, s + 1, t);
+      parameter_scale = line.length();
+      const Eigen::VectorXd q_line_start = q_start;
+      auto next = [&](double, const Eigen::VectorXd& q_from, double t) -> std::optional<Eigen::VectorXd> {
+        if (t == 0.0) return q_line_start;
+        return motion::solve_within_limits(robot, kinematics, line.pose_at(t * line.length()), q_from);
+      };
+      // IK is checked at least every max(spacing, 0.05) of path length, also far from obstacles:
+      // an unreachable stretch or a jump there stops the oracle ("line not followed").
+      done = march(next, spacing, visit, clearance, std::max(spacing, 0.05) / line.length());
+      q_start = last_q;
+    } else {
+      throw std::invalid_argument("MotionOracle: PTP(JCS) and CP segments only");
     }
-    q_start = ptp->target;  // the motion stage starts the next segment at the target
   }
   result.exact_checks = exact_checks_ - exact_before;
-  if (done) result.min_distance_estimate = 0.0;
+  if (result.first_contact.contact) result.min_distance_estimate = 0.0;
+  return result;
+}
+
+OraclePathResult MotionOracle::sample_joint_linear(const std::vector<Eigen::VectorXd>& q_samples,
+                                                   double spacing, int segment) const {
+  const long long exact_before = exact_checks_;
+  OraclePathResult result;
+  double piece = 0.0;
+  double clearance = 0.0;
+  auto visit = [&](const Eigen::VectorXd* q, double t) {
+    if (q == nullptr) throw std::logic_error("sample_joint_linear: a joint-linear piece is continuous");
+    ++result.samples;
+    const OracleContact contact = check(*q);
+    clearance = contact.min_distance_estimate;
+    result.min_distance_estimate = std::min(result.min_distance_estimate, contact.min_distance_estimate);
+    if (!contact.contact) return false;
+    result.first_contact = contact;
+    result.contact_segment = segment;
+    result.contact_parameter = piece + t;
+    result.contact_q = *q;
+    return true;
+  };
+  bool done = !q_samples.empty() && visit(&q_samples.front(), 0.0);
+  for (std::size_t k = 1; k < q_samples.size() && !done; ++k) {
+    piece = static_cast<double>(k - 1);
+    const Eigen::VectorXd& q0 = q_samples[k - 1];
+    const Eigen::VectorXd& q1 = q_samples[k];
+    auto next = [&](double, const Eigen::VectorXd&, double t) {
+      return std::optional<Eigen::VectorXd>(q0 + t * (q1 - q0));
+    };
+    done = march(next, spacing, visit, clearance, 0.25);
+  }
+  result.exact_checks = exact_checks_ - exact_before;
+  if (result.first_contact.contact) result.min_distance_estimate = 0.0;
   return result;
 }
 
