@@ -430,6 +430,10 @@ void Checker::start() {
   if (segment_count_ != trajectory_->segments().size() || !trajectory_->errors().empty()) {
     coverage_complete_ = false;
   }
+  // Step 0 is the robot's home configuration (the path's start), known from the inputs: a
+  // collision there is re-decided even when no segment was simulated (the path stopped at its
+  // first segment, e.g. error 5), where no segment certificate names step 0.
+  if (certificate_.collision_step == 0) collision_step_q_ = trajectory_->home();
   if (segment_count_ > trajectory_->segments().size()) stopped_ = concluded_ = true;
 }
 

@@ -1,8 +1,8 @@
 // Findings of the oracle soundness runs (docs/soundness-oracle.md#findings), kept as
-// regression tests with the exact random case that exposed them. Every test here is a KNOWN
-// BUG reported to the lead, marked WILL_FAIL in tests/ctest_properties.cmake (so ctest passes
-// while the bug is there and FAILS once it is fixed: then drop the WILL_FAIL line). Each
-// asserts its preconditions and then what should hold; only the last assertion fails today.
+// regression tests with the exact random case that exposed them. Each was a checker rejection
+// of a certificate the verifier wrote (never a CLEAR claim), fixed in
+// src/certify/certificate_checker.cpp: a segment with only its start step is checked and
+// marked uncovered; a collision at step 0 is re-decided at the robot's home configuration.
 #include <variant>
 
 #include <gtest/gtest.h>
@@ -16,14 +16,13 @@
 namespace grpvss::certify {
 namespace {
 
-// KNOWN BUG, reported to the lead (wave 3): the long oracle run's SCARA case 408 (seed
+// Found by the long run (fixed): the long oracle run's SCARA case 408 (seed
 // 0xc0de0198, Delta = 1.148) stops with error 7 (IK joint jump) at the FIRST step of CP
 // segment 3. The verdict ERROR is right, but the certificate written for the run is rejected
 // by check_certificate: "segment 3: fewer than two steps" (the unsimulated segment is written
 // with a single step). Not a soundness bug (nothing is claimed CLEAR), but every certificate
 // must be accepted. The CI shard case 95 (seed 0xc0de005f: COLLISION in segment 1, then error 7
-// at the first step of CP segment 2) shows the same rejection for a COLLISION certificate. tests/ctest_properties.cmake marks this test WILL_FAIL until src/certify
-// is fixed; then ctest reports it as failing and the WILL_FAIL line must be removed.
+// at the first step of CP segment 2) shows the same rejection for a COLLISION certificate.
 TEST(OracleFindings, CpSegmentStoppedAtItsFirstStepStillGivesAnAcceptedCertificate) {
   const test::OracleCase c = test::random_scara_cp_case(0xc0de0198ULL);
   const auto kinematics = motion::make_kinematics_access(c.robot, motion::select_ik(c.ik, c.robot, "random"));
@@ -39,12 +38,11 @@ TEST(OracleFindings, CpSegmentStoppedAtItsFirstStepStillGivesAnAcceptedCertifica
   EXPECT_TRUE(report.accepted) << (report.failures.empty() ? "" : report.failures.front());
 }
 
-// KNOWN BUG, reported to the lead (wave 3): long-run PTP case 1289 (seed 0x5eed0509) has a
+// Found by the long run (fixed): long-run PTP case 1289 (seed 0x5eed0509) has a
 // second PTP segment whose target is where the first one ended (both clamped to the joint
 // limits): zero motion. The verifier simulates it without a step, the certificate holds the
 // segment with fewer than two steps and check_certificate rejects the COLLISION certificate
 // ("segment 2: fewer than two steps"). Same in case 1267 (seed 0x5eed04f3, WITHIN_TOLERANCE).
-// WILL_FAIL in tests/ctest_properties.cmake until fixed.
 TEST(OracleFindings, ZeroMotionPtpSegmentStillGivesAnAcceptedCertificate) {
   const test::OracleCase c = test::random_ptp_case(0x5eed0509ULL);
   ASSERT_EQ(c.program.segments.size(), 2u);
@@ -61,11 +59,11 @@ TEST(OracleFindings, ZeroMotionPtpSegmentStillGivesAnAcceptedCertificate) {
   EXPECT_TRUE(report.accepted) << (report.failures.empty() ? "" : report.failures.front());
 }
 
-// KNOWN BUG, reported to the lead (wave 3): long-run SCARA case 1945 (seed 0xc0de0799,
+// Found by the long run (fixed): long-run SCARA case 1945 (seed 0xc0de0799,
 // Delta = 0.022): the robot collides at its home configuration (step 0; the oracle confirms)
 // and the first CP line stops with error 5 before any step. Verdict COLLISION at step 0 is
 // right, but check_certificate rejects the certificate: "claim COLLISION, but the robot at the
-// named step touches no obstacle". WILL_FAIL in tests/ctest_properties.cmake until fixed.
+// named step touches no obstacle".
 TEST(OracleFindings, CollisionAtTheStartBeforeAnErrorGivesAnAcceptedCertificate) {
   const test::OracleCase c = test::random_scara_cp_case(0xc0de0799ULL);
   const auto kinematics = motion::make_kinematics_access(c.robot, motion::select_ik(c.ik, c.robot, "random"));
