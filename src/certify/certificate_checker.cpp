@@ -14,6 +14,7 @@
 #include "grpvss/certify/cell_probe.hpp"
 #include "grpvss/certify/exact_axis_radius.hpp"  // place_points only: the shared placement expression
 #include "grpvss/geometry/convex_polytope.hpp"
+#include "grpvss/geometry/directed_rounding.hpp"
 #include "grpvss/geometry/exact_contact.hpp"
 #include "grpvss/geometry/minkowski_offset.hpp"
 #include "grpvss/geometry/separation_witness.hpp"
@@ -39,15 +40,33 @@ struct CheckedHull {
   std::vector<Rational> axis_radius;  ///< [joint-1], exact
 };
 
-// Exact box separation: some axis has a gap > margin between the boxes of the two sets.
-bool boxes_farther_than(const std::vector<Eigen::Vector3d>& a,
-                        const std::vector<Eigen::Vector3d>& b, double margin) {
+// Axis-aligned box of a point set (min/max of doubles: exact).
+struct Box {
+  Eigen::Vector3d lo, hi;
+};
+Box box_of(const std::vector<Eigen::Vector3d>& points) {
+  Box box{points.front(), points.front()};
+  for (const auto& p : points) {
+    box.lo = box.lo.cwiseMin(p);
+    box.hi = box.hi.cwiseMax(p);
+  }
+  return box;
+}
+
+// x > y + m for doubles x, y, m (m >= 0), decided exactly without big numbers: RD(y + m) and
+// RU(y + m) are the doubles around the exact sum (equal when it is a double), so x exceeds it
+// iff x > RU, or x == RU with RU != RD (proofs/fast-path.md#directed-rounding, TwoSum).
+bool exceeds_sum(double x, double y, double m) {
+  const double up = geometry::rounding::nearest_mode_add_up(y, m);
+  const double down = geometry::rounding::nearest_mode_add_down(y, m);
+  return x > up || (x == up && up != down);
+}
+
+// Exact box separation: some axis has a gap > margin between the two boxes.
+bool boxes_farther_than(const Box& a, const Box& b, double margin) {
   for (int axis = 0; axis < 3; ++axis) {
-    double a_lo = a[0][axis], a_hi = a[0][axis], b_lo = b[0][axis], b_hi = b[0][axis];
-    for (const auto& p : a) a_lo = std::min(a_lo, p[axis]), a_hi = std::max(a_hi, p[axis]);
-    for (const auto& p : b) b_lo = std::min(b_lo, p[axis]), b_hi = std::max(b_hi, p[axis]);
-    if (exact(b_lo) - exact(a_hi) > exact(margin)) return true;
-    if (exact(a_lo) - exact(b_hi) > exact(margin)) return true;
+    if (exceeds_sum(b.lo[axis], a.hi[axis], margin)) return true;
+    if (exceeds_sum(a.lo[axis], b.hi[axis], margin)) return true;
   }
   return false;
 }
@@ -102,6 +121,7 @@ class Checker {
   kinematics::Workspace workspace_;
   std::vector<CheckedHull> hulls_;
   std::vector<std::vector<Eigen::Vector3d>> obstacles_;
+  std::vector<Box> obstacle_boxes_;
   std::vector<Eigen::Vector3d> placed_;
   CheckReport report_;
   bool all_transitions_certified_ = true;
@@ -176,6 +196,7 @@ bool Checker::build_hulls() {
   }
   for (const HullPoints& obstacle : environment_.obstacles) {
     obstacles_.push_back(geometry::ConvexPolytope::from_points(obstacle.points).vertices());
+    obstacle_boxes_.push_back(box_of(obstacles_.back()));
   }
   return true;
 }
@@ -207,6 +228,7 @@ std::vector<Rational> Checker::check_step(const StepCertificate& step, const std
     std::vector<Eigen::Vector3d> placed_expanded, placed_raw;
     place_points(X_WL, hull.expanded_L, placed_expanded);
     place_points(X_WL, hull.raw_L, placed_raw);
+    const Box placed_box = box_of(placed_expanded);
     // Per obstacle: the radius its evidence proves (proofs/two-ball-cover.md#corollary-step).
     std::vector<std::optional<Rational>> expanded_radius(obstacle_count), raw_radius(obstacle_count);
     std::vector<char> expanded_interferes(obstacle_count, 0), raw_collides(obstacle_count, 0);
@@ -249,6 +271,7 @@ std::vector<Rational> Checker::check_step(const StepCertificate& step, const std
     auto lower_to = [&radius](const Rational& r) {
       if (!radius || r < *radius) radius = r;
     };
+    bool beyond_margin = false;  // some obstacle is accounted for by the broadphase margin
     for (int o = 0; o < obstacle_count; ++o) {
       if (expanded_radius[o]) {
         lower_to(*expanded_radius[o]);
@@ -257,12 +280,12 @@ std::vector<Rational> Checker::check_step(const StepCertificate& step, const std
         else lower_to(Rational(0));  // raw collision or no raw evidence: nothing proven
       } else if (std::isfinite(record.broadphase_margin) && record.broadphase_margin >= 0.0) {
         ++report_.inequalities_checked;
-        if (!boxes_farther_than(placed_expanded, obstacles_[o], record.broadphase_margin)) {
+        if (!boxes_farther_than(placed_box, obstacle_boxes_[o], record.broadphase_margin)) {
           fail(hull_where + " obstacle " + std::to_string(o) +
                ": no evidence and not beyond the broadphase margin");
           lower_to(Rational(0));
         } else {
-          lower_to(delta + exact(record.broadphase_margin));
+          beyond_margin = true;
         }
       } else {
         fail(hull_where + " obstacle " + std::to_string(o) + ": no evidence");
@@ -270,6 +293,9 @@ std::vector<Rational> Checker::check_step(const StepCertificate& step, const std
       }
     }
     // No obstacle at all: nothing can be hit, any radius up to the probe's cap is vacuously true.
+    // proof: proofs/two-ball-cover.md#corollary-step (obstacles beyond the margin are farther
+    // than Delta + margin from every true point of the hull): one bound for all of them.
+    if (beyond_margin) lower_to(delta + exact(record.broadphase_margin));
     if (!radius) radius = exact(kUnboundedRadius);
     ++report_.inequalities_checked;
     if (!(exact(record.radius) <= *radius) || record.radius < 0.0) {

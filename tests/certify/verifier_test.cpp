@@ -3,6 +3,7 @@
 #include "grpvss/certify/verifier.hpp"
 
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include <fmt/core.h>
@@ -190,6 +191,54 @@ TEST_F(ClearCell, CheckerRejectsACleanClaimOnASegmentCutToItsStart) {
   ASSERT_FALSE(report.failures.empty());
   EXPECT_NE(report.failures.back().find("do not cover the whole path"), std::string::npos)
       << report.failures.back();
+}
+
+// More than 16 obstacles: the probe uses the broadphase, and the certificate accounts for the
+// obstacles it dismissed by the broadphase margin alone (no evidence record). The checker
+// decides the box gaps exactly (certificate_checker.cpp, boxes_farther_than).
+TEST(CheckerBroadphase, FarObstaclesWithoutEvidenceAreAcceptedANearOneIsNot) {
+  std::string text = radial_box_environment(60, 31.5, 36, 1.0, 2.0);
+  const std::string header = "90.\n2\n1\n";
+  ASSERT_EQ(text.rfind(header, 0), 0u);
+  std::string boxes = text.substr(header.size());
+  for (int k = 0; k < 20; ++k) {
+    const std::string far = radial_box_environment(18.0 * k, 120.0, 122.0, 1.0, 2.0);
+    boxes += far.substr(header.size());
+  }
+  const Cell cell = make_cell(kSweepingArm, "90.\n2\n21\n" + boxes, kTurn120Degrees);
+  ASSERT_EQ(cell.environment.obstacles.size(), 21u);
+  const VerificationRun result = run(cell, 0.5, ResolutionMode::kCertified);
+  ASSERT_EQ(result.result.verdict, Verdict::kClear);
+  EXPECT_TRUE(check(cell, result.certificate).accepted);
+  // The far boxes carry no evidence in the certificate: the margin accounts for them.
+  const HullRecord& record = result.certificate.segments.at(0).steps.at(0).hulls.at(0);
+  EXPECT_LT(record.evidence.size(), 21u);
+  EXPECT_TRUE(std::isfinite(record.broadphase_margin));
+  // At the step nearest the box its evidence proves less than the margin; dropping that
+  // evidence leaves the box to the margin, which it is not beyond.
+  const auto& steps = result.certificate.segments.at(0).steps;
+  std::size_t nearest = steps.size();
+  double smallest = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < steps.size(); ++k) {
+    for (const EvidenceRecord& evidence : steps[k].hulls.at(0).evidence) {
+      if (evidence.obstacle == 0 && evidence.separated && evidence.lower_bound < smallest) {
+        smallest = evidence.lower_bound;
+        nearest = k;
+      }
+    }
+  }
+  ASSERT_LT(nearest, steps.size());
+  ASSERT_LT(smallest, steps[nearest].hulls.at(0).broadphase_margin);
+  nlohmann::json document = certificate_to_json(result.certificate);
+  document["segments"][0]["steps"][nearest]["hulls"][0]["evidence"] = nlohmann::json::array();
+  const CheckReport tampered = check(cell, certificate_from_json(document, "cert.json"));
+  EXPECT_FALSE(tampered.accepted);
+  bool named = false;
+  for (const std::string& failure : tampered.failures) {
+    named |= failure.find("obstacle 0: no evidence and not beyond the broadphase margin") !=
+             std::string::npos;
+  }
+  EXPECT_TRUE(named);
 }
 
 TEST_F(ClearCell, CheckerRejectsAWeakenedWitness) {
