@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "grpvss/common/input_error.hpp"
+#include "grpvss/report/markup_escape.hpp"
 #include "viewer_assets.hpp"
 
 namespace grpvss::app {
@@ -26,19 +27,6 @@ std::string script_safe_json(const nlohmann::json& report) {
   return out;
 }
 
-std::string html_escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
-
 }  // namespace
 
 std::string render_viewer_html(const nlohmann::json& report, const std::string& report_file) {
@@ -57,7 +45,7 @@ std::string render_viewer_html(const nlohmann::json& report, const std::string& 
     title += " - " + report["robot"]["name"].get<std::string>();
   }
   // The bundle goes in last: nothing inside it is ever scanned for placeholders.
-  replace_once(page, "@GRPVSS_TITLE@", html_escape(title));
+  replace_once(page, "@GRPVSS_TITLE@", report::markup_escape(title));
   replace_once(page, "@GRPVSS_REPORT@", script_safe_json(report));
   replace_once(page, "@GRPVSS_BUNDLE@", viewer_bundle());
   return page;

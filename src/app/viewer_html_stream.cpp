@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "grpvss/common/input_error.hpp"
+#include "grpvss/report/markup_escape.hpp"
 #include "viewer_assets.hpp"
 
 namespace grpvss::app {
@@ -12,20 +13,6 @@ std::size_t placeholder_at(const std::string& page, const std::string& placehold
   const auto at = page.find(placeholder);
   if (at == std::string::npos) throw std::logic_error("viewer template lacks " + placeholder);
   return at;
-}
-
-// As viewer_html.cpp escapes the title.
-std::string html_escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      default: out += c;
-    }
-  }
-  return out;
 }
 
 }  // namespace
@@ -52,7 +39,7 @@ void write_viewer_html(const std::string& html_path, bool force, const std::stri
   }
   report::AtomicOutputFile output(html_path, force);
   output.write(page.substr(0, title));
-  output.write(html_escape("GRPVSS report - " + robot_name));
+  output.write(report::markup_escape("GRPVSS report - " + robot_name));
   const std::size_t after_title = title + title_placeholder.size();
   output.write(page.substr(after_title, report - after_title));
   write_report(output);

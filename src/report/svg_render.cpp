@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "grpvss/common/input_error.hpp"
+#include "grpvss/report/markup_escape.hpp"
 
 namespace grpvss::report {
 
@@ -29,20 +30,6 @@ std::string short_number(double value) {
   std::string text = fmt::format("{:.6g}", value);
   if (text == "-0") text = "0";
   return text;
-}
-
-std::string xml_escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
 }
 
 Eigen::Vector3d point3(const json& value) {
@@ -148,8 +135,8 @@ std::string render(const json& report, int step_index, const SvgView& view) {
       "<rect x=\"0\" y=\"0\" width=\"{0}\" height=\"{0}\" fill=\"none\" stroke=\"#999\"/>\n",
       size, size + caption, caption);
   svg += fmt::format("<text x=\"6\" y=\"-40\">GRPVSS {} - verdict {}</text>\n",
-                     xml_escape(report.at("robot").at("name").get<std::string>()),
-                     xml_escape(report.at("verdict").get<std::string>()));
+                     markup_escape(report.at("robot").at("name").get<std::string>()),
+                     markup_escape(report.at("verdict").get<std::string>()));
   svg += fmt::format(
       "<text x=\"6\" y=\"-25\">step {} - t = {} s - segment {} - interference points: {}</text>\n",
       step_index, fmt::format("{:.3f}", step.at("path_time").get<double>()),
