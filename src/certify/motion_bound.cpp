@@ -5,26 +5,68 @@
 #include <limits>
 #include <stdexcept>
 
+#include "grpvss/certify/exact_axis_radius.hpp"
+#include "grpvss/geometry/directed_rounding.hpp"
+
 
 namespace grpvss::certify {
 namespace {
 
-// |a| + dmax of the transform A_m, the most it can move a point away from an earlier axis.
-// For a prismatic joint d ranges over dh.d + [min, max]; for a revolute joint d is fixed.
-double reach_of_joint_abs_sum(const Joint& joint) {
-  if (joint.type == JointType::kPrismatic) {
-    return std::abs(joint.dh.a) +
-           std::max(std::abs(joint.dh.d + joint.minimum), std::abs(joint.dh.d + joint.maximum));
-  }
-  return std::abs(joint.dh.a) + std::abs(joint.dh.d);
+// Upper bound on |x + y| under an active upward scope.
+double abs_sum_up(double x, double y) {
+  namespace r = geometry::rounding;
+  return std::max(r::add_up(x, y), r::add_up(-x, -y));
 }
 
-double max_l1_norm(const HullPoints& hull) {
-  double largest = 0.0;
-  for (const auto& p_L : hull.points) {
-    largest = std::max(largest, std::abs(p_L.x()) + std::abs(p_L.y()) + std::abs(p_L.z()));
+// d^max of joint m: |d| for a revolute joint, max |d + q| over the limits for a prismatic one.
+double reach_up(const Joint& joint) {
+  if (joint.type != JointType::kPrismatic) return std::abs(joint.dh.d);
+  return std::max(abs_sum_up(joint.dh.d, joint.minimum), abs_sum_up(joint.dh.d, joint.maximum));
+}
+
+// R_{jh} for every joint j <= link by the radial/axial recursion of
+// proofs/motion-bound.md#lemma-axis-radius, every operation rounded up (all terms are
+// non-negative, so each rounded result bounds the exact one from above).
+std::vector<double> axis_radii_up(const RobotModel& robot, int link, const HullPoints& hull) {
+  namespace r = geometry::rounding;
+  const int joint_count = robot.joint_count();
+  std::vector<double> per_joint(joint_count, 0.0);
+  const double radial = radial_extent_upper(hull);
+  // libm in the default rounding mode, before the upward scope.
+  std::vector<double> sin_upper(joint_count), cos_upper(joint_count);
+  for (int j = 0; j < joint_count; ++j) {
+    sin_upper[j] = trig_magnitude_upper(std::sin(robot.joints[j].dh.alpha));
+    cos_upper[j] = trig_magnitude_upper(std::cos(robot.joints[j].dh.alpha));
   }
-  return largest;
+  r::UpwardRoundingScope upward;
+  double norm = 0.0;
+  double zeta = 0.0;
+  for (const auto& p : hull.points) {
+    norm = std::max(norm, r::add_up(r::add_up(std::abs(p.x()), std::abs(p.y())), std::abs(p.z())));
+    zeta = std::max(zeta, std::abs(p.z()));
+  }
+  double rho = std::min(radial, norm);
+  // Walk down from frame `link`; after applying A_m the point is in frame m-1, and axis m
+  // is that frame's z axis.
+  for (int m = link; m >= 1; --m) {
+    const Joint& joint = robot.joints[m - 1];
+    const double a = std::abs(joint.dh.a);
+    if (m <= joint_count) {
+      per_joint[m - 1] =
+          r::add_up(a, std::min(norm, r::add_up(rho, r::mul_up(sin_upper[m - 1], zeta))));
+    }
+    const double reach = reach_up(joint);
+    const double next_norm = r::add_up(r::add_up(a, reach), norm);
+    const double next_rho =
+        std::min(next_norm, r::add_up(r::add_up(a, rho), r::mul_up(sin_upper[m - 1], zeta)));
+    const double next_zeta = std::min(
+        next_norm, r::add_up(r::add_up(reach, r::mul_up(sin_upper[m - 1], rho)),
+                             r::mul_up(cos_upper[m - 1], zeta)));
+    norm = next_norm;
+    rho = next_rho;
+    zeta = next_zeta;
+  }
+  return per_joint;
 }
 
 // A sum of n non-negative doubles computed in round-to-nearest is within (n-1)u of the
@@ -45,18 +87,7 @@ HullRadiusTable::HullRadiusTable(const RobotModel& robot) {
   // proof: proofs/motion-bound.md#lemma-axis-radius
   for (int link = 0; link < static_cast<int>(robot.links.size()); ++link) {
     for (const HullPoints& hull : robot.links[link].hulls) {
-      std::vector<double> per_joint(joint_count, 0.0);
-      for (int joint = 1; joint <= std::min(link, joint_count); ++joint) {
-        double sum = std::abs(robot.joints[joint - 1].dh.a);
-        int terms = 1;
-        for (int m = joint + 1; m <= link; ++m) {
-          sum += reach_of_joint_abs_sum(robot.joints[m - 1]);
-          ++terms;
-        }
-        sum += max_l1_norm(hull);
-        per_joint[joint - 1] = round_sum_upward(sum, terms + 1);
-      }
-      radius_[link].push_back(std::move(per_joint));
+      radius_[link].push_back(axis_radii_up(robot, std::min(link, joint_count), hull));
     }
   }
 }

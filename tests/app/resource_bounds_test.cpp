@@ -137,7 +137,9 @@ TEST(ResourceBounds, TenThousandObstaclesAndHundredThousandStepsWithEveryOutputS
   const auto report_size = std::filesystem::file_size(directory + "/report.json");
   const auto certificate_size = std::filesystem::file_size(directory + "/certificate.json");
   EXPECT_GT(report_size, 100'000'000u);        // about 4 kB per step
-  EXPECT_GT(certificate_size, 1'000'000'000u);  // about 15 kB per step
+  // About 4.8 kB per step: the obstacles inside the broadphase margin (a quarter of the
+  // last link's joint-1 axis radius, ~8.8 in.) each carry a witness.
+  EXPECT_GT(certificate_size, 400'000'000u);
   RecordProperty("peak_rss_kib", std::to_string(run.peak_resident_kib));
   RecordProperty("steps", std::to_string(steps));
   EXPECT_LT(run.peak_resident_kib, kPeakResidentBoundKiB)

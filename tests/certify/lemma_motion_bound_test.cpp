@@ -38,6 +38,12 @@ Robot random_robot(std::mt19937& rng) {
     joint.d0 = 2.0 * u(rng);
     joint.a = 2.0 * u(rng);
     joint.alpha = M_PI * u(rng);
+    // Many real arms twist by multiples of 90 degrees (a SCARA by 0 and 180): there the
+    // radial/axial recursion is tightest, so those cases are common here.
+    const double snap = u01(rng);
+    if (snap < 0.2) joint.alpha = 0.0;
+    else if (snap < 0.3) joint.alpha = M_PI;
+    else if (snap < 0.45) joint.alpha = (u(rng) < 0.0 ? -0.5 : 0.5) * M_PI;
     if (joint.prismatic) {
       joint.qmin = -u01(rng);
       joint.qmax = 1.5 * u01(rng);
@@ -65,13 +71,27 @@ double dmax(const DhJoint& j) {
   return j.prismatic ? std::max(std::abs(j.d0 + j.qmin), std::abs(j.d0 + j.qmax)) : std::abs(j.d0);
 }
 
-// R_jh of proofs/motion-bound.md#lemma-axis-radius; i and j are 1-based.
+// R_jh of proofs/motion-bound.md#lemma-axis-radius (radial/axial recursion, clamped by the
+// absolute-sum norm bound); i and j are 1-based. Plain doubles: the comparisons below allow
+// 1e-12 relative.
 double axis_radius(const Robot& robot, int i, int j, const std::vector<Vec3>& hull) {
-  double r = std::abs(robot.chain[j - 1].a);
-  for (int m = j + 1; m <= i; ++m) r += std::abs(robot.chain[m - 1].a) + dmax(robot.chain[m - 1]);
-  double max_l1 = 0.0;
-  for (const Vec3& v : hull) max_l1 = std::max(max_l1, std::abs(v[0]) + std::abs(v[1]) + std::abs(v[2]));
-  return r + max_l1;
+  double rho = 0.0, zeta = 0.0, norm = 0.0;
+  for (const Vec3& v : hull) {
+    rho = std::max(rho, std::hypot(v[0], v[1]));
+    zeta = std::max(zeta, std::abs(v[2]));
+    norm = std::max(norm, std::abs(v[0]) + std::abs(v[1]) + std::abs(v[2]));
+  }
+  for (int m = i; m > j; --m) {
+    const DhJoint& joint = robot.chain[m - 1];
+    const double s = std::abs(std::sin(joint.alpha)), c = std::abs(std::cos(joint.alpha));
+    const double a = std::abs(joint.a), reach = dmax(joint);
+    const double next_norm = a + reach + norm;
+    const double next_rho = std::min(next_norm, a + rho + s * zeta);
+    const double next_zeta = std::min(next_norm, reach + s * rho + c * zeta);
+    norm = next_norm, rho = next_rho, zeta = next_zeta;
+  }
+  const DhJoint& joint_j = robot.chain[j - 1];
+  return std::abs(joint_j.a) + std::min(norm, rho + std::abs(std::sin(joint_j.alpha)) * zeta);
 }
 
 double motion_bound(const Robot& robot, int i, const std::vector<Vec3>& hull, const std::vector<double>& dq) {

@@ -45,16 +45,76 @@ RobotModel make_scara_with_unit_hulls() {
   return robot;
 }
 
-TEST(HullRadiusTable, RadiiFollowTheAbsoluteSumFormula) {
+TEST(HullRadiusTable, RadiiFollowTheRadialAxialRecursion) {
   const RobotModel robot = make_scara_with_unit_hulls();
   const HullRadiusTable table(robot);
-  // Link 4 about joint 1: |a1| + (|a2|+|d2|) + (|a3|+dmax3) + (|a4|+|d4|) + max L1 = 15.8+9.8+9.8+15.05+3.
-  EXPECT_NEAR(table.radius(4, 0, 1), 15.8 + 9.8 + 9.8 + 15.05 + 3.0, 1e-12);
-  EXPECT_GE(table.radius(4, 0, 1), 15.8 + 9.8 + 9.8 + 15.05 + 3.0);
-  // Link 2 about joint 2: |a2| + max L1.
-  EXPECT_NEAR(table.radius(2, 0, 2), 9.8 + 3.0, 1e-12);
-  // Link 4 about joint 4: |a4| + max L1 = 3.
-  EXPECT_NEAR(table.radius(4, 0, 4), 3.0, 1e-12);
+  // Hull: distance from the link z axis at most 2 (the point (0,2,0)), |z| at most 3.
+  // Link 4 about joint 4: |a4| + 2 (the hull's z extent does not move it away from axis 4).
+  EXPECT_NEAR(table.radius(4, 0, 4), 2.0, 1e-12);
+  // Link 2 about joint 2: |a2| + 2 = 11.8.
+  EXPECT_NEAR(table.radius(2, 0, 2), 9.8 + 2.0, 1e-12);
+  // Link 4 about joint 1: the twists are 0 and 180 deg, so the axial offsets d4 = 15.05, the
+  // quill's 9.8 and the hull's z never add to the distance from the vertical axes:
+  // |a1| + |a2| + 2 = 27.6 (the absolute-sum bound of the first version said 53.45).
+  EXPECT_NEAR(table.radius(4, 0, 1), 15.8 + 9.8 + 2.0, 1e-12);
+  EXPECT_GE(table.radius(4, 0, 1), 15.8 + 9.8 + 2.0);
+  EXPECT_NEAR(table.radius(4, 0, 2), 9.8 + 2.0, 1e-12);
+}
+
+// A twist that is not a multiple of 180 degrees mixes the axial extent into the radius:
+// alpha_2 = 90 deg turns the hull's z extent 3 (and d3, d4) into distance from axis 1.
+TEST(HullRadiusTable, ATwistOf90DegreesCountsTheAxialExtent) {
+  RobotModel robot = make_scara_with_unit_hulls();
+  robot.joints[1].dh.alpha = M_PI / 2;
+  const HullRadiusTable table(robot);
+  // Frame 2 (before A_2): rho = 2, zeta = 3 + 9.8 + 15.05 = 27.85 (norm bound 27.85 too);
+  // A_2 with |sin| = 1: rho_1 = 9.8 + 2 + 27.85 = 39.65, capped by the norm bound
+  // 9.8 + 0 + 27.85 = 37.65; then R_14 = 15.8 + 37.65 (|sin alpha_1| ~ 0).
+  EXPECT_NEAR(table.radius(4, 0, 1), 15.8 + 37.65, 1e-9);
+  EXPECT_NEAR(table.radius(4, 0, 2), 9.8 + std::min(27.85, 2.0 + 27.85), 1e-9);
+}
+
+// Never above the absolute-sum bound |a_j| + sum(|a_m| + d^max_m) + max |v|_1 (the norm
+// clamp), on random chains with general twists; usually well below it.
+TEST(HullRadiusTable, NeverAboveTheAbsoluteSumBound) {
+  std::mt19937 rng(20261121);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  int strictly_tighter = 0, compared = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    RobotModel robot = make_scara_with_unit_hulls();
+    for (Joint& joint : robot.joints) {
+      joint.dh.a = 10.0 * u(rng);
+      joint.dh.d = 10.0 * u(rng);
+      joint.dh.alpha = trial % 2 == 0 ? M_PI * u(rng) : (u(rng) < 0 ? 0.0 : M_PI);
+    }
+    for (Eigen::Vector3d& p : robot.links[4].hulls[0].points) p = 5.0 * Eigen::Vector3d::Random();
+    const HullRadiusTable table(robot);
+    for (int joint = 1; joint <= 4; ++joint) {
+      mpq_class absolute_sum = abs(mpq_class(robot.joints[joint - 1].dh.a));
+      for (int m = joint + 1; m <= 4; ++m) {
+        const Joint& jm = robot.joints[m - 1];
+        mpq_class reach = abs(mpq_class(jm.dh.d));
+        if (jm.type == JointType::kPrismatic) {
+          const mpq_class low = abs(mpq_class(jm.dh.d) + mpq_class(jm.minimum));
+          const mpq_class high = abs(mpq_class(jm.dh.d) + mpq_class(jm.maximum));
+          reach = low > high ? low : high;
+        }
+        absolute_sum += abs(mpq_class(jm.dh.a)) + reach;
+      }
+      mpq_class largest_l1 = 0;
+      for (const auto& p : robot.links[4].hulls[0].points) {
+        const mpq_class l1 = abs(mpq_class(p.x())) + abs(mpq_class(p.y())) + abs(mpq_class(p.z()));
+        if (l1 > largest_l1) largest_l1 = l1;
+      }
+      absolute_sum += largest_l1;
+      const mpq_class exact = exact_axis_radius(robot, 4, robot.links[4].hulls[0], joint);
+      EXPECT_LE(exact, absolute_sum);
+      EXPECT_GE(mpq_class(table.radius(4, 0, joint)), exact);
+      strictly_tighter += exact < absolute_sum;
+      ++compared;
+    }
+  }
+  EXPECT_GT(strictly_tighter, compared / 2);
 }
 
 TEST(HullRadiusTable, RoundedRadiiPassTheExactCheckAndTighterClaimsFail) {

@@ -6,9 +6,11 @@
 /// proof: proofs/motion-bound.md#lemma-motion-bound
 /// For hull h on link i and monotone joint motion from q_k to q_{k+1}:
 /// \f[ M_h = \sum_{j \le i,\ \mathrm{rev}} |\Delta q_j|\, R_{jh} + \sum_{j \le i,\ \mathrm{pris}} |\Delta q_j| \f]
-/// with the configuration-independent radius
-/// \f[ R_{jh} = |a_j| + \sum_{m=j+1}^{i} (|a_m| + d^{\max}_m) + \max_{v \in h} \|v\|_1 . \f]
-/// Every term is a sum of doubles, so a checker can decide the bound exactly.
+/// with the configuration-independent radius R_{jh} of proofs/motion-bound.md#lemma-axis-radius:
+/// a recursion down the chain of two bounds, the distance from the frame's z axis and the
+/// |z| extent (axial offsets of parallel axes never add to the distance from them), clamped
+/// by the absolute-sum bound |a_j| + sum_{m=j+1}^{i}(|a_m| + d^max_m) + max |v|_1.
+/// Every term is a sum, product or minimum of doubles, so a checker can decide it exactly.
 
 #include <vector>
 
