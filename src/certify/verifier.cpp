@@ -109,6 +109,7 @@ class PathVerifier {
                    const TransitionRecord* incoming, bool refinement);
   StepCertificate certificate_step(const ProbeResult& probe, int index, double parameter) const;
   bool march_segment(const SegmentPath& path, int segment_number);
+  double predicted_ptp_step(const SegmentPath& path, double s, double step) const;
   TransitionRecord judge_transition(const ProbeResult& from, const ProbeResult& to,
                                     bool cut_by_segment_end) const;
   bool cp_model_holds(const SegmentPath& path, double s0, const Eigen::VectorXd& q0, double s1,
@@ -135,6 +136,11 @@ class PathVerifier {
   ProbeResult trial_;
   ProbeResult points_;
   double end_link_reach_ = 1.0;
+  /// The radii of the step before current_ in this segment and the parameter step between
+  /// them (the trend predicted_ptp_step extrapolates); empty at a segment start.
+  std::vector<double> previous_radii_;
+  double previous_step_ = 1.0;
+  double previous_slack_ = 0.0;  ///< of the last accepted certified transition
   bool basic_resolution_mode_ = false;  ///< after an uncertified step, until one certifies  ///< max |p_L| over the last link's hulls (at least 1)
   long long probes_ = 0;
   bool any_uncertified_ = false;
@@ -405,6 +411,53 @@ double transition_slack(const TransitionRecord& transition) {
   return slack;
 }
 
+// The basic resolution next to a collision: every hull whose motion its clearances do not
+// cover moves at most 2 Delta (the thesis's resolution); the others are covered anyway. The
+// smallest max(allowance, 2 Delta) / bound ratio (>= 1 exactly when the rule is met).
+double basic_resolution_slack(const TransitionRecord& transition, double two_delta) {
+  double slack = kInfinity;
+  for (std::size_t i = 0; i < transition.hull_motion_bounds.size(); ++i) {
+    const double bound = transition.hull_motion_bounds[i];
+    if (bound > 0.0) {
+      slack = std::min(slack, std::max(transition.hull_allowances[i], two_delta) / bound);
+    }
+  }
+  return slack;
+}
+
+// A PTP proposal from the motion bounds alone (no probe): the largest step, up to `step`,
+// whose bound stays within what the step rule is expected to allow for every hull:
+// r_k + r_{k+1} with r_{k+1} extrapolated linearly from the previous step's radius (and never
+// assumed below r_k - bound, which the clearance cannot fall below). Bounds grow
+// monotonically with the step (every joint is monotone inside a segment), so a bisection
+// finds it. A proposal only: the probe at its end decides.
+double PathVerifier::predicted_ptp_step(const SegmentPath& path, double s, double step) const {
+  const bool has_trend = previous_radii_.size() == cell_.hulls().size();
+  const auto fits = [&](double candidate) {
+    const Eigen::VectorXd dq = path.segment().ptp->joints_at(s + candidate) - current_.q;
+    for (std::size_t i = 0; i < cell_.hulls().size(); ++i) {
+      const double radius = current_.hulls[i].radius;
+      // In contact or refining next to one (raw clearances): the trials and the basic
+      // resolution size the step there; extrapolating a shrinking raw clearance would creep.
+      if (!(radius > 0.0) || current_.hulls[i].expanded_interferes) continue;
+      const LinkHull& hull = cell_.hulls()[i];
+      const double bound = cell_.radii().hull_motion_bound(hull.link, hull.hull, dq);
+      const double trend = has_trend ? radius - previous_radii_[i] : 0.0;
+      const double expected_far_radius = std::max(radius - bound, radius + trend * candidate / previous_step_);
+      if (bound > 0.95 * (radius + expected_far_radius)) return false;
+    }
+    return true;
+  };
+  if (fits(step)) return step;
+  double low = 0.0;
+  double high = step;
+  for (int iteration = 0; iteration < 12; ++iteration) {
+    const double middle = 0.5 * (low + high);
+    (fits(middle) ? low : high) = middle;
+  }
+  return low;
+}
+
 // Returns false when the path must stop (an error was recorded).
 bool PathVerifier::march_segment(const SegmentPath& path, int segment_number) {
   const double end = path.parameter_end();
@@ -412,8 +465,11 @@ bool PathVerifier::march_segment(const SegmentPath& path, int segment_number) {
   // Below this a failing certified step stops shrinking and the basic resolution takes over.
   const double certify_floor = std::max(end * options_.certify_floor_fraction, min_step);
   basic_resolution_mode_ = false;
+  previous_radii_.clear();
   double s = 0.0;
   double step = end;
+  previous_slack_ = 0.0;
+  bool retrying = false;  ///< the proposal is a shrunk retry of a rejected one
   while (s < end) {
     if (probes_ >= options_.max_probes) {
       add_error(kErrorProbeLimit, segment_number,
@@ -423,6 +479,14 @@ bool PathVerifier::march_segment(const SegmentPath& path, int segment_number) {
     }
     // Floors are compared with the proposed step, not with s1 - s: rounding can make the
     // difference a hair larger than the step and a floor never reached.
+    if (certified() && !path.is_cp() && !basic_resolution_mode_ && !retrying) {
+      // After a step with ample slack (receding from every obstacle) the growth rule's
+      // proposal is kept: the linear extrapolation underestimates a growing clearance.
+      const double predicted = predicted_ptp_step(path, s, std::min(step, end - s));
+      step = std::max({predicted, previous_slack_ >= 1.5 ? step : 0.0,
+                       std::min(certify_floor, end - s)});
+    }
+    retrying = true;
     const double proposed = step;
     double s1 = 0.0;
     if (certified()) {
@@ -468,14 +532,16 @@ bool PathVerifier::march_segment(const SegmentPath& path, int segment_number) {
       step = taken;
     } else if (transition.certified) {
       // Accepted: the next proposal grows with the slack this step left.
-      step = taken * std::clamp(0.9 * transition_slack(transition), 1.0, 4.0);
+      previous_slack_ = transition_slack(transition);
+      step = taken * std::clamp(0.9 * previous_slack_, 1.0, 4.0);
     } else {
       // Nothing to certify next to a collision, and near a first contact the proven steps
       // shrink geometrically towards the contact time without ever passing it (Zeno). In
       // both cases, and once the certified step floor is reached, move on at the thesis's
       // basic resolution (every point at most 2D per step): the report covers the motion, a
       // step past the contact finds the COLLISION, and a stretch that is neither proven nor
-      // colliding makes the verdict UNDECIDED.
+      // colliding makes the verdict UNDECIDED. (Hulls whose clearances cover their motion are
+      // not held to 2D: basic_resolution_slack.)
       const bool collision_at_an_end = current_.any_collision || trial_.any_collision;
       const bool basic_mode = collision_at_an_end || basic_resolution_mode_ ||
                               proposed <= certify_floor;
@@ -484,17 +550,15 @@ bool PathVerifier::march_segment(const SegmentPath& path, int segment_number) {
                         taken * std::clamp(0.9 * transition_slack(transition), 0.05, 0.9));
         continue;
       }
-      bool basic_resolution_met = true;
-      for (double bound : transition.hull_motion_bounds) {
-        basic_resolution_met &= bound <= 2.0 * options_.tolerance;
-      }
-      if (!basic_resolution_met && proposed > min_step) {
-        step = std::max(min_step, taken * 0.5);
+      const double basic_slack = basic_resolution_slack(transition, 2.0 * options_.tolerance);
+      if (!(basic_slack >= 1.0) && proposed > min_step) {
+        step = std::max(min_step, taken * std::clamp(0.95 * basic_slack, 0.1, 0.9));
         continue;
       }
       if (!collision_at_an_end) any_uncertified_ = true;
       basic_resolution_mode_ = true;
-      step = taken * 2.0;
+      // The bounds are nearly linear in the step: aim just below the resolution.
+      step = taken * std::clamp(0.95 * basic_slack, 1.0, 4.0);
     }
     if (transition.certified) basic_resolution_mode_ = false;
     if (trial_.any_expanded_interference) {
@@ -506,6 +570,11 @@ bool PathVerifier::march_segment(const SegmentPath& path, int segment_number) {
         trial_.any_expanded_interference || current_.any_expanded_interference;
     record_step(trial_, segment_number, s1, path.time_at(s1), &transition,
                 certified() && refinement_region);
+    retrying = false;
+    if (!transition.certified) previous_slack_ = 0.0;
+    previous_radii_.clear();
+    for (const HullState& hull : current_.hulls) previous_radii_.push_back(hull.radius);
+    previous_step_ = taken;
     std::swap(current_, trial_);
     s = s1;
     if (options_.progress) {
