@@ -95,6 +95,18 @@ class PathVerifier {
       throw std::invalid_argument("verify: the robot cell was built for other options");
     }
     const RobotModel& robot = cell.robot();
+    // Per hull and joint: R_jh (revolute), 1 (prismatic), 0 (joints after the hull's link).
+    for (const LinkHull& hull : cell.hulls()) {
+      for (int joint = 1; joint <= robot.joint_count(); ++joint) {
+        double weight = 0.0;
+        if (joint <= hull.link) {
+          weight = robot.joints[joint - 1].type == JointType::kRevolute
+                       ? cell.radii().radius(hull.link, hull.hull, joint)
+                       : 1.0;
+        }
+        proposal_weights_.push_back(weight);
+      }
+    }
     for (const HullPoints& hull : robot.links.back().hulls) {
       for (const auto& p_L : hull.points) end_link_reach_ = std::max(end_link_reach_, p_L.norm());
     }
@@ -139,6 +151,7 @@ class PathVerifier {
   /// The radii of the step before current_ in this segment and the parameter step between
   /// them (the trend predicted_ptp_step extrapolates); empty at a segment start.
   std::vector<double> previous_radii_;
+  std::vector<double> proposal_weights_;  ///< [hull * joints + joint - 1]: M_h's coefficients
   double previous_step_ = 1.0;
   double previous_slack_ = 0.0;  ///< of the last accepted certified transition
   bool basic_resolution_mode_ = false;  ///< after an uncertified step, until one certifies  ///< max |p_L| over the last link's hulls (at least 1)
@@ -433,15 +446,18 @@ double basic_resolution_slack(const TransitionRecord& transition, double two_del
 // finds it. A proposal only: the probe at its end decides.
 double PathVerifier::predicted_ptp_step(const SegmentPath& path, double s, double step) const {
   const bool has_trend = previous_radii_.size() == cell_.hulls().size();
+  const int joints = robot_.joint_count();
   const auto fits = [&](double candidate) {
-    const Eigen::VectorXd dq = path.segment().ptp->joints_at(s + candidate) - current_.q;
+    const Eigen::VectorXd dq = (path.segment().ptp->joints_at(s + candidate) - current_.q).cwiseAbs();
     for (std::size_t i = 0; i < cell_.hulls().size(); ++i) {
       const double radius = current_.hulls[i].radius;
       // In contact or refining next to one (raw clearances): the trials and the basic
       // resolution size the step there; extrapolating a shrinking raw clearance would creep.
       if (!(radius > 0.0) || current_.hulls[i].expanded_interferes) continue;
-      const LinkHull& hull = cell_.hulls()[i];
-      const double bound = cell_.radii().hull_motion_bound(hull.link, hull.hull, dq);
+      // A proposal needs no rounding care: M_h in plain double (judge_transition decides).
+      const double* weights = &proposal_weights_[i * joints];
+      double bound = 0.0;
+      for (int j = 0; j < joints; ++j) bound += weights[j] * dq[j];
       const double trend = has_trend ? radius - previous_radii_[i] : 0.0;
       const double expected_far_radius = std::max(radius - bound, radius + trend * candidate / previous_step_);
       if (bound > 0.95 * (radius + expected_far_radius)) return false;
@@ -451,7 +467,7 @@ double PathVerifier::predicted_ptp_step(const SegmentPath& path, double s, doubl
   if (fits(step)) return step;
   double low = 0.0;
   double high = step;
-  for (int iteration = 0; iteration < 12; ++iteration) {
+  for (int iteration = 0; iteration < 10; ++iteration) {
     const double middle = 0.5 * (low + high);
     (fits(middle) ? low : high) = middle;
   }

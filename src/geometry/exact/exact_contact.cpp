@@ -522,17 +522,28 @@ void edge_face_points(const Hull& edges_of, const Hull& faces_of, InterferenceKi
     edge_lo[e] = ev[edges[e][0]].cwiseMin(ev[edges[e][1]]);
     edge_hi[e] = ev[edges[e][0]].cwiseMax(ev[edges[e][1]]);
   }
+  // Every crossing point lies on an edge, hence in the box of all of edges_of's vertices: a
+  // face whose box misses it has none (exact double compares, before any predicate).
+  Eigen::Vector3d all_lo = ev[0], all_hi = ev[0];
+  for (const auto& v : ev) {
+    all_lo = all_lo.cwiseMin(v);
+    all_hi = all_hi.cwiseMax(v);
+  }
   std::vector<IV> value(ev.size());
   std::vector<char> have_value(ev.size());
   std::vector<int> side(ev.size());
   for (std::size_t f = 0; f < faces_of.poly.faces().size(); ++f) {
-    FaceSides face(faces_of, ev, static_cast<int>(f));
-    const auto& loop = face.loop();
-    Eigen::Vector3d face_lo = fv[loop[0]], face_hi = fv[loop[0]];
-    for (int i : loop) {
+    const auto& face_loop = faces_of.poly.faces()[f];
+    Eigen::Vector3d face_lo = fv[face_loop[0]], face_hi = fv[face_loop[0]];
+    for (int i : face_loop) {
       face_lo = face_lo.cwiseMin(fv[i]);
       face_hi = face_hi.cwiseMax(fv[i]);
     }
+    if ((all_hi.array() < face_lo.array()).any() || (face_hi.array() < all_lo.array()).any()) {
+      continue;
+    }
+    FaceSides face(faces_of, ev, static_cast<int>(f));
+    const auto& loop = face.loop();
     const EpickPoint f0(fv[loop[0]].x(), fv[loop[0]].y(), fv[loop[0]].z());
     const EpickPoint f1(fv[loop[1]].x(), fv[loop[1]].y(), fv[loop[1]].z());
     const EpickPoint f2(fv[loop[2]].x(), fv[loop[2]].y(), fv[loop[2]].z());

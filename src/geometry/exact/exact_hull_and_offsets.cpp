@@ -299,34 +299,46 @@ ConvexPolytope ConvexPolytopeBuilder::finish(const std::vector<Eigen::Vector3d>&
       loops_input.push_back({hull_to_input[t[0]], hull_to_input[t[1]], hull_to_input[t[2]]});
     }
   } else {
-    // Directed edge u->v of triangle t at slot k (edge from corner k to corner k+1); the
-    // opposite half-edge is found by binary search in the sorted list.
+    // Directed edge u->v of triangle t at slot k (edge from corner k to corner k+1). Sorted by
+    // the undirected key, the two half-edges of every edge are adjacent: twins by pairing.
     struct HalfEdge {
-      std::size_t u, v;
+      std::size_t low, high;
       int triangle;
       int corner;
-      bool operator<(const HalfEdge& o) const { return u < o.u || (u == o.u && v < o.v); }
+      bool forward;  // low -> high
+      bool operator<(const HalfEdge& o) const {
+        return low < o.low || (low == o.low && high < o.high);
+      }
     };
     std::vector<HalfEdge> half_edges;
     half_edges.reserve(3 * triangles.size());
     for (std::size_t t = 0; t < triangles.size(); ++t) {
       for (int k = 0; k < 3; ++k) {
-        half_edges.push_back({triangles[t][k], triangles[t][(k + 1) % 3], static_cast<int>(t), k});
+        const std::size_t u = triangles[t][k];
+        const std::size_t v = triangles[t][(k + 1) % 3];
+        half_edges.push_back({std::min(u, v), std::max(u, v), static_cast<int>(t), k, u < v});
       }
     }
     std::sort(half_edges.begin(), half_edges.end());
-    const auto find_half_edge = [&half_edges](std::size_t u, std::size_t v) -> const HalfEdge& {
-      const HalfEdge probe{u, v, -1, -1};
-      const auto it = std::lower_bound(half_edges.begin(), half_edges.end(), probe);
-      if (it == half_edges.end() || it->u != u || it->v != v) {
+    // twin_triangle / twin_corner[3 t + k]: the opposite half-edge of (t, k).
+    std::vector<int> twin_triangle(3 * triangles.size(), -1);
+    std::vector<int> twin_corner(3 * triangles.size(), -1);
+    for (std::size_t i = 0; i < half_edges.size(); i += 2) {
+      const HalfEdge& a = half_edges[i];
+      if (i + 1 >= half_edges.size() || half_edges[i + 1].low != a.low ||
+          half_edges[i + 1].high != a.high) {
         throw std::logic_error("open convex hull mesh");
       }
-      return *it;
-    };
-    // twin[3 t + k]: triangle of the opposite half-edge of (t, k).
-    std::vector<int> twin_triangle(3 * triangles.size(), -1);
-    for (const HalfEdge& h : half_edges) {
-      twin_triangle[3 * h.triangle + h.corner] = find_half_edge(h.v, h.u).triangle;
+      const HalfEdge& b = half_edges[i + 1];
+      if (a.forward == b.forward ||
+          (i + 2 < half_edges.size() && half_edges[i + 2].low == a.low &&
+           half_edges[i + 2].high == a.high)) {
+        throw std::logic_error("open convex hull mesh");
+      }
+      twin_triangle[3 * a.triangle + a.corner] = b.triangle;
+      twin_corner[3 * a.triangle + a.corner] = b.corner;
+      twin_triangle[3 * b.triangle + b.corner] = a.triangle;
+      twin_corner[3 * b.triangle + b.corner] = a.corner;
     }
 
     // Merge adjacent triangles that are exactly coplanar.
@@ -371,11 +383,9 @@ ConvexPolytope ConvexPolytopeBuilder::finish(const std::vector<Eigen::Vector3d>&
           // Next boundary half-edge: leave the target vertex, rotating through the group.
           int nk = (k + 1) % 3;
           while (!is_boundary(t, nk)) {
-            const std::size_t u = triangles[t][nk];
-            const std::size_t v = triangles[t][(nk + 1) % 3];
-            const HalfEdge& opposite = find_half_edge(v, u);
-            t = static_cast<std::size_t>(opposite.triangle);
-            nk = (opposite.corner + 1) % 3;
+            const int opposite_corner = twin_corner[3 * t + nk];
+            t = static_cast<std::size_t>(twin_triangle[3 * t + nk]);
+            nk = (opposite_corner + 1) % 3;
             if (groups.find(t) != group) throw std::logic_error("merged hull face walk left group");
           }
           k = nk;
