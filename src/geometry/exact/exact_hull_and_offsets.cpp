@@ -280,6 +280,46 @@ ConvexPolytope ConvexPolytopeBuilder::build(const std::vector<Eigen::Vector3d>& 
   return finish(input, hull_to_input, triangles, nullptr);
 }
 
+namespace {
+
+// Twin half-edges of a closed oriented mesh without sorting: the half-edges leaving each
+// vertex in compressed rows; the twin of u->v is the one half-edge v->u. Throws when an edge
+// has no twin or a direction is used twice (the mesh is not a closed 2-manifold).
+class HalfEdgeTwins {
+ public:
+  HalfEdgeTwins(const std::vector<int>& tails, const std::vector<int>& heads,
+                std::size_t vertex_count, const char* open_message, const char* twice_message) {
+    first_.assign(vertex_count + 1, 0);
+    for (int u : tails) ++first_[static_cast<std::size_t>(u) + 1];
+    for (std::size_t v = 0; v < vertex_count; ++v) first_[v + 1] += first_[v];
+    outgoing_.resize(tails.size());
+    std::vector<int> cursor(first_.begin(), first_.end() - 1);
+    for (std::size_t h = 0; h < tails.size(); ++h) outgoing_[cursor[tails[h]]++] = static_cast<int>(h);
+    twin_.assign(tails.size(), -1);
+    for (std::size_t h = 0; h < tails.size(); ++h) {
+      const int u = tails[h];
+      const int v = heads[h];
+      for (int i = first_[u]; i < first_[u + 1]; ++i) {
+        const int g = outgoing_[i];
+        if (g != static_cast<int>(h) && heads[g] == v) throw std::logic_error(twice_message);
+      }
+      for (int i = first_[v]; i < first_[v + 1]; ++i) {
+        const int g = outgoing_[i];
+        if (heads[g] == u) twin_[h] = g;
+      }
+      if (twin_[h] < 0) throw std::logic_error(open_message);
+    }
+  }
+  int twin(std::size_t half_edge) const { return twin_[half_edge]; }
+
+ private:
+  std::vector<int> first_;     ///< [vertex]: start of its row in outgoing_
+  std::vector<int> outgoing_;  ///< half-edge ids grouped by tail
+  std::vector<int> twin_;
+};
+
+}  // namespace
+
 ConvexPolytope ConvexPolytopeBuilder::finish(const std::vector<Eigen::Vector3d>& input,
                                              const std::vector<int>& hull_to_input,
                                              const std::vector<Triangle>& triangles,
@@ -299,46 +339,21 @@ ConvexPolytope ConvexPolytopeBuilder::finish(const std::vector<Eigen::Vector3d>&
       loops_input.push_back({hull_to_input[t[0]], hull_to_input[t[1]], hull_to_input[t[2]]});
     }
   } else {
-    // Directed edge u->v of triangle t at slot k (edge from corner k to corner k+1). Sorted by
-    // the undirected key, the two half-edges of every edge are adjacent: twins by pairing.
-    struct HalfEdge {
-      std::size_t low, high;
-      int triangle;
-      int corner;
-      bool forward;  // low -> high
-      bool operator<(const HalfEdge& o) const {
-        return low < o.low || (low == o.low && high < o.high);
-      }
-    };
-    std::vector<HalfEdge> half_edges;
-    half_edges.reserve(3 * triangles.size());
+    // Half-edge 3 t + k goes from corner k to corner k+1 of triangle t.
+    std::vector<int> tails(3 * triangles.size()), heads(3 * triangles.size());
     for (std::size_t t = 0; t < triangles.size(); ++t) {
       for (int k = 0; k < 3; ++k) {
-        const std::size_t u = triangles[t][k];
-        const std::size_t v = triangles[t][(k + 1) % 3];
-        half_edges.push_back({std::min(u, v), std::max(u, v), static_cast<int>(t), k, u < v});
+        tails[3 * t + k] = static_cast<int>(triangles[t][k]);
+        heads[3 * t + k] = static_cast<int>(triangles[t][(k + 1) % 3]);
       }
     }
-    std::sort(half_edges.begin(), half_edges.end());
+    const HalfEdgeTwins twins(tails, heads, hull_to_input.size(), "open convex hull mesh",
+                              "open convex hull mesh");
     // twin_triangle / twin_corner[3 t + k]: the opposite half-edge of (t, k).
-    std::vector<int> twin_triangle(3 * triangles.size(), -1);
-    std::vector<int> twin_corner(3 * triangles.size(), -1);
-    for (std::size_t i = 0; i < half_edges.size(); i += 2) {
-      const HalfEdge& a = half_edges[i];
-      if (i + 1 >= half_edges.size() || half_edges[i + 1].low != a.low ||
-          half_edges[i + 1].high != a.high) {
-        throw std::logic_error("open convex hull mesh");
-      }
-      const HalfEdge& b = half_edges[i + 1];
-      if (a.forward == b.forward ||
-          (i + 2 < half_edges.size() && half_edges[i + 2].low == a.low &&
-           half_edges[i + 2].high == a.high)) {
-        throw std::logic_error("open convex hull mesh");
-      }
-      twin_triangle[3 * a.triangle + a.corner] = b.triangle;
-      twin_corner[3 * a.triangle + a.corner] = b.corner;
-      twin_triangle[3 * b.triangle + b.corner] = a.triangle;
-      twin_corner[3 * b.triangle + b.corner] = a.corner;
+    std::vector<int> twin_triangle(3 * triangles.size()), twin_corner(3 * triangles.size());
+    for (std::size_t h = 0; h < tails.size(); ++h) {
+      twin_triangle[h] = twins.twin(h) / 3;
+      twin_corner[h] = twins.twin(h) % 3;
     }
 
     // Merge adjacent triangles that are exactly coplanar.
@@ -422,55 +437,27 @@ ConvexPolytope ConvexPolytopeBuilder::finish(const std::vector<Eigen::Vector3d>&
   }
 
   // Edges and their two faces, numbered in order of first appearance along the face loops
-  // (half-edges sorted by undirected key; no map: this runs for every placed hull).
-  struct FaceHalfEdge {
-    int low, high;  // undirected key
-    int face;
-    int sequence;   // position along the loops, for the first-appearance numbering
-    bool forward;   // low -> high on this face's loop
-  };
-  std::vector<FaceHalfEdge> face_half_edges;
+  // (twins from compressed rows, no sort and no map: this runs for every placed hull).
+  std::vector<int> tails, heads, face_of;
   for (std::size_t f = 0; f < poly.faces_.size(); ++f) {
     const auto& loop = poly.faces_[f];
     for (std::size_t i = 0; i < loop.size(); ++i) {
-      const int u = loop[i];
-      const int v = loop[(i + 1) % loop.size()];
-      face_half_edges.push_back({std::min(u, v), std::max(u, v), static_cast<int>(f),
-                                 static_cast<int>(face_half_edges.size()), u < v});
+      tails.push_back(loop[i]);
+      heads.push_back(loop[(i + 1) % loop.size()]);
+      face_of.push_back(static_cast<int>(f));
     }
   }
-  std::sort(face_half_edges.begin(), face_half_edges.end(),
-            [](const FaceHalfEdge& a, const FaceHalfEdge& b) {
-              return std::tie(a.low, a.high, a.sequence) < std::tie(b.low, b.high, b.sequence);
-            });
-  if (face_half_edges.size() % 2 != 0) throw std::logic_error("hull edge with a single face");
-  struct EdgeEntry {
-    int first_sequence;
-    std::array<int, 2> vertices;
-    std::array<int, 2> faces;
-  };
-  std::vector<EdgeEntry> edge_entries;
-  for (std::size_t i = 0; i < face_half_edges.size(); i += 2) {
-    const FaceHalfEdge& a = face_half_edges[i];
-    const FaceHalfEdge& b = face_half_edges[i + 1];
-    if (a.low != b.low || a.high != b.high) throw std::logic_error("hull edge with a single face");
-    if (a.forward == b.forward) throw std::logic_error("hull edge used twice in one direction");
-    if (i + 2 < face_half_edges.size() && face_half_edges[i + 2].low == a.low &&
-        face_half_edges[i + 2].high == a.high) {
-      throw std::logic_error("hull edge used twice in one direction");
-    }
-    const FaceHalfEdge& forward = a.forward ? a : b;
-    const FaceHalfEdge& backward = a.forward ? b : a;
-    edge_entries.push_back({std::min(a.sequence, b.sequence), {a.low, a.high},
-                            {forward.face, backward.face}});
-  }
-  std::sort(edge_entries.begin(), edge_entries.end(),
-            [](const EdgeEntry& a, const EdgeEntry& b) { return a.first_sequence < b.first_sequence; });
-  poly.edges_.reserve(edge_entries.size());
-  poly.edge_faces_.reserve(edge_entries.size());
-  for (const EdgeEntry& e : edge_entries) {
-    poly.edges_.push_back(e.vertices);
-    poly.edge_faces_.push_back(e.faces);
+  const HalfEdgeTwins twins(tails, heads, poly.vertices_.size(), "hull edge with a single face",
+                            "hull edge used twice in one direction");
+  std::vector<char> numbered(tails.size(), 0);
+  for (std::size_t h = 0; h < tails.size(); ++h) {
+    if (numbered[h]) continue;
+    const std::size_t g = static_cast<std::size_t>(twins.twin(h));
+    numbered[h] = numbered[g] = 1;
+    const bool h_forward = tails[h] < heads[h];  // low -> high
+    poly.edges_.push_back({std::min(tails[h], heads[h]), std::max(tails[h], heads[h])});
+    poly.edge_faces_.push_back(h_forward ? std::array<int, 2>{face_of[h], face_of[g]}
+                                         : std::array<int, 2>{face_of[g], face_of[h]});
   }
 
   // The template path's callers (placed hulls in the verifier) never read the display
