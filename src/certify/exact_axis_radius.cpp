@@ -49,9 +49,10 @@ mpq_class exact_axis_radius(const RobotModel& robot, int link, const HullPoints&
   Rational norm = 0;
   Rational zeta = 0;
   const double radial_candidate = radial_extent_upper(hull);
-  Rational rho = exact(radial_candidate);
+  // A non-finite candidate (coordinates beyond ~1e154; the file readers allow 1e9) falls back.
+  bool radial_candidate_holds = std::isfinite(radial_candidate);
+  Rational rho = radial_candidate_holds ? exact(radial_candidate) : Rational(0);
   Rational radial_l1 = 0;  // fallback if the rounded square root were ever too small
-  bool radial_candidate_holds = true;
   for (const auto& p : hull.points) {
     const Rational x = abs(exact(p.x()));
     const Rational y = abs(exact(p.y()));
