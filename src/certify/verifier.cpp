@@ -11,6 +11,7 @@
 
 #include "grpvss/certify/cell_probe.hpp"
 #include "grpvss/certify/robot_cell.hpp"
+#include "grpvss/certify/step_proposal.hpp"
 #include "grpvss/geometry/directed_rounding.hpp"
 #include "grpvss/geometry/gjk.hpp"
 #include "grpvss/kinematics/forward_kinematics.hpp"
@@ -413,65 +414,19 @@ double PathVerifier::thesis_next_parameter(const SegmentPath& path, double s,
   return std::min(end, s + increment);
 }
 
-// Smallest allowance / bound ratio over the hulls (>= 1 exactly when certified).
-double transition_slack(const TransitionRecord& transition) {
-  double slack = kInfinity;
-  for (std::size_t i = 0; i < transition.hull_motion_bounds.size(); ++i) {
-    if (transition.hull_motion_bounds[i] > 0.0) {
-      slack = std::min(slack, transition.hull_allowances[i] / transition.hull_motion_bounds[i]);
-    }
-  }
-  return slack;
-}
-
-// The basic resolution next to a collision: every hull whose motion its clearances do not
-// cover moves at most 2 Delta (the thesis's resolution); the others are covered anyway. The
-// smallest max(allowance, 2 Delta) / bound ratio (>= 1 exactly when the rule is met).
-double basic_resolution_slack(const TransitionRecord& transition, double two_delta) {
-  double slack = kInfinity;
-  for (std::size_t i = 0; i < transition.hull_motion_bounds.size(); ++i) {
-    const double bound = transition.hull_motion_bounds[i];
-    if (bound > 0.0) {
-      slack = std::min(slack, std::max(transition.hull_allowances[i], two_delta) / bound);
-    }
-  }
-  return slack;
-}
-
-// A PTP proposal from the motion bounds alone (no probe): the largest step, up to `step`,
-// whose bound stays within what the step rule is expected to allow for every hull:
-// r_k + r_{k+1} with r_{k+1} extrapolated linearly from the previous step's radius (and never
-// assumed below r_k - bound, which the clearance cannot fall below). Bounds grow
-// monotonically with the step (every joint is monotone inside a segment), so a bisection
-// finds it. A proposal only: the probe at its end decides.
+// The PTP proposal of step_proposal.hpp, from this verifier's state.
 double PathVerifier::predicted_ptp_step(const SegmentPath& path, double s, double step) const {
   const bool has_trend = previous_radii_.size() == cell_.hulls().size();
-  const int joints = robot_.joint_count();
-  const auto fits = [&](double candidate) {
-    const Eigen::VectorXd dq = (path.segment().ptp->joints_at(s + candidate) - current_.q).cwiseAbs();
-    for (std::size_t i = 0; i < cell_.hulls().size(); ++i) {
-      const double radius = current_.hulls[i].radius;
-      // In contact or refining next to one (raw clearances): the trials and the basic
-      // resolution size the step there; extrapolating a shrinking raw clearance would creep.
-      if (!(radius > 0.0) || current_.hulls[i].expanded_interferes) continue;
-      // A proposal needs no rounding care: M_h in plain double (judge_transition decides).
-      const double* weights = &proposal_weights_[i * joints];
-      double bound = 0.0;
-      for (int j = 0; j < joints; ++j) bound += weights[j] * dq[j];
-      const double trend = has_trend ? radius - previous_radii_[i] : 0.0;
-      const double expected_far_radius = std::max(radius - bound, radius + trend * candidate / previous_step_);
-      if (bound > 0.95 * (radius + expected_far_radius)) return false;
-    }
-    return true;
-  };
-  if (fits(step)) return step;
-  double low = 0.0;
-  double high = step;
-  for (int iteration = 0; iteration < 10; ++iteration) {
-    const double middle = 0.5 * (low + high);
-    (fits(middle) ? low : high) = middle;
+  std::vector<ProposalHull> hulls(cell_.hulls().size());
+  for (std::size_t i = 0; i < hulls.size(); ++i) {
+    hulls[i].radius = current_.hulls[i].radius;
+    hulls[i].expanded_interferes = current_.hulls[i].expanded_interferes;
+    if (has_trend) hulls[i].previous_radius = previous_radii_[i];
   }
-  return low;
+  const motion::PtpMotion& ptp = *path.segment().ptp;
+  return certify::predicted_ptp_step([&](double candidate) { return ptp.joints_at(s + candidate); },
+                                     current_.q, step, proposal_weights_, hulls, has_trend,
+                                     previous_step_);
 }
 
 // Returns false when the path must stop (an error was recorded).

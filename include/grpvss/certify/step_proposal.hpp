@@ -1,0 +1,47 @@
+#pragma once
+/// \file
+/// \brief How the certified march proposes its next step. Proposals are never decisions: the
+/// probe at a proposal's end and judge_transition decide every step
+/// (proofs/two-ball-cover.md#corollary-step); these functions only aim the trials well.
+
+#include <functional>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "grpvss/certify/certificate.hpp"
+
+namespace grpvss::certify {
+
+/// Smallest allowance / bound ratio over the hulls with a positive bound (>= 1 exactly when
+/// every hull is certified; +inf when nothing moves).
+double transition_slack(const TransitionRecord& transition);
+
+/// The basic resolution next to a collision: every hull whose motion its clearances do not
+/// cover moves at most 2 Delta (the thesis's resolution); the others are covered anyway.
+/// Smallest max(allowance, 2 Delta) / bound ratio (>= 1 exactly when the rule is met).
+double basic_resolution_slack(const TransitionRecord& transition, double two_delta);
+
+/// What a PTP proposal needs to know of one hull at the current step.
+struct ProposalHull {
+  double radius = 0.0;               ///< r_k (HullState::radius)
+  bool expanded_interferes = false;  ///< refining next to a contact: not used for the proposal
+  double previous_radius = 0.0;      ///< r_{k-1}, used when the proposal has a trend
+};
+
+/// \brief A PTP proposal from the motion bounds alone (no probe): the largest step in
+/// (0, max_step] whose bound M_h stays within 0.95 (r_k + r_far) for every hull with r_k > 0
+/// that is not refining, r_far the far-end radius extrapolated linearly from the previous
+/// step (r_k + (r_k - r_{k-1}) step / previous_step) and never assumed below r_k - M_h (which
+/// the clearance cannot fall below). Bounds grow with the step (every joint is monotone inside
+/// a PTP segment), so a bisection (10 halvings) finds it from below.
+/// \param joints_at the segment's joints at parameter s + step
+/// \param weights [hull * joints + j]: M_h's coefficient of |dq_j| (R_jh, 1 or 0)
+/// \param has_trend whether previous_radius / previous_step are meaningful
+double predicted_ptp_step(const std::function<Eigen::VectorXd(double)>& joints_at,
+                          const Eigen::VectorXd& q_now, double max_step,
+                          const std::vector<double>& weights,
+                          const std::vector<ProposalHull>& hulls, bool has_trend,
+                          double previous_step);
+
+}  // namespace grpvss::certify

@@ -1,0 +1,62 @@
+#include "grpvss/certify/step_proposal.hpp"
+
+#include <algorithm>
+#include <limits>
+
+namespace grpvss::certify {
+
+double transition_slack(const TransitionRecord& transition) {
+  double slack = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < transition.hull_motion_bounds.size(); ++i) {
+    if (transition.hull_motion_bounds[i] > 0.0) {
+      slack = std::min(slack, transition.hull_allowances[i] / transition.hull_motion_bounds[i]);
+    }
+  }
+  return slack;
+}
+
+double basic_resolution_slack(const TransitionRecord& transition, double two_delta) {
+  double slack = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < transition.hull_motion_bounds.size(); ++i) {
+    const double bound = transition.hull_motion_bounds[i];
+    if (bound > 0.0) {
+      slack = std::min(slack, std::max(transition.hull_allowances[i], two_delta) / bound);
+    }
+  }
+  return slack;
+}
+
+double predicted_ptp_step(const std::function<Eigen::VectorXd(double)>& joints_at,
+                          const Eigen::VectorXd& q_now, double max_step,
+                          const std::vector<double>& weights,
+                          const std::vector<ProposalHull>& hulls, bool has_trend,
+                          double previous_step) {
+  const std::size_t joints = static_cast<std::size_t>(q_now.size());
+  const auto fits = [&](double candidate) {
+    const Eigen::VectorXd dq = (joints_at(candidate) - q_now).cwiseAbs();
+    for (std::size_t i = 0; i < hulls.size(); ++i) {
+      const double radius = hulls[i].radius;
+      // In contact or refining next to one (raw clearances): the trials and the basic
+      // resolution size the step there; extrapolating a shrinking raw clearance would creep.
+      if (!(radius > 0.0) || hulls[i].expanded_interferes) continue;
+      // A proposal needs no rounding care: M_h in plain double (judge_transition decides).
+      double bound = 0.0;
+      for (std::size_t j = 0; j < joints; ++j) bound += weights[i * joints + j] * dq[j];
+      const double trend = has_trend ? radius - hulls[i].previous_radius : 0.0;
+      const double expected_far_radius =
+          std::max(radius - bound, radius + trend * candidate / previous_step);
+      if (bound > 0.95 * (radius + expected_far_radius)) return false;
+    }
+    return true;
+  };
+  if (fits(max_step)) return max_step;
+  double low = 0.0;
+  double high = max_step;
+  for (int iteration = 0; iteration < 10; ++iteration) {
+    const double middle = 0.5 * (low + high);
+    (fits(middle) ? low : high) = middle;
+  }
+  return low;
+}
+
+}  // namespace grpvss::certify

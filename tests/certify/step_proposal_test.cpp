@@ -1,0 +1,79 @@
+// The certified march's proposals (include/grpvss/certify/step_proposal.hpp): slack ratios and
+// the PTP proposal from motion bounds, on hand-made numbers.
+#include "grpvss/certify/step_proposal.hpp"
+
+#include <cmath>
+#include <limits>
+
+#include <gtest/gtest.h>
+
+namespace grpvss::certify {
+namespace {
+
+TransitionRecord transition(std::vector<double> bounds, std::vector<double> allowances) {
+  TransitionRecord record;
+  record.hull_motion_bounds = std::move(bounds);
+  record.hull_allowances = std::move(allowances);
+  return record;
+}
+
+TEST(StepProposal, TransitionSlackIsTheSmallestAllowanceOverBound) {
+  EXPECT_DOUBLE_EQ(transition_slack(transition({2.0, 0.0, 1.0}, {3.0, 5.0, 0.5})), 0.5);
+  EXPECT_DOUBLE_EQ(transition_slack(transition({2.0, 1.0}, {3.0, 5.0})), 1.5);
+  EXPECT_EQ(transition_slack(transition({0.0, 0.0}, {0.0, 1.0})),
+            std::numeric_limits<double>::infinity());
+}
+
+// Next to a collision only the hulls their clearances do not cover are held to 2 Delta.
+TEST(StepProposal, BasicResolutionHoldsOnlyUncoveredHullsToTwoDelta) {
+  // Hull 0 in contact (allowance 0) moves 0.8 <= 2 Delta = 1; hull 1 moves 4, far beyond
+  // 2 Delta, but its clearances allow 6: the rule holds (ratio min(1/0.8, 6/4) = 1.25).
+  EXPECT_DOUBLE_EQ(basic_resolution_slack(transition({0.8, 4.0}, {0.0, 6.0}), 1.0), 1.25);
+  // The contact hull moving 1.6 breaks it.
+  EXPECT_DOUBLE_EQ(basic_resolution_slack(transition({1.6, 4.0}, {0.0, 6.0}), 1.0), 0.625);
+  // A covered hull that moves beyond its allowance and beyond 2 Delta breaks it too.
+  EXPECT_DOUBLE_EQ(basic_resolution_slack(transition({0.5, 8.0}, {0.0, 6.0}), 1.0), 0.75);
+}
+
+// One revolute joint moving linearly, q(t) = t, hull axis radius R = 2: M_h = 2 t.
+double propose(const std::vector<ProposalHull>& hulls, bool has_trend, double previous_step,
+               double max_step) {
+  const Eigen::VectorXd q_now = Eigen::VectorXd::Zero(1);
+  const auto joints_at = [](double t) { return Eigen::VectorXd::Constant(1, t); };
+  return predicted_ptp_step(joints_at, q_now, max_step, std::vector<double>(hulls.size(), 2.0),
+                            hulls, has_trend, previous_step);
+}
+
+// Bisection from below with 10 halvings of max_step: within max_step / 1024 under the answer.
+void expect_from_below(double proposed, double exact, double max_step) {
+  EXPECT_LE(proposed, exact);
+  EXPECT_GT(proposed, exact - max_step / 1024.0);
+}
+
+TEST(StepProposal, WithoutTrendTheFarRadiusIsAssumedEqual) {
+  // 2 t <= 0.95 (1 + 1)  =>  t <= 0.95.
+  expect_from_below(propose({{1.0, false, 0.0}}, false, 1.0, 4.0), 0.95, 4.0);
+}
+
+TEST(StepProposal, AShrinkingClearanceIsExtrapolated) {
+  // r_{k-1} = 1.5 one unit ago: r_far = 1 - 0.5 t, so 2 t <= 0.95 (2 - 0.5 t), t <= 1.9 / 2.475.
+  expect_from_below(propose({{1.0, false, 1.5}}, true, 1.0, 4.0), 1.9 / 2.475, 4.0);
+}
+
+TEST(StepProposal, TheClearanceIsNeverAssumedToFallFasterThanTheMotion) {
+  // r_{k-1} = 10: the trend says r_far = 1 - 9 t, but the hull moves only 2 t, so
+  // r_far >= 1 - 2 t: 2 t <= 0.95 (2 - 2 t), t <= 1.9 / 3.9.
+  expect_from_below(propose({{1.0, false, 10.0}}, true, 1.0, 4.0), 1.9 / 3.9, 4.0);
+}
+
+TEST(StepProposal, TheTightestHullGovernsAndContactOrRefiningHullsAreIgnored) {
+  // Radii 3 (t <= 2.85) and 1 (t <= 0.95): the second governs.
+  expect_from_below(propose({{3.0, false, 0.0}, {1.0, false, 0.0}}, false, 1.0, 4.0), 0.95, 4.0);
+  // A hull in contact (radius 0) or refining next to a contact does not cut the proposal.
+  EXPECT_EQ(propose({{0.0, false, 0.0}, {1.0, true, 0.0}}, false, 1.0, 4.0), 4.0);
+  // When the whole allowed step fits it is returned as it is.
+  EXPECT_EQ(propose({{100.0, false, 0.0}}, false, 1.0, 4.0), 4.0);
+}
+
+}  // namespace
+}  // namespace grpvss::certify
