@@ -97,6 +97,11 @@ double HullRadiusTable::radius(int link, int hull, int joint) const {
   return radius_.at(link).at(hull).at(joint - 1);
 }
 
+double HullRadiusTable::motion_bound_weight(int link, int hull, int joint) const {
+  if (joint > link) return 0.0;
+  return joint_types_.at(joint - 1) == JointType::kRevolute ? radius(link, hull, joint) : 1.0;
+}
+
 double HullRadiusTable::hull_motion_bound(int link, int hull, const Eigen::VectorXd& dq) const {
   // proof: proofs/motion-bound.md#lemma-motion-bound
   double bound = 0.0;

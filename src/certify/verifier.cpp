@@ -96,16 +96,9 @@ class PathVerifier {
       throw std::invalid_argument("verify: the robot cell was built for other options");
     }
     const RobotModel& robot = cell.robot();
-    // Per hull and joint: R_jh (revolute), 1 (prismatic), 0 (joints after the hull's link).
     for (const LinkHull& hull : cell.hulls()) {
       for (int joint = 1; joint <= robot.joint_count(); ++joint) {
-        double weight = 0.0;
-        if (joint <= hull.link) {
-          weight = robot.joints[joint - 1].type == JointType::kRevolute
-                       ? cell.radii().radius(hull.link, hull.hull, joint)
-                       : 1.0;
-        }
-        proposal_weights_.push_back(weight);
+        proposal_weights_.push_back(cell.radii().motion_bound_weight(hull.link, hull.hull, joint));
       }
     }
     for (const HullPoints& hull : robot.links.back().hulls) {

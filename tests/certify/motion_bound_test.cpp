@@ -145,6 +145,10 @@ TEST(HullRadiusTable, MotionBoundSumsRevoluteAndPrismaticTerms) {
               0.1 * table.radius(2, 0, 1) + 0.2 * table.radius(2, 0, 2), 1e-12);
   // The base never moves.
   EXPECT_EQ(table.hull_motion_bound(0, 0, dq), 0.0);
+  // The coefficients: R_jh, 1 for the prismatic joint 3, 0 after the link.
+  EXPECT_EQ(table.motion_bound_weight(4, 0, 1), table.radius(4, 0, 1));
+  EXPECT_EQ(table.motion_bound_weight(4, 0, 3), 1.0);
+  EXPECT_EQ(table.motion_bound_weight(2, 0, 3), 0.0);
 }
 
 }  // namespace

@@ -33,6 +33,10 @@ class HullRadiusTable {
   /// joint-monotone motion with increments `dq` (library units).
   double hull_motion_bound(int link, int hull, const Eigen::VectorXd& dq) const;
 
+  /// The coefficient of |dq_j| in M_h: R_jh for a revolute joint j <= link, 1 for a
+  /// prismatic one, 0 for joints after the link (joint 1-based).
+  double motion_bound_weight(int link, int hull, int joint) const;
+
   /// Max over the link's hulls of hull_motion_bound.
   double link_motion_bound(int link, const Eigen::VectorXd& dq) const;
 
