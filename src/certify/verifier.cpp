@@ -10,6 +10,7 @@
 #include <Eigen/SVD>
 
 #include "grpvss/certify/cell_probe.hpp"
+#include "grpvss/certify/interference_episodes.hpp"
 #include "grpvss/certify/robot_cell.hpp"
 #include "grpvss/certify/step_proposal.hpp"
 #include "grpvss/geometry/directed_rounding.hpp"
@@ -159,6 +160,7 @@ class PathVerifier {
   Eigen::VectorXd last_q_;   ///< the last step's configuration
   bool any_expanded_ = false;
   std::vector<LinkClearanceSummary> clearances_;
+  InterferenceEpisodeTracker episodes_;
   /// The current segment's last certificate step: complete (and passed on) only once the
   /// transition to its successor was judged, or when the segment ends.
   std::optional<StepCertificate> pending_certificate_step_;
@@ -228,6 +230,7 @@ void PathVerifier::record_step(const ProbeResult& probe, int segment, double par
     }
   }
   step.interference_points = probe.interference_points;
+  step.contacts = interfering_pairs(cell_, probe);
   step.expanded_interferes = probe.any_expanded_interference;
   step.unexpanded_collides = probe.any_collision;
   step.refinement = refinement;
@@ -263,6 +266,7 @@ void PathVerifier::track_summaries(const StepRecord& step) {
     }
   }
   any_expanded_ |= step.expanded_interferes;
+  episodes_.add(step);
 }
 
 void PathVerifier::flush_certificate_step() {
@@ -552,6 +556,7 @@ bool PathVerifier::march_segment(const SegmentPath& path, int segment_number) {
 void PathVerifier::finish() {
   VerificationResult& result = run_.result;
   result.link_clearances = clearances_;
+  result.interference_episodes = episodes_.episodes();
   const bool any_expanded = any_expanded_;
   if (result.collision_step) {
     result.verdict = Verdict::kCollision;

@@ -111,6 +111,30 @@ class JsonWriter {
             {"kind", point.kind}};
   }
 
+  static json contact(const certify::PairContact& pair) {
+    return {{"link", pair.link},
+            {"hull", pair.hull},
+            {"obstacle", pair.obstacle},
+            {"unexpanded_collides", pair.unexpanded_collides}};
+  }
+
+  static json episode(const certify::InterferenceEpisode& run) {
+    const auto optional_step = [](const std::optional<int>& step) {
+      return step ? json(*step) : json(nullptr);
+    };
+    return {{"link", run.link},
+            {"hull", run.hull},
+            {"obstacle", run.obstacle},
+            {"first_step", run.first_step},
+            {"last_step", run.last_step},
+            {"first_segment", run.first_segment},
+            {"last_segment", run.last_segment},
+            {"first_time", finite(run.first_time, "episode first_time")},
+            {"last_time", finite(run.last_time, "episode last_time")},
+            {"first_collision_step", optional_step(run.first_collision_step)},
+            {"last_collision_step", optional_step(run.last_collision_step)}};
+  }
+
   json step(const certify::StepRecord& record) const {
     return step_json(record, types_);
   }
@@ -127,6 +151,8 @@ class JsonWriter {
     }
     json points = json::array();
     for (const auto& point : record.interference_points) points.push_back(interference_point(point));
+    json contacts = json::array();
+    for (const auto& pair : record.contacts) contacts.push_back(contact(pair));
     return {{"index", record.index},
             {"segment", record.segment},
             {"path_time", finite(record.path_time, "path_time")},
@@ -135,6 +161,7 @@ class JsonWriter {
             {"end_effector", vector3(record.end_effector_W, "end effector")},
             {"links", links},
             {"interference_points", points},
+            {"contacts", contacts},
             {"expanded_interferes", record.expanded_interferes},
             {"unexpanded_collides", record.unexpanded_collides},
             {"refinement", record.refinement}};
@@ -166,6 +193,8 @@ class JsonWriter {
     for (const auto& record : result_.errors) errors.push_back(error(record));
     json clearances = json::array();
     for (const auto& summary : result_.link_clearances) clearances.push_back(link_clearance(summary));
+    json episodes = json::array();
+    for (const auto& run : result_.interference_episodes) episodes.push_back(episode(run));
     const auto input = [](const InputFileDigest& digest) {
       return json{{"file", digest.file}, {"sha256", digest.sha256}};
     };
@@ -200,6 +229,7 @@ class JsonWriter {
         {"steps", steps},
         {"errors", errors},
         {"link_clearances", clearances},
+        {"interference_episodes", episodes},
     };
   }
 

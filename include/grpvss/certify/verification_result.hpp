@@ -47,6 +47,31 @@ struct InterferencePoint {
   std::string kind;  ///< "edge-of-link/face-of-obstacle", "obstacle-vertex-inside-link", ...
 };
 
+/// One (link hull, obstacle) pair whose expanded hull interferes at a step.
+struct PairContact {
+  int link = 0;      ///< 0..N
+  int hull = 0;      ///< index within the link (0-based)
+  int obstacle = 0;  ///< index within the environment (0-based)
+  bool unexpanded_collides = false;  ///< the unexpanded hull meets the obstacle too
+};
+
+/// A run of consecutive steps at which one (link hull, obstacle) pair interferes: where a
+/// collision begins and ends, which the per-step points leave the reader to piece together.
+struct InterferenceEpisode {
+  int link = 0;
+  int hull = 0;
+  int obstacle = 0;
+  int first_step = 0;  ///< step indices; 0 is the start configuration
+  int last_step = 0;
+  int first_segment = 0;  ///< segments of first_step and last_step (0: the start)
+  int last_segment = 0;
+  double first_time = 0.0;  ///< path times of first_step and last_step, s
+  double last_time = 0.0;
+  /// First and last step of the run at which the unexpanded hull meets the obstacle.
+  std::optional<int> first_collision_step;
+  std::optional<int> last_collision_step;
+};
+
 struct LinkStepRecord {
   double motion_bound = 0.0;   ///< upper bound on the path length of any point of the link
   double allowance = 0.0;      ///< what the step rule compared the bound with
@@ -65,6 +90,7 @@ struct StepRecord {
   Eigen::Vector3d end_effector_W = Eigen::Vector3d::Zero();
   std::vector<LinkStepRecord> links;  ///< index = link number 0..N (link 0 has bound 0)
   std::vector<InterferencePoint> interference_points;  ///< expanded robot vs obstacles
+  std::vector<PairContact> contacts;  ///< every interfering pair, in (link, hull, obstacle) order
   bool expanded_interferes = false;
   bool unexpanded_collides = false;
   bool refinement = false;  ///< inserted by the automatic refinement of Section 5.2.2
@@ -108,6 +134,8 @@ struct VerificationResult {
   std::vector<StepRecord> steps;
   std::vector<PathError> errors;
   std::vector<LinkClearanceSummary> link_clearances;
+  /// Every run of steps in which a pair interferes, ordered by first step, then pair.
+  std::vector<InterferenceEpisode> interference_episodes;
   std::optional<int> collision_step;  ///< the step whose unexpanded robot intersects
   double total_cycle_time = 0.0;
 };

@@ -17,6 +17,28 @@ int last_step_index(const certify::VerificationResult& result) {
   return last;
 }
 
+constexpr std::size_t kEpisodesShown = 10;
+
+std::string step_range(int first, int last) {
+  return first == last ? fmt::format("step {}", first) : fmt::format("steps {}-{}", first, last);
+}
+
+// "interference: link 4 hull 0 / obstacle 0, steps 2-8 (7.784-10.337 s), unexpanded
+// collides at steps 3-7"
+std::string episode_line(const certify::InterferenceEpisode& episode) {
+  std::string line = fmt::format("interference: link {} hull {} / obstacle {}, {} ({:.3f}-{:.3f} s), ",
+                                 episode.link, episode.hull, episode.obstacle,
+                                 step_range(episode.first_step, episode.last_step),
+                                 episode.first_time, episode.last_time);
+  if (episode.first_collision_step) {
+    line += "unexpanded collides at " +
+            step_range(*episode.first_collision_step, *episode.last_collision_step);
+  } else {
+    line += "expanded hull only";
+  }
+  return line + "\n";
+}
+
 }  // namespace
 
 std::string verdict_summary(const certify::VerificationResult& result) {
@@ -28,6 +50,13 @@ std::string verdict_summary(const certify::VerificationResult& result) {
                       last_step_index(result),
                       result.total_cycle_time);
   if (result.collision_step) text += fmt::format("first collision at step {}\n", *result.collision_step);
+  const std::size_t shown = std::min(result.interference_episodes.size(), kEpisodesShown);
+  for (std::size_t i = 0; i < shown; ++i) text += episode_line(result.interference_episodes[i]);
+  if (result.interference_episodes.size() > shown) {
+    text += fmt::format("... and {} more interference episodes (JSON report: "
+                        "interference_episodes)\n",
+                        result.interference_episodes.size() - shown);
+  }
   for (const certify::PathError& error : result.errors) {
     text += fmt::format("error {} (segment {}, step {}): {}\n", error.code, error.segment,
                         error.step, error.message);

@@ -1,0 +1,40 @@
+// What `grpvss verify` prints on the thesis's sample: the verdict block with one line per
+// interference episode (where each collision begins and ends), checked line by line.
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "support/text_files.hpp"
+
+namespace {
+
+const std::string kData = std::string(GRPVSS_SOURCE_DIR) + "/data/ibm7545/";
+
+TEST(VerifySummaryCli, TheSamplesEpisodesArePrintedBetweenTheFirstCollisionAndTheClearances) {
+  const std::string directory = grpvss::test::make_temporary_directory("verify-summary");
+  const std::string out = directory + "/stdout.txt";
+  const int status = std::system((std::string(GRPVSS_CLI) + " verify --robot " + kData +
+                                  "robot.txt --env " + kData + "environment.txt --path " + kData +
+                                  "path.txt --tolerance 0.5 > " + out + " 2>&1")
+                                     .c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 1);
+  const std::string text = grpvss::test::read_text_file(out);
+  std::filesystem::remove_all(directory);
+  const std::string expected =
+      "first collision at step 4\n"
+      "interference: link 3 hull 1 / obstacle 0, steps 3-14 (8.936-13.430 s), unexpanded "
+      "collides at steps 4-10\n"
+      "interference: link 3 hull 0 / obstacle 0, steps 4-15 (9.303-13.843 s), unexpanded "
+      "collides at steps 5-14\n"
+      "interference: link 4 hull 0 / obstacle 0, steps 4-5 (9.303-9.715 s), expanded hull "
+      "only\n"
+      "error 7 (segment 3, step 43)";
+  EXPECT_NE(text.find(expected), std::string::npos) << text;
+}
+
+}  // namespace
