@@ -249,6 +249,17 @@ function auditPanel() {
   const clearances = report.link_clearances.filter((c) => c.link > 0)
     .map((c) => `<tr><th>link ${c.link}</th><td>${fmt(c.min_clearance, 4)} at step ${c.step}</td></tr>`).join('');
   const errors = report.errors.map((e) => `<li>error ${e.code} (segment ${e.segment}, step ${e.step}): ${escapeHtml(e.message)}</li>`).join('');
+  // One row per interference episode; its button shows the first colliding step (else the first
+  // interfering one).
+  const range = (a, b) => (a === b ? `step ${a}` : `steps ${a}–${b}`);
+  const episodes = report.interference_episodes.map((e) => {
+    const collides = e.first_collision_step !== null;
+    const target = collides ? e.first_collision_step : e.first_step;
+    return `<tr class="episode"><th><button class="episode-go" data-step="${target}" title="show step ${target}">link ${e.link} hull ${e.hull} / obstacle ${e.obstacle}</button></th>
+      <td>${range(e.first_step, e.last_step)} (${fmt(e.first_time, 2)}–${fmt(e.last_time, 2)} s)<br>${collides
+        ? `<span class="bad">collides ${range(e.first_collision_step, e.last_collision_step)}</span>`
+        : '<span class="warn">expanded hull only</span>'}</td></tr>`;
+  }).join('');
   const certified = report.mode === 'certified';
   $('audit-panel').innerHTML = `
     <div class="verdict ${verdictClass}" id="verdict">${escapeHtml(report.verdict)}</div>
@@ -265,10 +276,25 @@ function auditPanel() {
       ? 'Certified mode: every transition between consecutive steps is covered by the two-ball rule; the verdict above is decided exactly. Re-check with <code>grpvss check-certificate</code>.'
       : 'Thesis mode reproduces the thesis step rule and proves nothing.'}</p>
     <table>${clearances}</table>
+    <h3>Interference episodes</h3>
+    ${episodes ? `<table id="episodes">${episodes}</table>` : '<p class="small">none: no step has an interfering pair</p>'}
     ${errors ? `<h3>Errors</h3><ul>${errors}</ul>` : ''}
     <h3>Inputs (SHA-256)</h3>
     <table class="digests">${inputs}</table>
     <p class="small">${escapeHtml(report.program.name)} ${escapeHtml(report.program.version)}, report ${escapeHtml(report.schema)}, generated ${escapeHtml(report.generated_at)}</p>`;
+}
+
+// The episode buttons jump to their step (the start configuration, step 0, is not animated: the
+// first step stands for it).
+function wireEpisodeButtons() {
+  for (const button of document.querySelectorAll('#episodes button.episode-go')) {
+    button.addEventListener('click', () => {
+      stop();
+      const wanted = Number(button.dataset.step);
+      const position = steps.findIndex((s) => s.index >= wanted);
+      showStep(position >= 0 ? position : steps.length - 1);
+    });
+  }
 }
 
 // ---- wiring --------------------------------------------------------------------------------
@@ -301,6 +327,7 @@ window.addEventListener('keydown', (e) => {
 
 frameCamera();
 auditPanel();
+wireEpisodeButtons();
 applyDisplay();
 resize();
 showStep(0);
@@ -327,6 +354,7 @@ window.grpvssViewer = Object.freeze({
       starCount: stars.geometry.getAttribute('position') ? stars.geometry.getAttribute('position').count : 0,
       interferenceCountShown: Number($('interference-count')?.textContent ?? NaN),
       verdictShown: $('verdict')?.textContent ?? null,
+      episodesShown: document.querySelectorAll('#episodes tr.episode').length,
     };
   },
 });

@@ -64,6 +64,21 @@ try {
     'audit panel shows the three input SHA-256 digests');
   await page.screenshot({ path: join(artifactDir, 'viewer-start.png') });
 
+  // The audit panel lists the report's interference episodes; a row's button shows its first
+  // colliding step.
+  check(state.episodesShown === report.interference_episodes.length && state.episodesShown > 0,
+    `audit panel lists the report's ${report.interference_episodes.length} interference episodes (${state.episodesShown})`);
+  const colliding = report.interference_episodes.findIndex((e) => e.first_collision_step !== null);
+  check(colliding >= 0, 'the IBM 7545 run has an episode in which the unexpanded robot collides');
+  if (colliding >= 0) {
+    await page.locator('#episodes button.episode-go').nth(colliding).click();
+    const shownAfterClick = (await page.evaluate(() => window.grpvssViewer.state())).step;
+    const wanted = report.interference_episodes[colliding].first_collision_step;
+    check(shownAfterClick === wanted, `the episode button shows step ${wanted} (at ${shownAfterClick})`);
+    await page.screenshot({ path: join(artifactDir, 'viewer-episode.png') });
+    await page.click('#first');
+  }
+
   // Step to the first step with interference points with the "next ★" button.
   const firstColliding = report.steps.findIndex((s) => s.interference_points.length > 0);
   check(firstColliding >= 0, `the IBM 7545 run has a step with interference points (index ${firstColliding})`);
