@@ -415,9 +415,7 @@ ExactPoint exact_vertex(const Eigen::Vector3d& v) {
 class FaceSides {
  public:
   FaceSides(const Hull& faces_of, const std::vector<Eigen::Vector3d>& points, int face)
-      : faces_of_(faces_of), points_(points), face_(face),
-        loop_(faces_of.poly.faces()[face]), exact_side_(points.size()),
-        have_exact_side_(points.size(), 0) {}
+      : faces_of_(faces_of), points_(points), face_(face), loop_(faces_of.poly.faces()[face]) {}
 
   const std::vector<int>& loop() const { return loop_; }
   const Fast3& normal() {
@@ -426,6 +424,11 @@ class FaceSides {
   }
   /// Exact n . (p - v_0) for point index i.
   const Fast& side(std::size_t i) {
+    // Sized on first use: most faces never need an exact side (intervals decide them).
+    if (have_exact_side_.empty()) {
+      exact_side_.resize(points_.size());
+      have_exact_side_.assign(points_.size(), 0);
+    }
     if (!have_exact_side_[i]) {
       exact_side_[i] = dot(normal(), diff<Fast>(points_[i], faces_of_.vertex(face_, 0)));
       have_exact_side_[i] = 1;
@@ -532,6 +535,9 @@ void edge_face_points(const Hull& edges_of, const Hull& faces_of, InterferenceKi
   std::vector<IV> value(ev.size());
   std::vector<char> have_value(ev.size());
   std::vector<int> side(ev.size());
+  std::vector<IV3> m_iv;  // per face, reused
+  std::vector<IV3> v_iv;
+  std::vector<std::size_t> undecided;
   for (std::size_t f = 0; f < faces_of.poly.faces().size(); ++f) {
     const auto& face_loop = faces_of.poly.faces()[f];
     Eigen::Vector3d face_lo = fv[face_loop[0]], face_hi = fv[face_loop[0]];
@@ -542,8 +548,7 @@ void edge_face_points(const Hull& edges_of, const Hull& faces_of, InterferenceKi
     if ((all_hi.array() < face_lo.array()).any() || (face_hi.array() < all_lo.array()).any()) {
       continue;
     }
-    FaceSides face(faces_of, ev, static_cast<int>(f));
-    const auto& loop = face.loop();
+    const auto& loop = face_loop;
     const EpickPoint f0(fv[loop[0]].x(), fv[loop[0]].y(), fv[loop[0]].z());
     const EpickPoint f1(fv[loop[1]].x(), fv[loop[1]].y(), fv[loop[1]].z());
     const EpickPoint f2(fv[loop[2]].x(), fv[loop[2]].y(), fv[loop[2]].z());
@@ -556,11 +561,12 @@ void edge_face_points(const Hull& edges_of, const Hull& faces_of, InterferenceKi
     if (!any_positive && std::find(side.begin(), side.end(), 0) == side.end()) {
       continue;  // every edge strictly behind it
     }
+    FaceSides face(faces_of, ev, static_cast<int>(f));
     std::fill(have_value.begin(), have_value.end(), 0);
     IV3 n;
     IV3 v0_iv;
-    std::vector<IV3> m_iv;
-    std::vector<IV3> v_iv;
+    m_iv.clear();
+    v_iv.clear();
     {
       CGAL::Protect_FPU_rounding<true> guard;
       n = faces_of.face_normal<IV>(static_cast<int>(f));
@@ -597,7 +603,7 @@ void edge_face_points(const Hull& edges_of, const Hull& faces_of, InterferenceKi
       const bool at_end = s0 == 0 || s1 == 0;
       const int end = s0 == 0 ? i0 : i1;
       // Interval pass over the loop edges: -1 certainly outside, 0 undecided, 1 inside.
-      std::vector<std::size_t> undecided;
+      undecided.clear();
       bool outside = false;
       {
         CGAL::Protect_FPU_rounding<true> guard;

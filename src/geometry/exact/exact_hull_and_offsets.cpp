@@ -331,6 +331,7 @@ ConvexPolytope ConvexPolytopeBuilder::finish(const std::vector<Eigen::Vector3d>&
   // Faces: merged groups of exactly coplanar adjacent triangles. A template hull whose edges
   // are all strictly convex (every sign < 0) has only triangles: each is its own face.
   std::vector<std::vector<int>> loops_input;  // input indices
+  loops_input.reserve(triangles.size());
   const bool only_triangles =
       edge_signs != nullptr &&
       std::none_of(edge_signs->begin(), edge_signs->end(), [](signed char s) { return s == 0; });
@@ -418,27 +419,34 @@ ConvexPolytope ConvexPolytopeBuilder::finish(const std::vector<Eigen::Vector3d>&
     for (auto& loop : loops_input) drop_collinear(loop, input);
   }
 
-  // Vertices: referenced input points, ordered by input index (deterministic).
-  std::vector<int> used;
-  for (const auto& loop : loops_input) used.insert(used.end(), loop.begin(), loop.end());
-  std::sort(used.begin(), used.end());
-  used.erase(std::unique(used.begin(), used.end()), used.end());
+  // Vertices: referenced input points, ordered by input index (deterministic). Marks instead
+  // of a sort, and the loops renumbered in place: this runs for every placed hull.
   std::vector<int> input_to_vertex(input.size(), -1);
+  std::size_t corner_count = 0;
+  for (const auto& loop : loops_input) {
+    corner_count += loop.size();
+    for (int idx : loop) input_to_vertex[static_cast<std::size_t>(idx)] = 0;
+  }
   ConvexPolytope poly;
-  for (int idx : used) {
+  for (std::size_t idx = 0; idx < input.size(); ++idx) {
+    if (input_to_vertex[idx] < 0) continue;
     input_to_vertex[idx] = static_cast<int>(poly.vertices_.size());
     poly.vertices_.push_back(input[idx]);
-    poly.input_indices_.push_back(idx);
+    poly.input_indices_.push_back(static_cast<int>(idx));
   }
-  for (const auto& loop : loops_input) {
-    std::vector<int> face;
-    for (int idx : loop) face.push_back(input_to_vertex[idx]);
-    poly.faces_.push_back(std::move(face));
+  for (auto& loop : loops_input) {
+    for (int& idx : loop) idx = input_to_vertex[static_cast<std::size_t>(idx)];
   }
+  poly.faces_ = std::move(loops_input);
 
   // Edges and their two faces, numbered in order of first appearance along the face loops
   // (twins from compressed rows, no sort and no map: this runs for every placed hull).
   std::vector<int> tails, heads, face_of;
+  tails.reserve(corner_count);
+  heads.reserve(corner_count);
+  face_of.reserve(corner_count);
+  poly.edges_.reserve(corner_count / 2);
+  poly.edge_faces_.reserve(corner_count / 2);
   for (std::size_t f = 0; f < poly.faces_.size(); ++f) {
     const auto& loop = poly.faces_[f];
     for (std::size_t i = 0; i < loop.size(); ++i) {
