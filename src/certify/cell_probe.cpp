@@ -95,6 +95,28 @@ void CellProbe::probe(const Eigen::VectorXd& q, bool with_points, ProbeResult& o
   out.any_collision = false;
   kinematics::forward_kinematics(cell_->chain(), q, workspace_);
   for (int i = 0; i < static_cast<int>(cell_->hulls().size()); ++i) probe_hull(i, with_points, out);
+  sort_points(out);
+}
+
+void CellProbe::add_interference_points(ProbeResult& probed) {
+  const RobotCell& cell = *cell_;
+  kinematics::forward_kinematics(cell.chain(), probed.q, workspace_);
+  probed.interference_points.clear();
+  for (int i = 0; i < static_cast<int>(cell.hulls().size()); ++i) {
+    if (!probed.hulls[static_cast<std::size_t>(i)].expanded_interferes) continue;
+    const LinkHull& hull = cell.hulls()[static_cast<std::size_t>(i)];
+    place_points(workspace_.X_WL[hull.link], hull.expanded_L, placed_expanded_);
+    expanded_polytope_.reset();
+    for (const PairEvidence& evidence : probed.evidence) {
+      if (evidence.hull_index == i && evidence.expanded && !evidence.separated) {
+        append_points(i, evidence.obstacle, probed);
+      }
+    }
+  }
+  sort_points(probed);
+}
+
+void CellProbe::sort_points(ProbeResult& out) {
   // Reports must be byte-identical across runs: the exact core's point order may follow
   // memory addresses, so the points get one canonical order here.
   std::sort(out.interference_points.begin(), out.interference_points.end(),
@@ -102,6 +124,22 @@ void CellProbe::probe(const Eigen::VectorXd& q, bool with_points, ProbeResult& o
               return std::tie(a.link, a.hull, a.obstacle, a.kind, a.p_W.x(), a.p_W.y(), a.p_W.z()) <
                      std::tie(b.link, b.hull, b.obstacle, b.kind, b.p_W.x(), b.p_W.y(), b.p_W.z());
             });
+}
+
+void CellProbe::append_points(int hull_index, int obstacle, ProbeResult& out) {
+  const RobotCell& cell = *cell_;
+  const LinkHull& hull = cell.hulls()[static_cast<std::size_t>(hull_index)];
+  // The placed offset is hulled once per hull, from its link-frame template; the obstacle's
+  // hull was built once.
+  if (!expanded_polytope_) {
+    expanded_polytope_ = geometry::ConvexPolytope::from_points_like(
+        placed_expanded_, cell.expanded_polytope_L(static_cast<std::size_t>(hull_index)));
+  }
+  for (const auto& point :
+       geometry::interference_points(*expanded_polytope_, cell.obstacle_polytopes_W()[obstacle])) {
+    out.interference_points.push_back(
+        {hull.link, hull.hull, obstacle, point.point, geometry::to_string(point.kind)});
+  }
 }
 
 void CellProbe::probe_hull(int hull_index, bool with_points, ProbeResult& out) {
@@ -186,19 +224,7 @@ void CellProbe::probe_hull(int hull_index, bool with_points, ProbeResult& out) {
     state.expanded_interferes = true;
     out.any_expanded_interference = true;
     out.evidence.push_back(evidence);
-    if (with_points) {
-      // The placed offset is hulled once per hull, from its link-frame template; the
-      // obstacle's hull was built once.
-      if (!expanded_polytope_) {
-        expanded_polytope_ = geometry::ConvexPolytope::from_points_like(
-            placed_expanded_, cell.expanded_polytope_L(static_cast<std::size_t>(hull_index)));
-      }
-      for (const auto& point :
-           geometry::interference_points(*expanded_polytope_, cell.obstacle_polytopes_W()[o])) {
-        out.interference_points.push_back(
-            {hull.link, hull.hull, o, point.point, geometry::to_string(point.kind)});
-      }
-    }
+    if (with_points) append_points(hull_index, o, out);
     if (!raw_placed) {
       place_points(X_WL, hull.raw_L, placed_raw_);
       raw_placed = true;

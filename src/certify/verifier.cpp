@@ -141,7 +141,6 @@ class PathVerifier {
   kinematics::Workspace workspace_;
   ProbeResult current_;
   ProbeResult trial_;
-  ProbeResult points_;
   double end_link_reach_ = 1.0;
   /// The radii of the step before current_ in this segment and the parameter step between
   /// them (the trend predicted_ptp_step extrapolates); empty at a segment start.
@@ -530,9 +529,8 @@ bool PathVerifier::march_segment(const SegmentPath& path, int segment_number) {
     }
     if (transition.certified) basic_resolution_mode_ = false;
     if (trial_.any_expanded_interference) {
-      // Only the points are taken: the radii and evidence the transition was judged on stay.
-      probe_.probe(*q1, /*with_points=*/true, points_);
-      trial_.interference_points = std::move(points_.interference_points);
+      // Only the points are added: the radii and evidence the transition was judged on stay.
+      probe_.add_interference_points(trial_);
     }
     const bool refinement_region =
         trial_.any_expanded_interference || current_.any_expanded_interference;

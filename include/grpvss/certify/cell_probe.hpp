@@ -68,11 +68,21 @@ class CellProbe {
   /// Evaluates configuration q. `with_points`: also compute the exact interference points.
   void probe(const Eigen::VectorXd& q, bool with_points, ProbeResult& out);
 
+  /// Adds to a result of probe(q, false, ...) the exact interference points that
+  /// probe(q, true, ...) would have found: those of the pairs its evidence shows interfering,
+  /// without deciding every pair again.
+  void add_interference_points(ProbeResult& probed);
+
   /// Obstacle count above which the broadphase is used instead of testing every obstacle.
   static constexpr int kBroadphaseThreshold = 16;
 
  private:
   void probe_hull(int hull_index, bool with_points, ProbeResult& out);
+  /// Appends the points of the placed offset of hull `hull_index` (in placed_expanded_) with
+  /// obstacle `obstacle`; hulls the offset once per hull (expanded_polytope_).
+  void append_points(int hull_index, int obstacle, ProbeResult& out);
+  /// Sorts out.interference_points into the one canonical order reports use.
+  static void sort_points(ProbeResult& out);
 
   const RobotCell* cell_;
   kinematics::Workspace workspace_;
