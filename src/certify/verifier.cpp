@@ -11,6 +11,7 @@
 
 #include "grpvss/certify/cell_probe.hpp"
 #include "grpvss/certify/interference_episodes.hpp"
+#include "grpvss/certify/motion_clearance.hpp"
 #include "grpvss/certify/robot_cell.hpp"
 #include "grpvss/certify/step_proposal.hpp"
 #include "grpvss/geometry/directed_rounding.hpp"
@@ -212,6 +213,18 @@ void PathVerifier::record_step(const ProbeResult& probe, int segment, double par
     step.links[link].clearance = probe.link_radius(cell_, link);
     step.links[link].nearest_obstacle = probe.link_nearest_obstacle(cell_, link);
   }
+  if (incoming != nullptr && certified()) {
+    // Per link: the smallest clearance its hulls keep throughout the transition from current_
+    // (the previous step's probe) to this one.
+    // proof: proofs/two-ball-cover.md#corollary-motion-clearance
+    for (std::size_t i = 0; i < cell_.hulls().size(); ++i) {
+      const double kept = std::max(
+          0.0, motion_clearance_lower_bound(current_.hulls[i].radius, probe.hulls[i].radius,
+                                            incoming->hull_motion_bounds[i]));
+      std::optional<double>& link = step.links[cell_.hulls()[i].link].motion_clearance;
+      link = link ? std::min(*link, kept) : kept;
+    }
+  }
   if (incoming != nullptr) {
     // Per link: the hull whose bound uses the largest share of its allowance governs.
     std::vector<double> worst_share(robot_.links.size(), -1.0);
@@ -262,6 +275,11 @@ void PathVerifier::track_summaries(const StepRecord& step) {
       summary.min_clearance = link.clearance;
       summary.step = step.index;
       summary.obstacle = link.nearest_obstacle;
+    }
+    if (link.motion_clearance &&
+        (!summary.min_motion_clearance || *link.motion_clearance < *summary.min_motion_clearance)) {
+      summary.min_motion_clearance = link.motion_clearance;
+      summary.motion_step = step.index;
     }
   }
   any_expanded_ |= step.expanded_interferes;

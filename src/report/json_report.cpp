@@ -34,6 +34,10 @@ json clearance(double value, const char* what) {
   return finite(value, what);
 }
 
+json optional_clearance(const std::optional<double>& value, const char* what) {
+  return value ? clearance(*value, what) : json(nullptr);
+}
+
 json vector3(const Eigen::Vector3d& v, const char* what) {
   return json::array({finite(v.x(), what), finite(v.y(), what), finite(v.z(), what)});
 }
@@ -100,7 +104,8 @@ class JsonWriter {
             {"motion_bound", finite(record.motion_bound, "motion_bound")},
             {"allowance", finite(record.allowance, "allowance")},
             {"governing", certify::to_string(record.governing)},
-            {"clearance", clearance(record.clearance, "clearance")}};
+            {"clearance", clearance(record.clearance, "clearance")},
+            {"motion_clearance", optional_clearance(record.motion_clearance, "motion_clearance")}};
   }
 
   static json interference_point(const certify::InterferencePoint& point) {
@@ -181,7 +186,11 @@ class JsonWriter {
     return {{"link", summary.link},
             {"min_clearance", clearance(summary.min_clearance, "min_clearance")},
             {"step", summary.step},
-            {"obstacle", summary.obstacle < 0 ? json(nullptr) : json(summary.obstacle)}};
+            {"obstacle", summary.obstacle < 0 ? json(nullptr) : json(summary.obstacle)},
+            {"min_motion_clearance",
+             optional_clearance(summary.min_motion_clearance, "min_motion_clearance")},
+            {"motion_step", summary.min_motion_clearance ? json(summary.motion_step)
+                                                         : json(nullptr)}};
   }
 
   json render(const InputDigests& digests, const std::string& generated_at) const {

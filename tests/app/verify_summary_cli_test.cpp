@@ -4,6 +4,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -35,6 +36,34 @@ TEST(VerifySummaryCli, TheSamplesEpisodesArePrintedBetweenTheFirstCollisionAndTh
       "only\n"
       "error 7 (segment 3, step 43)";
   EXPECT_NE(text.find(expected), std::string::npos) << text;
+}
+
+// The Table 3 PTP with the post 0.62 in. below the quill: CLEAR, and the summary says how far
+// from the obstacles the links are proven to stay along the motion — for the quill less than
+// the tolerance, which the note spells out.
+TEST(VerifySummaryCli, AClearRunStatesTheClearanceProvenAlongTheMotion) {
+  const std::string directory = grpvss::test::make_temporary_directory("verify-summary");
+  const std::string path = directory + "/ptp.txt";
+  std::ofstream(path) << "1\n1\n50.,3.\n50.,3.\n4.,0.3\n50.,3.\n";
+  const std::string out = directory + "/stdout.txt";
+  const int status = std::system((std::string(GRPVSS_CLI) + " verify --robot " + kData +
+                                  "robot.txt --env " + kData +
+                                  "bench-environment-near-miss.txt --path " + path +
+                                  " --tolerance 0.5 > " + out + " 2>&1")
+                                     .c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0);
+  const std::string text = grpvss::test::read_text_file(out);
+  std::filesystem::remove_all(directory);
+  EXPECT_NE(text.find("link 4: smallest certified clearance 0.6907 at step 5 (obstacle 0); along "
+                      "the motion > 0.0435 (steps 3-4)\n"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("note: along the motion link 4 is only proven to stay farther than 0.0435 "
+                      "(steps 3-4), less than the tolerance 0.5: the nominal path is clear, a "
+                      "robot deviating from it by the tolerance is not proven clear\n"),
+            std::string::npos)
+      << text;
 }
 
 }  // namespace

@@ -1,8 +1,10 @@
 // Checks proofs/two-ball-cover.md: a path of length <= r_k + r_k1 stays in the union of the
 // closed balls around its end points; slightly longer paths can leave them; touching is possible
-// under non-strict inequalities.
+// under non-strict inequalities; every path point keeps the motion clearance g from obstacles.
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -105,6 +107,70 @@ TEST(LemmaTwoBallCover, TangentFlatObstacleShowsWhyStrictnessIsNeeded) {
   // Neither strictness condition S1 (ell < r_k + r_k1) nor S2 (dist > r) holds.
   EXPECT_FALSE(ell < r_k + r_k1);
   EXPECT_FALSE(dist0 > r_k && dist1 > r_k1);
+}
+
+// proofs/two-ball-cover.md#corollary-motion-clearance, in exact-enough doubles (the reference
+// here is the formula, not the implementation in src/certify/motion_clearance.cpp).
+double motion_clearance(double r_k, double r_k1, double bound) {
+  return std::max((r_k + r_k1 - bound) / 2.0, std::max(r_k, r_k1) - bound);
+}
+
+double distance_to_cloud(const Vec3& p, const std::vector<Vec3>& cloud) {
+  double d = std::numeric_limits<double>::infinity();
+  for (const Vec3& o : cloud) d = std::min(d, lemma_ref::norm(lemma_ref::sub(p, o)));
+  return d;
+}
+
+// Random paths (polylines, helix arcs) and obstacle point clouds; the radii are the end points'
+// distances shrunk at random, the bound the path length stretched at random: every sampled
+// path point is at least g from the cloud.
+TEST(LemmaTwoBallCover, EveryPathPointKeepsTheMotionClearanceFromTheObstacles) {
+  std::mt19937 rng(2026);
+  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  std::uniform_real_distribution<double> u(-4.0, 4.0);
+  int positive = 0, checked = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    std::vector<Vec3> path;
+    if (trial % 2 == 0) {
+      path = densify(random_polyline(rng, 1 + trial % 5), 60);
+    } else {
+      const double radius = 0.2 + u01(rng), pitch = u01(rng), turns = 0.1 + u01(rng);
+      for (int k = 0; k <= 600; ++k) {
+        const double a = 2.0 * M_PI * turns * k / 600.0;
+        path.push_back({radius * std::cos(a), radius * std::sin(a), pitch * a});
+      }
+    }
+    std::vector<Vec3> cloud(1 + trial % 9);
+    for (Vec3& o : cloud) o = {u(rng), u(rng), u(rng)};
+    const double r_k = distance_to_cloud(path.front(), cloud) * (trial % 4 == 0 ? 1.0 : u01(rng));
+    const double r_k1 = distance_to_cloud(path.back(), cloud) * (trial % 4 == 1 ? 1.0 : u01(rng));
+    const double bound = length_of(path) * (1.0 + (trial % 3 == 0 ? 0.0 : u01(rng)));
+    const double g = motion_clearance(r_k, r_k1, bound);
+    if (g > 0.0) ++positive;
+    for (const Vec3& p : path) {
+      ASSERT_GE(distance_to_cloud(p, cloud), g - 1e-12 * (1.0 + bound)) << "trial " << trial;
+      ++checked;
+    }
+  }
+  EXPECT_GT(positive, 100);  // the bound says something in many cases
+  EXPECT_GT(checked, 100000);
+}
+
+// The bound is attained: a point that goes out 1 and comes back (length 2) towards an obstacle
+// point 2 away from its start keeps exactly 1, and g = max((2 + 2 - 2)/2, 2 - 2) = 1; the
+// one-sided branch: obstacle 3 beyond a straight move of 2, g = max((3 + 1 - 2)/2, 3 - 2) = 1.
+TEST(LemmaTwoBallCover, TheMotionClearanceIsAttainedByAStraightPass) {
+  std::vector<Vec3> out_and_back;
+  for (int k = 0; k <= 200; ++k) out_and_back.push_back({1.0 - std::abs(k - 100) / 100.0, 0.0, 0.0});
+  const std::vector<Vec3> obstacle{{2.0, 0.0, 0.0}};
+  double closest = std::numeric_limits<double>::infinity();
+  for (const Vec3& p : out_and_back) closest = std::min(closest, distance_to_cloud(p, obstacle));
+  EXPECT_DOUBLE_EQ(length_of(out_and_back), 2.0);
+  EXPECT_EQ(closest, 1.0);
+  EXPECT_EQ(motion_clearance(2.0, 2.0, 2.0), 1.0);
+
+  EXPECT_EQ(motion_clearance(3.0, 1.0, 2.0), 1.0);
+  EXPECT_EQ(distance_to_cloud({2.0, 0.0, 0.0}, {{3.0, 0.0, 0.0}}), 1.0);
 }
 
 }  // namespace

@@ -53,6 +53,7 @@ certify::VerificationResult rich_sample_result() {
       record.governing = link % 2 == 0 ? certify::GoverningTerm::kTolerance
                                        : certify::GoverningTerm::kClearance;
       record.clearance = step.interference_points.empty() ? 1.5 : 0.0;
+      if (link == 1) record.motion_clearance = 0.0625;  // others: none (null)
       step.links.push_back(record);
     }
     for (std::size_t i = 0; i < step.interference_points.size(); ++i) {
@@ -63,8 +64,8 @@ certify::VerificationResult rich_sample_result() {
       point.kind = "edge-of-link/face-of-obstacle";
     }
   }
-  result.link_clearances = {{1, 0.75, 12, 2},
-                            {2, std::numeric_limits<double>::infinity(), 0, -1}};
+  result.link_clearances = {{1, 0.75, 12, 2, 0.0625, 11},
+                            {2, std::numeric_limits<double>::infinity(), 0, -1, std::nullopt, 0}};
   return result;
 }
 
@@ -190,7 +191,8 @@ TEST(JsonReport, StepsCarryLinkRecordsAndInterferenceIds) {
   ASSERT_EQ(step41["links"].size(), 5u);
   EXPECT_EQ(step41["links"][3],
             json({{"link", 3}, {"motion_bound", 0.375}, {"allowance", 2.0},
-                  {"governing", "clearance"}, {"clearance", 0.0}}));
+                  {"governing", "clearance"}, {"clearance", 0.0}, {"motion_clearance", nullptr}}));
+  EXPECT_EQ(step41["links"][1]["motion_clearance"], 0.0625);
   ASSERT_EQ(step41["interference_points"].size(), 8u);
   EXPECT_EQ(step41["interference_points"][5],
             json({{"link", 4}, {"hull", 1}, {"obstacle", 2}, {"point", {-14.10, 2.85, 9.00}},
@@ -206,10 +208,12 @@ TEST(JsonReport, ErrorsAndClearances) {
                   {"message", "final position of segment 4 is out of the workspace"},
                   {"thesis_text", thesis_error_text(3, 4)}}));
   EXPECT_EQ(report["link_clearances"][0],
-            json({{"link", 1}, {"min_clearance", 0.75}, {"step", 12}, {"obstacle", 2}}));
-  // Nothing near link 2: infinite clearance and no obstacle, both null.
+            json({{"link", 1}, {"min_clearance", 0.75}, {"step", 12}, {"obstacle", 2},
+                  {"min_motion_clearance", 0.0625}, {"motion_step", 11}}));
+  // Nothing near link 2: infinite clearance and no obstacle, both null; no motion clearance.
   EXPECT_EQ(report["link_clearances"][1],
-            json({{"link", 2}, {"min_clearance", nullptr}, {"step", 0}, {"obstacle", nullptr}}));
+            json({{"link", 2}, {"min_clearance", nullptr}, {"step", 0}, {"obstacle", nullptr},
+                  {"min_motion_clearance", nullptr}, {"motion_step", nullptr}}));
 }
 
 TEST(JsonReport, NewErrorCodesHaveNoThesisText) {

@@ -79,6 +79,11 @@ struct LinkStepRecord {
   double clearance = 0.0;      ///< certified lower bound of dist(link, obstacles) at this step
                                ///< (unexpanded link, raw obstacles); 0 when interfering
   int nearest_obstacle = -1;   ///< the obstacle that governs `clearance` (-1: none nearby)
+  /// Certified mode: every point of the link stays farther than this from every obstacle
+  /// throughout the transition from the previous step (0 when nothing is proven). Absent in
+  /// thesis mode and at the start configuration.
+  /// proof: proofs/two-ball-cover.md#corollary-motion-clearance
+  std::optional<double> motion_clearance;
 };
 
 struct StepRecord {
@@ -120,6 +125,10 @@ struct LinkClearanceSummary {
   double min_clearance = 0.0;  ///< smallest certified clearance over all steps
   int step = 0;                ///< where it occurs
   int obstacle = -1;
+  /// Smallest motion_clearance over all transitions (certified mode, at least one transition):
+  /// the link stays farther than this from every obstacle along the whole motion.
+  std::optional<double> min_motion_clearance;
+  int motion_step = 0;  ///< the step that ends the transition where it occurs
 };
 
 struct VerificationResult {
