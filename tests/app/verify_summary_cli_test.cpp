@@ -15,16 +15,23 @@ namespace {
 
 const std::string kData = std::string(GRPVSS_SOURCE_DIR) + "/data/ibm7545/";
 
-TEST(VerifySummaryCli, TheSamplesEpisodesArePrintedBetweenTheFirstCollisionAndTheClearances) {
-  const std::string directory = grpvss::test::make_temporary_directory("verify-summary");
+// Runs `grpvss verify` on robot.txt with `environment_file` and `path`, tolerance 0.5; returns
+// its exit code and its standard output (with standard error) in `text`.
+int run_verify(const std::string& environment_file, const std::string& path,
+               const std::string& directory, std::string& text) {
   const std::string out = directory + "/stdout.txt";
   const int status = std::system((std::string(GRPVSS_CLI) + " verify --robot " + kData +
-                                  "robot.txt --env " + kData + "environment.txt --path " + kData +
-                                  "path.txt --tolerance 0.5 > " + out + " 2>&1")
+                                  "robot.txt --env " + kData + environment_file + " --path " +
+                                  path + " --tolerance 0.5 > " + out + " 2>&1")
                                      .c_str());
-  ASSERT_TRUE(WIFEXITED(status));
-  EXPECT_EQ(WEXITSTATUS(status), 1);
-  const std::string text = grpvss::test::read_text_file(out);
+  text = grpvss::test::read_text_file(out);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+TEST(VerifySummaryCli, TheSamplesEpisodesArePrintedBetweenTheFirstCollisionAndTheClearances) {
+  const std::string directory = grpvss::test::make_temporary_directory("verify-summary");
+  std::string text;
+  EXPECT_EQ(run_verify("environment.txt", kData + "path.txt", directory, text), 1);
   std::filesystem::remove_all(directory);
   const std::string expected =
       "first collision at step 4\n"
@@ -45,15 +52,8 @@ TEST(VerifySummaryCli, AClearRunStatesTheClearanceProvenAlongTheMotion) {
   const std::string directory = grpvss::test::make_temporary_directory("verify-summary");
   const std::string path = directory + "/ptp.txt";
   std::ofstream(path) << "1\n1\n50.,3.\n50.,3.\n4.,0.3\n50.,3.\n";
-  const std::string out = directory + "/stdout.txt";
-  const int status = std::system((std::string(GRPVSS_CLI) + " verify --robot " + kData +
-                                  "robot.txt --env " + kData +
-                                  "bench-environment-near-miss.txt --path " + path +
-                                  " --tolerance 0.5 > " + out + " 2>&1")
-                                     .c_str());
-  ASSERT_TRUE(WIFEXITED(status));
-  EXPECT_EQ(WEXITSTATUS(status), 0);
-  const std::string text = grpvss::test::read_text_file(out);
+  std::string text;
+  EXPECT_EQ(run_verify("bench-environment-near-miss.txt", path, directory, text), 0);
   std::filesystem::remove_all(directory);
   EXPECT_NE(text.find("link 4: smallest certified clearance 0.6907 at step 5 (obstacle 0); along "
                       "the motion > 0.0435 (steps 3-4)\n"),
