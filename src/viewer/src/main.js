@@ -247,7 +247,8 @@ function auditPanel() {
   const verdictClass = report.verdict === 'CLEAR' ? 'ok' : report.verdict === 'WITHIN_TOLERANCE' ? 'warn' : 'bad';
   const inputs = ['robot', 'environment', 'path'].map((k) => `<tr><th>${k}</th><td>${escapeHtml(report.inputs[k].file)}<br><code>${report.inputs[k].sha256}</code></td></tr>`).join('');
   const clearances = report.link_clearances.filter((c) => c.link > 0)
-    .map((c) => `<tr><th>link ${c.link}</th><td>${fmt(c.min_clearance, 4)} at step ${c.step}</td></tr>`).join('');
+    .map((c) => `<tr><th>link ${c.link}</th><td>${fmt(c.min_clearance, 4)} at step ${c.step}${c.min_motion_clearance === null
+      ? '' : `; along the motion &gt; ${fmt(c.min_motion_clearance, 4)} (steps ${c.motion_step - 1}–${c.motion_step})`}</td></tr>`).join('');
   const errors = report.errors.map((e) => `<li>error ${e.code} (segment ${e.segment}, step ${e.step}): ${escapeHtml(e.message)}</li>`).join('');
   // One row per interference episode; its button shows the first colliding step (else the first
   // interfering one).
