@@ -16,6 +16,7 @@
 #include "grpvss/motion/kinematics_adapter.hpp"
 #include "grpvss/motion/trajectory.hpp"
 #include "support/geometry_reference.hpp"
+#include "support/oracle_cases.hpp"
 #include "support/kinematics_reference.hpp"
 
 namespace grpvss::certify {
@@ -125,6 +126,58 @@ TEST(MotionClearance, TheVerifiersBoundsHoldAlongTheNearMissMotion) {
     const LinkClearanceSummary& quill = run.result.link_clearances.at(4);
     EXPECT_EQ(quill.min_motion_clearance, quill_bound);
   }
+}
+
+// The random PTP cells of the oracle (tests/support/oracle_cases.cpp: hulls sticking out of
+// the skeleton, obstacles near the path, several segments): every reported clearance along the
+// motion holds at 5 configurations of its transition, by exact distances (Release only: label
+// heavy, tests/ctest_properties.cmake).
+TEST(MotionClearance, TheVerifiersBoundsHoldOnTheOracleCells) {
+  int checked_exactly = 0, transitions = 0;
+  for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+    const test::OracleCase c = test::random_ptp_case(seed);
+    const motion::KinematicsAccess kinematics =
+        motion::make_kinematics_access(c.robot, motion::select_ik(c.ik, c.robot, "random"));
+    VerifyOptions options;
+    options.tolerance = c.tolerance;
+    options.max_probes = 20000;
+    const VerificationRun run = verify(c.robot, c.environment, c.program, kinematics, options);
+    const motion::Trajectory trajectory =
+        motion::Trajectory::plan(c.robot, c.program, kinematics, options.trajectory);
+    const StepRecord* previous = &*run.result.start;
+    for (const StepRecord& step : run.result.steps) {
+      const motion::SegmentTrajectory& segment = trajectory.segments().at(step.segment - 1);
+      ASSERT_TRUE(segment.ptp.has_value());
+      const double from = previous->segment == step.segment ? previous->segment_parameter : 0.0;
+      previous = &step;
+      ++transitions;
+      for (int link = 1; link <= c.robot.joint_count(); ++link) {
+        const double g = step.links[link].motion_clearance.value();
+        if (!(g > 0.0)) continue;
+        const double lower = std::max(0.0, g - 1e-9);
+        for (int k = 0; k <= 4; ++k) {
+          const double s = from + (step.segment_parameter - from) * k / 4.0;
+          const Eigen::Matrix4d X_WL =
+              test::reference_link_pose<double>(c.robot, segment.ptp->joints_at(s), link);
+          for (const HullPoints& hull : c.robot.links[link].hulls) {
+            testing::Points placed;
+            for (const auto& p : hull.points) placed.push_back((X_WL * p.homogeneous()).head<3>());
+            const auto [centre, radius] = bounding_ball(placed);
+            for (const HullPoints& obstacle : c.environment.obstacles) {
+              const auto [obstacle_centre, obstacle_radius] = bounding_ball(obstacle.points);
+              if ((centre - obstacle_centre).norm() - radius - obstacle_radius > lower + 1e-6) continue;
+              ASSERT_TRUE(testing::reference_distance_squared_at_least(placed, obstacle.points,
+                                                                       lower * lower))
+                  << "seed " << seed << " step " << step.index << " link " << link << " s " << s;
+              ++checked_exactly;
+            }
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GT(transitions, 50);
+  EXPECT_GT(checked_exactly, 100);  // near pairs, decided by the exact distance
 }
 
 }  // namespace
