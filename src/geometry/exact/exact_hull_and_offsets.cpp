@@ -282,39 +282,29 @@ ConvexPolytope ConvexPolytopeBuilder::build(const std::vector<Eigen::Vector3d>& 
 
 namespace {
 
-// Twin half-edges of a closed oriented mesh without sorting: the half-edges leaving each
-// vertex in compressed rows; the twin of u->v is the one half-edge v->u. Throws when an edge
-// has no twin or a direction is used twice (the mesh is not a closed 2-manifold).
+// Twin half-edges of a closed oriented mesh without sorting: the half-edge u->v filed under
+// (u, v) in a HalfEdgeTable (dense for the usual small hulls); the twin of u->v is the one
+// filed under (v, u). Throws when an edge has no twin or a direction is used twice (the mesh is
+// not a closed 2-manifold). This runs twice for every placed hull.
 class HalfEdgeTwins {
  public:
   HalfEdgeTwins(const std::vector<int>& tails, const std::vector<int>& heads,
                 std::size_t vertex_count, const char* open_message, const char* twice_message) {
-    first_.assign(vertex_count + 1, 0);
-    for (int u : tails) ++first_[static_cast<std::size_t>(u) + 1];
-    for (std::size_t v = 0; v < vertex_count; ++v) first_[v + 1] += first_[v];
-    outgoing_.resize(tails.size());
-    std::vector<int> cursor(first_.begin(), first_.end() - 1);
-    for (std::size_t h = 0; h < tails.size(); ++h) outgoing_[cursor[tails[h]]++] = static_cast<int>(h);
-    twin_.assign(tails.size(), -1);
+    HalfEdgeTable by_ends(vertex_count);
     for (std::size_t h = 0; h < tails.size(); ++h) {
-      const int u = tails[h];
-      const int v = heads[h];
-      for (int i = first_[u]; i < first_[u + 1]; ++i) {
-        const int g = outgoing_[i];
-        if (g != static_cast<int>(h) && heads[g] == v) throw std::logic_error(twice_message);
-      }
-      for (int i = first_[v]; i < first_[v + 1]; ++i) {
-        const int g = outgoing_[i];
-        if (heads[g] == u) twin_[h] = g;
-      }
+      const auto u = static_cast<std::size_t>(tails[h]), v = static_cast<std::size_t>(heads[h]);
+      if (by_ends.get(u, v) >= 0) throw std::logic_error(twice_message);
+      by_ends.set(u, v, static_cast<int>(h));
+    }
+    twin_.resize(tails.size());
+    for (std::size_t h = 0; h < tails.size(); ++h) {
+      twin_[h] = by_ends.get(static_cast<std::size_t>(heads[h]), static_cast<std::size_t>(tails[h]));
       if (twin_[h] < 0) throw std::logic_error(open_message);
     }
   }
   int twin(std::size_t half_edge) const { return twin_[half_edge]; }
 
  private:
-  std::vector<int> first_;     ///< [vertex]: start of its row in outgoing_
-  std::vector<int> outgoing_;  ///< half-edge ids grouped by tail
   std::vector<int> twin_;
 };
 
@@ -612,19 +602,16 @@ std::optional<ConvexPolytope> ConvexPolytopeBuilder::build_from_template(
   // triangle's closed cone: the radial projection has degree one.
   const Triangle& first = triangles.front();
   const Eigen::Vector3d target = (at(first[0]) + at(first[1]) + at(first[2])) / 3.0;
-  const auto cone_sides = [&](const Triangle& t, std::array<int, 3>& sides) {
-    for (int k = 0; k < 3; ++k) {
-      // Positive: target on the same side of plane(centre, t_k, t_k+1) as the third corner.
-      sides[k] = orientation_sign(centre, at(t[k]), at(t[(k + 1) % 3]), target) *
-                 orientation_sign(centre, at(t[k]), at(t[(k + 1) % 3]), at(t[(k + 2) % 3]));
-    }
+  // The third corner c of triangle (a, b, c) is always on the positive side of
+  // plane(centre, a, b): det[a-o, b-o, c-o] = -orient(a, b, c, o) > 0 by (H2), so the cone
+  // test needs only the target's sides (proofs/placed-hull.md#implementation).
+  const auto side = [&](const Triangle& t, int k) {
+    return orientation_sign(centre, at(t[k]), at(t[(k + 1) % 3]), target);
   };
-  std::array<int, 3> sides{};
-  cone_sides(first, sides);
-  if (sides[0] <= 0 || sides[1] <= 0 || sides[2] <= 0) return std::nullopt;
+  if (side(first, 0) <= 0 || side(first, 1) <= 0 || side(first, 2) <= 0) return std::nullopt;
   for (std::size_t t = 1; t < triangles.size(); ++t) {
-    cone_sides(triangles[t], sides);
-    if (sides[0] >= 0 && sides[1] >= 0 && sides[2] >= 0) return std::nullopt;
+    const Triangle& other = triangles[t];
+    if (side(other, 0) >= 0 && side(other, 1) >= 0 && side(other, 2) >= 0) return std::nullopt;
   }
   return finish(input, corner_input, triangles, &edge_signs);
 }
