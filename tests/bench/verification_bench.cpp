@@ -1,6 +1,7 @@
 // The thesis's Table 3 verification operations on the IBM 7545 (data/ibm7545/robot.txt) in
 // both step modes, with data/ibm7545/bench-environment.txt (one obstacle crossed by the PTP
-// motion, one away from every motion): docs/performance.md#verification-table-3.
+// motion, one away from every motion) and, for the CP line, also with
+// bench-environment-cp-line.txt (a post the line runs through): docs/performance.md#verification-table-3.
 //
 // - PTP operation: joint-space target from home, 50 deg on joints 1, 2, 4 at 3 deg/s and
 //   4 in. on the prismatic joint 3 at 0.3 in/s.
@@ -161,6 +162,23 @@ void BM_VerifyCpOperation(benchmark::State& state) {
   report(state, last);
 }
 BENCHMARK(BM_VerifyCpOperation)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
+
+// The same CP line with "one obstacle on the path" as Table 3 had it: a post at the line's
+// midpoint that the tool runs through (bench-environment-cp-line.txt). Arg 0: certified,
+// 1: thesis.
+void BM_VerifyCpOperationThroughAPost(benchmark::State& state) {
+  Operation op = cp_operation();
+  op.environment = grpvss::io::read_environment_file(kData + "bench-environment-cp-line.txt");
+  const grpvss::certify::RobotCell cell(op.robot, op.environment,
+                                        grpvss::certify::make_cell_options(options_for(mode_of(state))));
+  grpvss::certify::VerificationRun last;
+  for (auto _ : state) {
+    last = run(op, cell, mode_of(state));
+    benchmark::DoNotOptimize(last);
+  }
+  report(state, last);
+}
+BENCHMARK(BM_VerifyCpOperationThroughAPost)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 
 // The per-robot part of every operation: exact hulls, the tolerance offsets of the 11 link
 // hulls (built once per robot and tolerance), obstacle hulls, broadphase, FK error bound.
