@@ -19,6 +19,7 @@
 #include "grpvss/motion/kinematics_adapter.hpp"
 #include "grpvss/motion/profile_table.hpp"
 #include "grpvss/report/input_digests.hpp"
+#include "grpvss/report/lower_bound_text.hpp"
 #include "verify_arguments.hpp"
 
 namespace grpvss::app {
@@ -83,19 +84,33 @@ int run_check(const CheckArguments& args) {
   certify::CheckReport report = check->finish();
   for (const auto& failure : digest_failures) report.failures.insert(report.failures.begin(), failure);
   report.accepted = report.failures.empty();
+  if (!report.accepted) report.motion_clearances.clear();  // a rejected certificate proves nothing
   if (args.quiet) {
     // Nothing printed: the exit code tells.
   } else if (args.json) {
+    nlohmann::json clearances = nlohmann::json::array();
+    for (const auto& link : report.motion_clearances) {
+      clearances.push_back({{"link", link.link}, {"lower_bound", link.lower_bound}, {"step", link.step}});
+    }
     fmt::print("{}\n", nlohmann::json{{"accepted", report.accepted},
                                       {"claim", report.claim},
                                       {"inequalities_checked", report.inequalities_checked},
-                                      {"failures", report.failures}}
+                                      {"failures", report.failures},
+                                      {"motion_clearances", clearances}}
                            .dump(2));
   } else {
     fmt::print("{}: claim {} ({} inequalities decided exactly)\n",
                report.accepted ? "ACCEPTED" : "REJECTED", report.claim,
                report.inequalities_checked);
     for (const auto& failure : report.failures) fmt::print("  - {}\n", failure);
+    // What the accepted certificate proves beyond its claim (the base, link 0, never moves).
+    for (const auto& link : report.motion_clearances) {
+      if (link.link == 0) continue;
+      fmt::print("  link {}: stays farther than {} from every obstacle along the motion "
+                 "(smallest at steps {}-{})\n",
+                 link.link, report::format_lower_bound(link.lower_bound, 4), link.step - 1,
+                 link.step);
+    }
   }
   return report.accepted ? kExitOk : kExitFinding;
 }

@@ -124,6 +124,8 @@ class Checker {
   std::vector<Box> obstacle_boxes_;
   std::vector<Eigen::Vector3d> placed_;
   CheckReport report_;
+  /// Per link: the smallest exact g over the transitions so far, and the step ending it.
+  std::vector<std::optional<std::pair<Rational, int>>> motion_clearance_;
   bool all_transitions_certified_ = true;
   bool any_expanded_interference_ = false;
   bool any_raw_collision_ = false;
@@ -350,6 +352,12 @@ void Checker::check_transition(const StepCertificate& from, const StepCertificat
       }
       certified = false;
     }
+    // proof: proofs/two-ball-cover.md#corollary-motion-clearance
+    const Rational balanced = (allowance - bound) / 2;
+    const Rational one_sided = std::max(radius_from[i], radius_to[i]) - bound;
+    const Rational kept = std::max(Rational(0), std::max(balanced, one_sided));
+    auto& smallest = motion_clearance_[static_cast<std::size_t>(hull.link)];
+    if (!smallest || kept < smallest->first) smallest = std::make_pair(kept, to.step);
   }
   if (!certified) all_transitions_certified_ = false;
 }
@@ -443,6 +451,7 @@ void Checker::check_claim() {
 
 void Checker::start() {
   report_.claim = certificate_.claim;
+  motion_clearance_.assign(robot_.links.size(), std::nullopt);
   if (!check_header() || !build_hulls()) {
     stopped_ = concluded_ = true;
     return;
@@ -482,6 +491,15 @@ CheckReport Checker::finish() {
   }
   check_claim();
   report_.accepted = report_.failures.empty();
+  if (report_.accepted) {
+    for (std::size_t link = 0; link < motion_clearance_.size(); ++link) {
+      if (!motion_clearance_[link]) continue;
+      // mpq_get_d truncates towards zero: rounds this non-negative value down.
+      report_.motion_clearances.push_back({static_cast<int>(link),
+                                           motion_clearance_[link]->first.get_d(),
+                                           motion_clearance_[link]->second});
+    }
+  }
   return report_;
 }
 

@@ -15,14 +15,14 @@ namespace {
 
 const std::string kData = std::string(GRPVSS_SOURCE_DIR) + "/data/ibm7545/";
 
-// Runs `grpvss verify` on robot.txt with `environment_file` and `path`, tolerance 0.5; returns
-// its exit code and its standard output (with standard error) in `text`.
+// Runs `grpvss verify` on robot.txt with `environment_file` and `path`, tolerance 0.5, and
+// `extra` options; returns its exit code and its standard output (with standard error) in `text`.
 int run_verify(const std::string& environment_file, const std::string& path,
-               const std::string& directory, std::string& text) {
+               const std::string& directory, std::string& text, const std::string& extra = "") {
   const std::string out = directory + "/stdout.txt";
   const int status = std::system((std::string(GRPVSS_CLI) + " verify --robot " + kData +
                                   "robot.txt --env " + kData + environment_file + " --path " +
-                                  path + " --tolerance 0.5 > " + out + " 2>&1")
+                                  path + " --tolerance 0.5 " + extra + " > " + out + " 2>&1")
                                      .c_str());
   text = grpvss::test::read_text_file(out);
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -48,14 +48,30 @@ TEST(VerifySummaryCli, TheSamplesEpisodesArePrintedBetweenTheFirstCollisionAndTh
 // The Table 3 PTP with the post 0.62 in. below the quill: CLEAR, and the summary says how far
 // from the obstacles the links are proven to stay along the motion — for the quill less than
 // the tolerance, which the note spells out.
+// `grpvss check-certificate` derives the same clearances along the motion from the certificate
+// on its own and prints them after ACCEPTED.
 TEST(VerifySummaryCli, AClearRunStatesTheClearanceProvenAlongTheMotion) {
   const std::string directory = grpvss::test::make_temporary_directory("verify-summary");
   const std::string path = directory + "/ptp.txt";
   std::ofstream(path) << "1\n1\n50.,3.\n50.,3.\n4.,0.3\n50.,3.\n";
   std::string text;
-  EXPECT_EQ(run_verify("bench-environment-near-miss.txt", path, directory, text), 0);
+  EXPECT_EQ(run_verify("bench-environment-near-miss.txt", path, directory, text,
+                       "--certificate " + directory + "/c.json"),
+            0);
+  const std::string checked = directory + "/checked.txt";
+  const std::string inputs = " --robot " + kData + "robot.txt --env " + kData +
+                             "bench-environment-near-miss.txt --path " + path + " ";
+  EXPECT_EQ(std::system((std::string(GRPVSS_CLI) + " check-certificate" + inputs + directory +
+                         "/c.json > " + checked + " 2>&1")
+                            .c_str()),
+            0);
+  const std::string check_text = grpvss::test::read_text_file(checked);
   std::filesystem::remove_all(directory);
-  EXPECT_NE(text.find("link 4: smallest certified clearance 0.6907 at step 5 (obstacle 0); along "
+  EXPECT_NE(check_text.find("\n  link 4: stays farther than 0.0435 from every obstacle along the "
+                            "motion (smallest at steps 3-4)\n"),
+            std::string::npos)
+      << check_text;
+  EXPECT_NE(text.find("link 4: smallest certified clearance 0.6906 at step 5 (obstacle 0); along "
                       "the motion > 0.0435 (steps 3-4)\n"),
             std::string::npos)
       << text;

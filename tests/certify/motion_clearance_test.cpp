@@ -9,6 +9,7 @@
 #include <boost/multiprecision/cpp_int.hpp>
 #include <gtest/gtest.h>
 
+#include "grpvss/certify/certificate_checker.hpp"
 #include "grpvss/certify/verifier.hpp"
 #include "grpvss/io/environment_file.hpp"
 #include "grpvss/io/path_file.hpp"
@@ -126,6 +127,42 @@ TEST(MotionClearance, TheVerifiersBoundsHoldAlongTheNearMissMotion) {
     const LinkClearanceSummary& quill = run.result.link_clearances.at(4);
     EXPECT_EQ(quill.min_motion_clearance, quill_bound);
   }
+}
+
+// The checker derives the same clearances along the motion on its own (exact radii, exact
+// motion bounds): never below the verifier's, which use the recorded, rounded-up bounds, and
+// equal to them up to that rounding. A certificate with one radius inflated is rejected and
+// proves no clearance.
+TEST(MotionClearance, TheCheckerDerivesTheVerifiersClearancesExactly) {
+  const RobotModel robot = io::read_robot_file(data("robot.txt"));
+  const Environment environment = io::read_environment_file(data("bench-environment-near-miss.txt"));
+  const PathProgram program =
+      io::parse_path_file("1\n1\n50.,3.\n50.,3.\n4.,0.3\n50.,3.\n", "ptp.txt", robot);
+  const motion::KinematicsAccess kinematics =
+      motion::make_kinematics_access(robot, motion::select_ik("auto", robot, "robot.txt"));
+  VerifyOptions options;
+  options.tolerance = 0.5;
+  const VerificationRun run = verify(robot, environment, program, kinematics, options);
+  ASSERT_EQ(run.result.verdict, Verdict::kClear);
+  const CheckReport report = check_certificate(robot, environment, program, kinematics, run.certificate);
+  ASSERT_TRUE(report.accepted);
+  ASSERT_EQ(report.motion_clearances.size(), robot.links.size());
+  for (const CheckedMotionClearance& checked : report.motion_clearances) {
+    const LinkClearanceSummary& reported = run.result.link_clearances.at(checked.link);
+    ASSERT_TRUE(reported.min_motion_clearance.has_value()) << "link " << checked.link;
+    EXPECT_GE(checked.lower_bound, *reported.min_motion_clearance) << "link " << checked.link;
+    EXPECT_LE(checked.lower_bound, *reported.min_motion_clearance + 1e-9) << "link " << checked.link;
+  }
+  EXPECT_GT(report.motion_clearances.at(4).lower_bound, 0.0435);  // the quill, 0.62 in. above
+  EXPECT_LT(report.motion_clearances.at(4).lower_bound, 0.0436);
+
+  Certificate tampered = run.certificate;
+  HullRecord& quill = tampered.segments.at(0).steps.at(3).hulls.back();
+  ASSERT_EQ(quill.link, 4);
+  quill.radius += 0.25;
+  const CheckReport rejected = check_certificate(robot, environment, program, kinematics, tampered);
+  EXPECT_FALSE(rejected.accepted);
+  EXPECT_TRUE(rejected.motion_clearances.empty());
 }
 
 // The random PTP cells of the oracle (tests/support/oracle_cases.cpp: hulls sticking out of

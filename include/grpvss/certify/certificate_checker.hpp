@@ -19,11 +19,25 @@
 
 namespace grpvss::certify {
 
+/// \brief How far a link provably stays from every obstacle along the whole motion, as the
+/// checker derives it: the exact minimum, over every transition of the certificate and every
+/// hull of the link, of g = max((r_k + r_k+1 - M)/2, max(r_k, r_k+1) - M) with the verified
+/// radii and the exact motion bound M, rounded down (0 where it proves nothing).
+/// proof: proofs/two-ball-cover.md#corollary-motion-clearance
+struct CheckedMotionClearance {
+  int link = 0;
+  double lower_bound = 0.0;
+  int step = 0;  ///< the step that ends the transition where the minimum occurs
+};
+
 struct CheckReport {
   bool accepted = false;
   std::string claim;                  ///< the verdict the certificate claims
   std::vector<std::string> failures;  ///< every rejected inequality, with step and hull
   long long inequalities_checked = 0;
+  /// Per link with at least one transition, in link order; empty unless accepted (a rejected
+  /// certificate proves no clearance).
+  std::vector<CheckedMotionClearance> motion_clearances;
 };
 
 struct CheckOptions {

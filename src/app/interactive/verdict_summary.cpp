@@ -4,6 +4,8 @@
 
 #include <fmt/core.h>
 
+#include "grpvss/report/lower_bound_text.hpp"
+
 namespace grpvss::app {
 namespace {
 
@@ -64,11 +66,12 @@ std::string verdict_summary(const certify::VerificationResult& result) {
   const certify::LinkClearanceSummary* closest = nullptr;  // smallest motion clearance
   for (const certify::LinkClearanceSummary& link : result.link_clearances) {
     if (link.link == 0) continue;
-    text += fmt::format("link {}: smallest certified clearance {:.4f} at step {}{}", link.link,
-                        link.min_clearance, link.step,
+    text += fmt::format("link {}: smallest certified clearance {} at step {}{}", link.link,
+                        report::format_lower_bound(link.min_clearance, 4), link.step,
                         link.obstacle >= 0 ? fmt::format(" (obstacle {})", link.obstacle) : "");
     if (link.min_motion_clearance) {
-      text += fmt::format("; along the motion > {:.4f} (steps {}-{})", *link.min_motion_clearance,
+      text += fmt::format("; along the motion > {} (steps {}-{})",
+                          report::format_lower_bound(*link.min_motion_clearance, 4),
                           link.motion_step - 1, link.motion_step);
       if (closest == nullptr || *link.min_motion_clearance < *closest->min_motion_clearance) {
         closest = &link;
@@ -79,15 +82,16 @@ std::string verdict_summary(const certify::VerificationResult& result) {
   // proof: proofs/two-ball-cover.md#corollary-motion-clearance
   if (result.verdict == certify::Verdict::kClear && closest != nullptr) {
     if (*closest->min_motion_clearance >= result.tolerance) {
-      text += fmt::format("along the whole motion every link stays farther than {:.4f} (>= the "
+      text += fmt::format("along the whole motion every link stays farther than {} (>= the "
                           "tolerance) from every obstacle\n",
-                          *closest->min_motion_clearance);
+                          report::format_lower_bound(*closest->min_motion_clearance, 4));
     } else {
       text += fmt::format(
-          "note: along the motion link {} is only proven to stay farther than {:.4f} (steps "
+          "note: along the motion link {} is only proven to stay farther than {} (steps "
           "{}-{}), less than the tolerance {}: the nominal path is clear, a robot deviating from "
           "it by the tolerance is not proven clear\n",
-          closest->link, *closest->min_motion_clearance, closest->motion_step - 1,
+          closest->link, report::format_lower_bound(*closest->min_motion_clearance, 4),
+          closest->motion_step - 1,
           closest->motion_step, result.tolerance);
     }
   }

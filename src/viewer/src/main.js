@@ -14,6 +14,14 @@ const scene = report.scene;
 function fmt(value, digits = 3) {
   return value === null || value === undefined ? '—' : Number(value).toFixed(digits);
 }
+// A proven lower bound with `digits` decimals, rounded down (toFixed rounds to nearest and
+// could print 0.6907 for 0.69065..., a clearance nobody proved).
+function fmtLowerBound(value, digits = 4) {
+  if (value === null || value === undefined) return '—';
+  let text = Number(value).toFixed(digits);
+  if (Number(text) > value) text = (Number(text) - 10 ** -digits).toFixed(digits);
+  return text;
+}
 function escapeHtml(text) {
   return String(text).replace(/[&<>"]/g, (c) => ({ '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;' }[c]));
 }
@@ -178,7 +186,7 @@ function showStep(index) {
       <tr><th>approach (z)</th><td>${orientation.approach.map((v) => fmt(v, 3)).join(', ')}</td></tr>
     </table>
     <h3>Link clearance</h3>
-    <table>${step.links.filter((l) => l.link > 0).map((l) => `<tr><th><span class="swatch" style="background:${LINK_COLORS[l.link % LINK_COLORS.length]}"></span>link ${l.link}</th><td>${fmt(l.clearance, 4)}</td></tr>`).join('')}</table>`;
+    <table>${step.links.filter((l) => l.link > 0).map((l) => `<tr><th><span class="swatch" style="background:${LINK_COLORS[l.link % LINK_COLORS.length]}"></span>link ${l.link}</th><td>${fmtLowerBound(l.clearance, 4)}</td></tr>`).join('')}</table>`;
   $('timeline-range').value = String(state.step);
   redraw2d();
   render();
@@ -247,8 +255,8 @@ function auditPanel() {
   const verdictClass = report.verdict === 'CLEAR' ? 'ok' : report.verdict === 'WITHIN_TOLERANCE' ? 'warn' : 'bad';
   const inputs = ['robot', 'environment', 'path'].map((k) => `<tr><th>${k}</th><td>${escapeHtml(report.inputs[k].file)}<br><code>${report.inputs[k].sha256}</code></td></tr>`).join('');
   const clearances = report.link_clearances.filter((c) => c.link > 0)
-    .map((c) => `<tr><th>link ${c.link}</th><td>${fmt(c.min_clearance, 4)} at step ${c.step}${c.min_motion_clearance === null
-      ? '' : `; along the motion &gt; ${fmt(c.min_motion_clearance, 4)} (steps ${c.motion_step - 1}–${c.motion_step})`}</td></tr>`).join('');
+    .map((c) => `<tr><th>link ${c.link}</th><td>${fmtLowerBound(c.min_clearance, 4)} at step ${c.step}${c.min_motion_clearance === null
+      ? '' : `; along the motion &gt; ${fmtLowerBound(c.min_motion_clearance, 4)} (steps ${c.motion_step - 1}–${c.motion_step})`}</td></tr>`).join('');
   const errors = report.errors.map((e) => `<li>error ${e.code} (segment ${e.segment}, step ${e.step}): ${escapeHtml(e.message)}</li>`).join('');
   // One row per interference episode; its button shows the first colliding step (else the first
   // interfering one).

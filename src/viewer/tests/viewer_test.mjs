@@ -62,6 +62,14 @@ try {
   const digestsShown = await page.locator('#audit-panel').innerText();
   check(['robot', 'environment', 'path'].every((k) => digestsShown.includes(report.inputs[k].sha256)),
     'audit panel shows the three input SHA-256 digests');
+  // Clearances are proven lower bounds: shown rounded down, never above the report's number.
+  const auditText = await page.locator('#audit-panel').innerText();
+  for (const c of report.link_clearances.filter((l) => l.link > 0)) {
+    const match = auditText.match(new RegExp(`link ${c.link}\\s+(-?[0-9.]+) at step`));
+    const shown = match ? Number(match[1]) : NaN;
+    check(shown <= c.min_clearance && c.min_clearance - shown < 1e-4,
+      `link ${c.link} clearance shown ${match ? match[1] : '(missing)'} rounds ${c.min_clearance} down`);
+  }
   await page.screenshot({ path: join(artifactDir, 'viewer-start.png') });
 
   // The audit panel lists the report's interference episodes; a row's button shows its first
