@@ -519,6 +519,15 @@ bool PathVerifier::march_segment(const SegmentPath& path, int segment_number) {
       // Accepted: the next proposal grows with the slack this step left.
       previous_slack_ = transition_slack(transition);
       step = taken * std::clamp(0.9 * previous_slack_, 1.0, 4.0);
+      if (trial_.any_expanded_interference) {
+        // Refining next to a contact, the proven steps shrink geometrically towards the
+        // contact time (Zeno: each allowance is the raw clearance left). The next trial aims
+        // at the basic resolution instead (at most 4x this step): one past the contact finds
+        // the COLLISION at once; one that is not proven is cut back below as before.
+        step = std::max(step, taken * std::clamp(0.95 * basic_resolution_slack(
+                                                              transition, 2.0 * options_.tolerance),
+                                                 1.0, 4.0));
+      }
     } else {
       // Nothing to certify next to a collision, and near a first contact the proven steps
       // shrink geometrically towards the contact time without ever passing it (Zeno). In

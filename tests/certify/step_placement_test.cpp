@@ -1,0 +1,56 @@
+// Where the certified march puts its steps next to a contact: the proposals aim the trials
+// (src/certify/step_proposal.cpp, PathVerifier::march_segment); the step rule decides. These
+// tests pin the report's shape, not soundness (the oracle tests do that).
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "grpvss/certify/verifier.hpp"
+#include "grpvss/io/environment_file.hpp"
+#include "grpvss/io/path_file.hpp"
+#include "grpvss/io/robot_file.hpp"
+#include "grpvss/motion/kinematics_adapter.hpp"
+
+namespace grpvss::certify {
+namespace {
+
+std::string data(const std::string& name) {
+  return std::string(GRPVSS_SOURCE_DIR) + "/data/ibm7545/" + name;
+}
+
+// The Table 3 CP line run into a post (bench-environment-cp-line.txt), after a PTP(WCS)
+// approach to its start. Approaching the contact, every proven step is allowed only the raw
+// clearance left, so proven steps shrank geometrically towards the contact time: 20 steps
+// with the quill moving less than 0.2 Delta each, crowded before the first collision. The
+// trial after a refining step now aims at the basic resolution, and one past the contact
+// finds the COLLISION.
+TEST(StepPlacement, TheApproachToAContactDoesNotCreep) {
+  const RobotModel robot = io::read_robot_file(data("robot.txt"));
+  const Environment environment = io::read_environment_file(data("bench-environment-cp-line.txt"));
+  const PathProgram program = io::parse_path_file(
+      "2\n2\n0.,20.,8.,0.,0.,1.,141.\n3.\n3.\n0.3\n3.\n3\n-20.,-5.,2.,0.,0.,1.,0.\n", "cp.txt",
+      robot);
+  const motion::KinematicsAccess kinematics =
+      motion::make_kinematics_access(robot, motion::select_ik("auto", robot, "robot.txt"));
+  VerifyOptions options;
+  options.tolerance = 0.5;
+  const VerificationRun run = verify(robot, environment, program, kinematics, options);
+  ASSERT_EQ(run.result.verdict, Verdict::kCollision);
+  int creeping = 0, cp_steps = 0;
+  for (const StepRecord& step : run.result.steps) {
+    if (step.segment != 2) continue;
+    ++cp_steps;
+    const LinkStepRecord& quill = step.links.at(4);
+    if (quill.motion_bound < 0.2 * options.tolerance) ++creeping;
+  }
+  EXPECT_EQ(creeping, 0);
+  EXPECT_EQ(cp_steps, 27);  // 51 before
+  // The collision is found by the step that passes the contact.
+  ASSERT_TRUE(run.result.collision_step.has_value());
+  const StepRecord& first = run.result.steps.at(static_cast<std::size_t>(*run.result.collision_step - 1));
+  EXPECT_EQ(first.index, *run.result.collision_step);
+  EXPECT_GT(first.links.at(4).motion_bound, first.links.at(4).allowance);  // not proven: a basic step
+}
+
+}  // namespace
+}  // namespace grpvss::certify
