@@ -122,6 +122,9 @@ class PathVerifier {
                                     bool cut_by_segment_end) const;
   bool cp_model_holds(const SegmentPath& path, double s0, const Eigen::VectorXd& q0, double s1,
                       const Eigen::VectorXd& q1);
+  /// The longest step from s (to `resolution`) over which cp_model_holds, found by bisection
+  /// below s_failing (where it fails); from current_.q. Proposals only: the march decides.
+  double cp_model_reach(const SegmentPath& path, double s, double s_failing, double resolution);
   bool near_singularity(const Eigen::VectorXd& q);
   double thesis_next_parameter(const SegmentPath& path, double s, const Eigen::VectorXd& q,
                                double previous_step);
@@ -339,6 +342,19 @@ bool PathVerifier::near_singularity(const Eigen::VectorXd& q) {
 // The CP model (proofs/cp-joint-path.md#model): the joints move linearly between the two
 // samples; the end effector of that motion must stay near the commanded line. A step that
 // fails is subdivided by the caller; a jump that survives subdivision is error 7.
+double PathVerifier::cp_model_reach(const SegmentPath& path, double s, double s_failing,
+                                    double resolution) {
+  // Invariant: the model holds from s to s + low (trivially at 0) and fails to s_failing.
+  double low = 0.0;
+  double high = s_failing - s;
+  while (high - low > resolution) {
+    const double middle = 0.5 * (low + high);
+    const std::optional<Eigen::VectorXd> q = path.q_at(s + middle, current_.q);
+    (q && cp_model_holds(path, s, current_.q, s + middle, *q) ? low : high) = middle;
+  }
+  return low;
+}
+
 bool PathVerifier::cp_model_holds(const SegmentPath& path, double s0, const Eigen::VectorXd& q0,
                                   double s1, const Eigen::VectorXd& q1) {
   // Position: the tolerance (times a fraction). Orientation: the angle that moves the farthest
@@ -455,6 +471,7 @@ bool PathVerifier::march_segment(const SegmentPath& path, int segment_number) {
   double step = end;
   previous_slack_ = 0.0;
   bool retrying = false;  ///< the proposal is a shrunk retry of a rejected one
+  double cp_accepted_step = 0.0;  ///< the last accepted step of this CP segment (0: none yet)
   while (s < end) {
     if (probes_ >= options_.max_probes) {
       add_error(kErrorProbeLimit, segment_number,
@@ -489,7 +506,14 @@ bool PathVerifier::march_segment(const SegmentPath& path, int segment_number) {
       if (!cp_model_holds(path, s, current_.q, s1, *q1)) {
         if (proposed > min_step) {
           step = (s1 - s) / 2.0;
-          continue;
+          // A step far shorter than the last one this segment accepted failing too points at
+          // a joint jump ahead: halving and growing again would crowd the report with proven
+          // steps creeping up to it. Locate it (IK and FK only, no probe) and aim just before.
+          if (cp_accepted_step > 0.0 && s1 - s < 0.25 * cp_accepted_step) {
+            step = cp_model_reach(path, s, s1, min_step);
+            if (!(step > min_step)) step = 0.0;  // fails at any step: the jump is here
+          }
+          if (step > 0.0) continue;
         }
         add_error(kErrorCpJointJump, segment_number,
                   "THE JOINTS JUMP (IK BRANCH CHANGE) BETWEEN TWO CLOSE POINTS OF THE CP LINE IN "
@@ -568,6 +592,7 @@ bool PathVerifier::march_segment(const SegmentPath& path, int segment_number) {
     previous_radii_.clear();
     for (const HullState& hull : current_.hulls) previous_radii_.push_back(hull.radius);
     previous_step_ = taken;
+    if (path.is_cp()) cp_accepted_step = taken;
     std::swap(current_, trial_);
     s = s1;
     if (options_.progress) {

@@ -41,7 +41,7 @@ TEST(VerifySummaryCli, TheSamplesEpisodesArePrintedBetweenTheFirstCollisionAndTh
       "collides at steps 5-14\n"
       "interference: link 4 hull 0 / obstacle 0, steps 4-5 (9.303-9.715 s), expanded hull "
       "only\n"
-      "error 7 (segment 3, step 43)";
+      "error 7 (segment 3, step 28)";
   EXPECT_NE(text.find(expected), std::string::npos) << text;
 }
 

@@ -52,5 +52,36 @@ TEST(StepPlacement, TheApproachToAContactDoesNotCreep) {
   EXPECT_GT(first.links.at(4).motion_bound, first.links.at(4).allowance);  // not proven: a basic step
 }
 
+// The sample path's CP line (A.1.3) turns joint 4 past its limit: the IK nearest the last
+// step jumps branch (error 7). Each trial across the jump failed the CP joint-path model and was
+// halved, the accepted half grew again and failed again: 15 proven steps crept up to the jump
+// (all at s = 8.828) before the error. A failing step far shorter than the last accepted one
+// now has the jump located by bisection on the model (IK and FK only), and the next trial
+// lands just before it.
+TEST(StepPlacement, AJointJumpAheadIsLocatedWithoutCreepingUpToIt) {
+  const RobotModel robot = io::read_robot_file(data("robot.txt"));
+  const Environment environment = io::read_environment_file(data("environment.txt"));
+  const PathProgram program = io::read_path_file(data("path.txt"), robot);
+  const motion::KinematicsAccess kinematics =
+      motion::make_kinematics_access(robot, motion::select_ik("auto", robot, "robot.txt"));
+  VerifyOptions options;
+  options.tolerance = 0.5;
+  const VerificationRun run = verify(robot, environment, program, kinematics, options);
+  ASSERT_EQ(run.result.errors.size(), 1u);
+  const PathError& error = run.result.errors.front();
+  EXPECT_EQ(error.code, 7);
+  EXPECT_EQ(error.segment, 3);
+  ASSERT_FALSE(run.result.steps.empty());
+  const StepRecord& last = run.result.steps.back();
+  EXPECT_EQ(error.step, last.index);
+  EXPECT_EQ(last.index, 28);  // 43 before
+  EXPECT_NEAR(last.segment_parameter, 8.8283, 1e-4);  // where joint 4 reaches its limit
+  int creeping = 0;
+  for (const StepRecord& step : run.result.steps) {
+    if (step.segment == 3 && step.links.at(4).motion_bound < 0.2 * options.tolerance) ++creeping;
+  }
+  EXPECT_EQ(creeping, 0);
+}
+
 }  // namespace
 }  // namespace grpvss::certify
