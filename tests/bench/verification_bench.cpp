@@ -114,52 +114,40 @@ ResolutionMode mode_of(const benchmark::State& state) {
   return state.range(0) == 0 ? ResolutionMode::kCertified : ResolutionMode::kThesis;
 }
 
+// The timed loop of every operation benchmark: the cell once, then verify() per iteration.
+void measure(benchmark::State& state, const Operation& op, ResolutionMode mode) {
+  const grpvss::certify::RobotCell cell(op.robot, op.environment,
+                                        grpvss::certify::make_cell_options(options_for(mode)));
+  grpvss::certify::VerificationRun last;
+  for (auto _ : state) {
+    last = run(op, cell, mode);
+    benchmark::DoNotOptimize(last);
+  }
+  report(state, last);
+}
+
 // The same PTP operation with the post lowered below the tool's path instead of crossing it:
 // Arg 0: top at z = 6.8 (bench-environment-near-miss.txt; the quill passes 0.62 in. above it,
 // just outside the 0.5 in. tolerance: CLEAR), Arg 1: top at z = 7 (within-tolerance.txt;
-// 0.45 in.: the expanded quill interferes, refinement proves the real one clear:
-// WITHIN_TOLERANCE). Certified mode.
+// 0.45 in., inside the tolerance, yet CLEAR: no step lands where the expanded quill meets the
+// post, docs/performance.md#verification-table-3). Certified mode.
 void BM_VerifyPtpOperationPostBelowThePath(benchmark::State& state) {
   static const std::string files[] = {"bench-environment-near-miss.txt",
                                       "bench-environment-within-tolerance.txt"};
   Operation op = ptp_operation();
   op.environment = grpvss::io::read_environment_file(kData + files[state.range(0)]);
-  const grpvss::certify::RobotCell cell(
-      op.robot, op.environment,
-      grpvss::certify::make_cell_options(options_for(ResolutionMode::kCertified)));
-  grpvss::certify::VerificationRun last;
-  for (auto _ : state) {
-    last = run(op, cell, ResolutionMode::kCertified);
-    benchmark::DoNotOptimize(last);
-  }
-  report(state, last);
+  measure(state, op, ResolutionMode::kCertified);
 }
 BENCHMARK(BM_VerifyPtpOperationPostBelowThePath)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 
 // Arg 0: certified, 1: thesis.
 void BM_VerifyPtpOperation(benchmark::State& state) {
-  const Operation& op = ptp_operation();
-  const grpvss::certify::RobotCell cell(op.robot, op.environment,
-                                        grpvss::certify::make_cell_options(options_for(mode_of(state))));
-  grpvss::certify::VerificationRun last;
-  for (auto _ : state) {
-    last = run(op, cell, mode_of(state));
-    benchmark::DoNotOptimize(last);
-  }
-  report(state, last);
+  measure(state, ptp_operation(), mode_of(state));
 }
 BENCHMARK(BM_VerifyPtpOperation)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 
 void BM_VerifyCpOperation(benchmark::State& state) {
-  const Operation& op = cp_operation();
-  const grpvss::certify::RobotCell cell(op.robot, op.environment,
-                                        grpvss::certify::make_cell_options(options_for(mode_of(state))));
-  grpvss::certify::VerificationRun last;
-  for (auto _ : state) {
-    last = run(op, cell, mode_of(state));
-    benchmark::DoNotOptimize(last);
-  }
-  report(state, last);
+  measure(state, cp_operation(), mode_of(state));
 }
 BENCHMARK(BM_VerifyCpOperation)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 
@@ -169,14 +157,7 @@ BENCHMARK(BM_VerifyCpOperation)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 void BM_VerifyCpOperationThroughAPost(benchmark::State& state) {
   Operation op = cp_operation();
   op.environment = grpvss::io::read_environment_file(kData + "bench-environment-cp-line.txt");
-  const grpvss::certify::RobotCell cell(op.robot, op.environment,
-                                        grpvss::certify::make_cell_options(options_for(mode_of(state))));
-  grpvss::certify::VerificationRun last;
-  for (auto _ : state) {
-    last = run(op, cell, mode_of(state));
-    benchmark::DoNotOptimize(last);
-  }
-  report(state, last);
+  measure(state, op, mode_of(state));
 }
 BENCHMARK(BM_VerifyCpOperationThroughAPost)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 
