@@ -339,9 +339,6 @@ bool PathVerifier::near_singularity(const Eigen::VectorXd& q) {
   return svd.singularValues().minCoeff() < options_.cp_singular_value_threshold;
 }
 
-// The CP model (proofs/cp-joint-path.md#model): the joints move linearly between the two
-// samples; the end effector of that motion must stay near the commanded line. A step that
-// fails is subdivided by the caller; a jump that survives subdivision is error 7.
 double PathVerifier::cp_model_reach(const SegmentPath& path, double s, double s_failing,
                                     double resolution) {
   // Invariant: the model holds from s to s + low (trivially at 0) and fails to s_failing.
@@ -355,6 +352,9 @@ double PathVerifier::cp_model_reach(const SegmentPath& path, double s, double s_
   return low;
 }
 
+// The CP model (proofs/cp-joint-path.md#model): the joints move linearly between the two
+// samples; the end effector of that motion must stay near the commanded line. A step that
+// fails is subdivided by the caller; a jump that survives subdivision is error 7.
 bool PathVerifier::cp_model_holds(const SegmentPath& path, double s0, const Eigen::VectorXd& q0,
                                   double s1, const Eigen::VectorXd& q1) {
   // Position: the tolerance (times a fraction). Orientation: the angle that moves the farthest
