@@ -11,12 +11,10 @@
 
 #include "grpvss/certify/certificate_checker.hpp"
 #include "grpvss/certify/verifier.hpp"
-#include "grpvss/io/environment_file.hpp"
-#include "grpvss/io/path_file.hpp"
-#include "grpvss/io/robot_file.hpp"
 #include "grpvss/motion/kinematics_adapter.hpp"
 #include "grpvss/motion/trajectory.hpp"
 #include "support/geometry_reference.hpp"
+#include "support/ibm7545_run.hpp"
 #include "support/oracle_cases.hpp"
 #include "support/kinematics_reference.hpp"
 
@@ -63,29 +61,20 @@ TEST(MotionClearance, RoundedDownAndTight) {
   }
 }
 
-std::string data(const std::string& name) {
-  return std::string(GRPVSS_SOURCE_DIR) + "/data/ibm7545/" + name;
-}
-
 // The Table 3 PTP with the post below the quill's path: for every transition and link, the
 // distance of the link's hulls to every obstacle at 24 configurations of the motion (bounding
 // balls where they settle it, else exact) is at least the reported motion clearance (less
 // 1e-9 for the test's own float placement, test reference kinematics).
 TEST(MotionClearance, TheVerifiersBoundsHoldAlongTheNearMissMotion) {
-  const RobotModel robot = io::read_robot_file(data("robot.txt"));
   for (const char* environment_file :
        {"bench-environment-near-miss.txt", "bench-environment-within-tolerance.txt"}) {
-    const Environment environment = io::read_environment_file(data(environment_file));
-    const PathProgram program = io::parse_path_file("1\n1\n50.,3.\n50.,3.\n4.,0.3\n50.,3.\n",
-                                                    "ptp.txt", robot);
-    const motion::KinematicsAccess kinematics =
-        motion::make_kinematics_access(robot, motion::select_ik("auto", robot, "robot.txt"));
-    VerifyOptions options;
-    options.tolerance = 0.5;
-    const VerificationRun run = verify(robot, environment, program, kinematics, options);
+    const test::Ibm7545Run cell = test::verify_ibm7545(environment_file, test::kTable3PtpPath);
+    const RobotModel& robot = cell.robot;
+    const Environment& environment = cell.environment;
+    const VerificationRun& run = cell.run;
     ASSERT_EQ(run.result.verdict, Verdict::kClear) << environment_file;
-    const motion::Trajectory trajectory =
-        motion::Trajectory::plan(robot, program, kinematics, options.trajectory);
+    const motion::Trajectory trajectory = motion::Trajectory::plan(
+        robot, cell.program, cell.kinematics, cell.options.trajectory);
     const motion::PtpMotion& ptp = *trajectory.segments().at(0).ptp;
     double previous_time = 0.0;
     int checked = 0;
@@ -134,15 +123,13 @@ TEST(MotionClearance, TheVerifiersBoundsHoldAlongTheNearMissMotion) {
 // equal to them up to that rounding. A certificate with one radius inflated is rejected and
 // proves no clearance.
 TEST(MotionClearance, TheCheckerDerivesTheVerifiersClearancesExactly) {
-  const RobotModel robot = io::read_robot_file(data("robot.txt"));
-  const Environment environment = io::read_environment_file(data("bench-environment-near-miss.txt"));
-  const PathProgram program =
-      io::parse_path_file("1\n1\n50.,3.\n50.,3.\n4.,0.3\n50.,3.\n", "ptp.txt", robot);
-  const motion::KinematicsAccess kinematics =
-      motion::make_kinematics_access(robot, motion::select_ik("auto", robot, "robot.txt"));
-  VerifyOptions options;
-  options.tolerance = 0.5;
-  const VerificationRun run = verify(robot, environment, program, kinematics, options);
+  const test::Ibm7545Run cell =
+      test::verify_ibm7545("bench-environment-near-miss.txt", test::kTable3PtpPath);
+  const RobotModel& robot = cell.robot;
+  const Environment& environment = cell.environment;
+  const PathProgram& program = cell.program;
+  const motion::KinematicsAccess& kinematics = cell.kinematics;
+  const VerificationRun& run = cell.run;
   ASSERT_EQ(run.result.verdict, Verdict::kClear);
   const CheckReport report = check_certificate(robot, environment, program, kinematics, run.certificate);
   ASSERT_TRUE(report.accepted);

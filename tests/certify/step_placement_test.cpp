@@ -1,22 +1,12 @@
 // Where the certified march puts its steps next to a contact: the proposals aim the trials
 // (src/certify/step_proposal.cpp, PathVerifier::march_segment); the step rule decides. These
 // tests pin the report's shape, not soundness (the oracle tests do that).
-#include <string>
-
 #include <gtest/gtest.h>
 
-#include "grpvss/certify/verifier.hpp"
-#include "grpvss/io/environment_file.hpp"
-#include "grpvss/io/path_file.hpp"
-#include "grpvss/io/robot_file.hpp"
-#include "grpvss/motion/kinematics_adapter.hpp"
+#include "support/ibm7545_run.hpp"
 
 namespace grpvss::certify {
 namespace {
-
-std::string data(const std::string& name) {
-  return std::string(GRPVSS_SOURCE_DIR) + "/data/ibm7545/" + name;
-}
 
 // The Table 3 CP line run into a post (bench-environment-cp-line.txt), after a PTP(WCS)
 // approach to its start. Approaching the contact, every proven step is allowed only the raw
@@ -25,23 +15,17 @@ std::string data(const std::string& name) {
 // trial after a refining step now aims at the basic resolution, and one past the contact
 // finds the COLLISION.
 TEST(StepPlacement, TheApproachToAContactDoesNotCreep) {
-  const RobotModel robot = io::read_robot_file(data("robot.txt"));
-  const Environment environment = io::read_environment_file(data("bench-environment-cp-line.txt"));
-  const PathProgram program = io::parse_path_file(
-      "2\n2\n0.,20.,8.,0.,0.,1.,141.\n3.\n3.\n0.3\n3.\n3\n-20.,-5.,2.,0.,0.,1.,0.\n", "cp.txt",
-      robot);
-  const motion::KinematicsAccess kinematics =
-      motion::make_kinematics_access(robot, motion::select_ik("auto", robot, "robot.txt"));
-  VerifyOptions options;
-  options.tolerance = 0.5;
-  const VerificationRun run = verify(robot, environment, program, kinematics, options);
+  const test::Ibm7545Run cell = test::verify_ibm7545(
+      "bench-environment-cp-line.txt",
+      "2\n2\n0.,20.,8.,0.,0.,1.,141.\n3.\n3.\n0.3\n3.\n3\n-20.,-5.,2.,0.,0.,1.,0.\n");
+  const VerificationRun& run = cell.run;
   ASSERT_EQ(run.result.verdict, Verdict::kCollision);
   int creeping = 0, cp_steps = 0;
   for (const StepRecord& step : run.result.steps) {
     if (step.segment != 2) continue;
     ++cp_steps;
     const LinkStepRecord& quill = step.links.at(4);
-    if (quill.motion_bound < 0.2 * options.tolerance) ++creeping;
+    if (quill.motion_bound < 0.2 * test::kIbm7545Tolerance) ++creeping;
   }
   EXPECT_EQ(creeping, 0);
   EXPECT_EQ(cp_steps, 27);  // 51 before
@@ -59,14 +43,8 @@ TEST(StepPlacement, TheApproachToAContactDoesNotCreep) {
 // now has the jump located by bisection on the model (IK and FK only), and the next trial
 // lands just before it.
 TEST(StepPlacement, AJointJumpAheadIsLocatedWithoutCreepingUpToIt) {
-  const RobotModel robot = io::read_robot_file(data("robot.txt"));
-  const Environment environment = io::read_environment_file(data("environment.txt"));
-  const PathProgram program = io::read_path_file(data("path.txt"), robot);
-  const motion::KinematicsAccess kinematics =
-      motion::make_kinematics_access(robot, motion::select_ik("auto", robot, "robot.txt"));
-  VerifyOptions options;
-  options.tolerance = 0.5;
-  const VerificationRun run = verify(robot, environment, program, kinematics, options);
+  const test::Ibm7545Run cell = test::verify_ibm7545_files("environment.txt", "path.txt");
+  const VerificationRun& run = cell.run;
   ASSERT_EQ(run.result.errors.size(), 1u);
   const PathError& error = run.result.errors.front();
   EXPECT_EQ(error.code, 7);
@@ -78,7 +56,7 @@ TEST(StepPlacement, AJointJumpAheadIsLocatedWithoutCreepingUpToIt) {
   EXPECT_NEAR(last.segment_parameter, 8.8283, 1e-4);  // where joint 4 reaches its limit
   int creeping = 0;
   for (const StepRecord& step : run.result.steps) {
-    if (step.segment == 3 && step.links.at(4).motion_bound < 0.2 * options.tolerance) ++creeping;
+    if (step.segment == 3 && step.links.at(4).motion_bound < 0.2 * test::kIbm7545Tolerance) ++creeping;
   }
   EXPECT_EQ(creeping, 0);
 }

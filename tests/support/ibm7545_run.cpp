@@ -1,0 +1,42 @@
+#include "support/ibm7545_run.hpp"
+
+#include "grpvss/io/environment_file.hpp"
+#include "grpvss/io/path_file.hpp"
+#include "grpvss/io/robot_file.hpp"
+#include "grpvss/motion/kinematics_adapter.hpp"
+
+namespace grpvss::test {
+namespace {
+
+std::string data(const std::string& name) {
+  return std::string(GRPVSS_SOURCE_DIR) + "/data/ibm7545/" + name;
+}
+
+Ibm7545Run run(Ibm7545Run inputs) {
+  inputs.kinematics = motion::make_kinematics_access(
+      inputs.robot, motion::select_ik("auto", inputs.robot, "robot.txt"));
+  inputs.options.tolerance = kIbm7545Tolerance;
+  inputs.run = certify::verify(inputs.robot, inputs.environment, inputs.program,
+                               inputs.kinematics, inputs.options);
+  return inputs;
+}
+
+}  // namespace
+
+Ibm7545Run verify_ibm7545(const std::string& environment_file, const std::string& path_text) {
+  Ibm7545Run inputs;
+  inputs.robot = io::read_robot_file(data("robot.txt"));
+  inputs.environment = io::read_environment_file(data(environment_file));
+  inputs.program = io::parse_path_file(path_text, "path.txt", inputs.robot);
+  return run(std::move(inputs));
+}
+
+Ibm7545Run verify_ibm7545_files(const std::string& environment_file, const std::string& path_file) {
+  Ibm7545Run inputs;
+  inputs.robot = io::read_robot_file(data("robot.txt"));
+  inputs.environment = io::read_environment_file(data(environment_file));
+  inputs.program = io::read_path_file(data(path_file), inputs.robot);
+  return run(std::move(inputs));
+}
+
+}  // namespace grpvss::test
