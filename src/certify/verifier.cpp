@@ -471,7 +471,6 @@ bool PathVerifier::march_segment(const SegmentPath& path, int segment_number) {
   double step = end;
   previous_slack_ = 0.0;
   bool retrying = false;  ///< the proposal is a shrunk retry of a rejected one
-  double cp_accepted_step = 0.0;  ///< the last accepted step of this CP segment (0: none yet)
   while (s < end) {
     if (probes_ >= options_.max_probes) {
       add_error(kErrorProbeLimit, segment_number,
@@ -509,7 +508,9 @@ bool PathVerifier::march_segment(const SegmentPath& path, int segment_number) {
           // A step far shorter than the last one this segment accepted failing too points at
           // a joint jump ahead: halving and growing again would crowd the report with proven
           // steps creeping up to it. Locate it (IK and FK only, no probe) and aim just before.
-          if (cp_accepted_step > 0.0 && s1 - s < 0.25 * cp_accepted_step) {
+          // (previous_radii_ is empty until this segment accepts a step; previous_step_ is
+          // that step's length.)
+          if (!previous_radii_.empty() && s1 - s < 0.25 * previous_step_) {
             step = cp_model_reach(path, s, s1, min_step);
             if (!(step > min_step)) step = 0.0;  // fails at any step: the jump is here
           }
@@ -592,7 +593,6 @@ bool PathVerifier::march_segment(const SegmentPath& path, int segment_number) {
     previous_radii_.clear();
     for (const HullState& hull : current_.hulls) previous_radii_.push_back(hull.radius);
     previous_step_ = taken;
-    if (path.is_cp()) cp_accepted_step = taken;
     std::swap(current_, trial_);
     s = s1;
     if (options_.progress) {
