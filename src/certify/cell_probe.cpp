@@ -168,6 +168,7 @@ void CellProbe::probe_hull(int hull_index, bool with_points, ProbeResult& out) {
   // proof: proofs/two-ball-cover.md#corollary-step (obstacles beyond the margin are farther
   // than Delta + margin from every true point of the hull)
   state.radius = add_down(delta, state.broadphase_margin);
+  state.radius_beside_collisions = state.radius;
 
   // Nearest first: a sphere slab is enough for every obstacle whose sphere gap is not below
   // the smallest proven clearance so far; only the others need the pair query.
@@ -217,6 +218,7 @@ void CellProbe::probe_hull(int hull_index, bool with_points, ProbeResult& out) {
         state.radius = radius;
         state.nearest_obstacle = o;
       }
+      state.radius_beside_collisions = std::min(state.radius_beside_collisions, radius);
       out.evidence.push_back(evidence);
       continue;
     }
@@ -250,6 +252,7 @@ void CellProbe::probe_hull(int hull_index, bool with_points, ProbeResult& out) {
         state.radius = radius;
         state.nearest_obstacle = o;
       }
+      state.radius_beside_collisions = std::min(state.radius_beside_collisions, radius);
     } else {
       state.raw_collides = true;
       out.any_collision = true;
@@ -261,6 +264,7 @@ void CellProbe::probe_hull(int hull_index, bool with_points, ProbeResult& out) {
   // A hull with no obstacle in reach has an unbounded radius; it is capped so that every
   // number in the certificate is finite (a smaller radius is always still a valid one).
   state.radius = std::min(state.radius, kUnboundedRadius);
+  state.radius_beside_collisions = std::min(state.radius_beside_collisions, kUnboundedRadius);
 }
 
 }  // namespace grpvss::certify

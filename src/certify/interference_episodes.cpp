@@ -56,6 +56,12 @@ void InterferenceEpisodeTracker::add(const StepRecord& step) {
     }
     still_open.emplace(key, index);
   }
+  for (const auto& [key, index] : open_) {
+    if (still_open.count(key) == 0) {
+      episodes_[index].cleared_step = step.index;
+      episodes_[index].cleared_time = step.path_time;
+    }
+  }
   open_ = std::move(still_open);
 }
 

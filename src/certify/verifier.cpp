@@ -41,6 +41,24 @@ double allowance_down(double radius_k, double radius_k1) {
   return r::add_down(radius_k, radius_k1);
 }
 
+// Inside a collision the colliding pairs are not sampled (the verdict there is COLLISION,
+// from the exact contact at the step's end): a hull that collides at an end of the step is
+// held only against the obstacles it does not collide with, whose radii
+// (radius_beside_collisions) cover its motion or keep it to the basic resolution. For the
+// step decision only: the recorded allowances stay r_k + r_{k+1}, which the checker verifies.
+// docs/verification.md#steps-through-a-collision
+TransitionRecord beside_collisions(const TransitionRecord& transition, const ProbeResult& from,
+                                   const ProbeResult& to) {
+  TransitionRecord beside = transition;
+  for (std::size_t i = 0; i < beside.hull_allowances.size(); ++i) {
+    if (from.hulls[i].raw_collides || to.hulls[i].raw_collides) {
+      beside.hull_allowances[i] = allowance_down(from.hulls[i].radius_beside_collisions,
+                                                 to.hulls[i].radius_beside_collisions);
+    }
+  }
+  return beside;
+}
+
 // One segment's configurations as a function of its parameter s: time for PTP, path length
 // for CP (docs/verification.md#segment-parameter).
 class SegmentPath {
@@ -560,7 +578,8 @@ bool PathVerifier::march_segment(const SegmentPath& path, int segment_number) {
       // basic resolution (every point at most 2D per step): the report covers the motion, a
       // step past the contact finds the COLLISION, and a stretch that is neither proven nor
       // colliding makes the verdict UNDECIDED. (Hulls whose clearances cover their motion are
-      // not held to 2D: basic_resolution_slack.)
+      // not held to 2D: basic_resolution_slack; a pair colliding at an end of the step is not
+      // held at all: beside_collisions.)
       const bool collision_at_an_end = current_.any_collision || trial_.any_collision;
       const bool basic_mode = collision_at_an_end || basic_resolution_mode_ ||
                               proposed <= certify_floor;
@@ -569,7 +588,9 @@ bool PathVerifier::march_segment(const SegmentPath& path, int segment_number) {
                         taken * std::clamp(0.9 * transition_slack(transition), 0.05, 0.9));
         continue;
       }
-      const double basic_slack = basic_resolution_slack(transition, 2.0 * options_.tolerance);
+      const double basic_slack = basic_resolution_slack(
+          collision_at_an_end ? beside_collisions(transition, current_, trial_) : transition,
+          2.0 * options_.tolerance);
       if (!(basic_slack >= 1.0) && proposed > min_step) {
         step = std::max(min_step, taken * std::clamp(0.95 * basic_slack, 0.1, 0.9));
         continue;

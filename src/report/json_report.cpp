@@ -137,7 +137,10 @@ class JsonWriter {
             {"first_time", finite(run.first_time, "episode first_time")},
             {"last_time", finite(run.last_time, "episode last_time")},
             {"first_collision_step", optional_step(run.first_collision_step)},
-            {"last_collision_step", optional_step(run.last_collision_step)}};
+            {"last_collision_step", optional_step(run.last_collision_step)},
+            {"cleared_step", optional_step(run.cleared_step)},
+            {"cleared_time", run.cleared_time ? json(finite(*run.cleared_time, "episode cleared_time"))
+                                              : json(nullptr)}};
   }
 
   json step(const certify::StepRecord& record) const {

@@ -35,13 +35,13 @@ TEST(VerifySummaryCli, TheSamplesEpisodesArePrintedBetweenTheFirstCollisionAndTh
   std::filesystem::remove_all(directory);
   const std::string expected =
       "first collision at step 4\n"
-      "interference: link 3 hull 1 / obstacle 0, steps 3-14 (8.936-13.430 s), unexpanded "
-      "collides at steps 4-10\n"
-      "interference: link 3 hull 0 / obstacle 0, steps 4-15 (9.303-13.843 s), unexpanded "
-      "collides at steps 5-14\n"
-      "interference: link 4 hull 0 / obstacle 0, steps 4-5 (9.303-9.715 s), expanded hull "
-      "only\n"
-      "error 7 (segment 3, step 28)";
+      "interference: link 3 hull 1 / obstacle 0, steps 3-12 (8.936-13.314 s, clear by "
+      "13.727 s), unexpanded collides at steps 4-9\n"
+      "interference: link 3 hull 0 / obstacle 0, steps 4-13 (9.303-13.727 s, clear by "
+      "14.139 s), unexpanded collides at steps 5-13\n"
+      "interference: link 4 hull 0 / obstacle 0, steps 4-5 (9.303-9.729 s, clear by "
+      "10.156 s), expanded hull only\n"
+      "error 7 (segment 3, step 26)";
   EXPECT_NE(text.find(expected), std::string::npos) << text;
 }
 

@@ -52,6 +52,8 @@ TEST(InterferenceEpisodeTracker, ARunEndsAtTheFirstStepWithoutThePairAndAReturnS
   EXPECT_EQ(episodes[0].last_time, 2.5);
   EXPECT_EQ(episodes[0].first_collision_step, 2);
   EXPECT_EQ(episodes[0].last_collision_step, 3);
+  EXPECT_EQ(episodes[0].cleared_step, 5);  // the first step without the pair
+  EXPECT_EQ(episodes[0].cleared_time, 3.0);
   EXPECT_EQ(std::tie(episodes[1].link, episodes[1].hull, episodes[1].obstacle),
             std::make_tuple(3, 1, 0));
   EXPECT_EQ(episodes[1].first_step, 2);
@@ -60,6 +62,9 @@ TEST(InterferenceEpisodeTracker, ARunEndsAtTheFirstStepWithoutThePairAndAReturnS
   EXPECT_FALSE(episodes[1].last_collision_step.has_value());
   EXPECT_EQ(episodes[2].first_step, 6);
   EXPECT_EQ(episodes[2].last_step, 6);
+  EXPECT_EQ(episodes[1].cleared_step, 3);
+  EXPECT_FALSE(episodes[2].cleared_step.has_value());  // the path ends with the pair in it
+  EXPECT_FALSE(episodes[2].cleared_time.has_value());
 }
 
 TEST(InterferenceEpisodeTracker, AStartInContactOpensAnEpisodeAtStepZero) {
@@ -143,10 +148,15 @@ TEST_F(Ibm7545Episodes, TheTable3PtpOperationHasOneEpisodeOfTheQuillInThePost) {
   EXPECT_EQ(std::tie(quill.link, quill.hull, quill.obstacle), std::make_tuple(4, 0, 0));
   ASSERT_TRUE(quill.first_collision_step.has_value());
   EXPECT_EQ(quill.first_collision_step, ptp.result.collision_step);
-  // The expanded quill meets the post one step before and after the nominal one does.
+  // The expanded quill meets the post one step before the nominal one does. The pair is not
+  // sampled while it collides: the step after the collision has the quill out of the post,
+  // which the episode records as the time it is clear by.
   EXPECT_EQ(quill.first_step, *quill.first_collision_step - 1);
-  EXPECT_EQ(quill.last_step, *quill.last_collision_step + 1);
+  EXPECT_EQ(quill.last_step, *quill.last_collision_step);
   EXPECT_EQ(quill.first_time, ptp.result.steps.at(quill.first_step - 1).path_time);
+  ASSERT_TRUE(quill.cleared_step.has_value());
+  EXPECT_EQ(*quill.cleared_step, quill.last_step + 1);
+  EXPECT_EQ(quill.cleared_time, ptp.result.steps.at(*quill.cleared_step - 1).path_time);
 }
 
 // The thesis's sample path: link 3's two hulls hit obstacle 0 in segment 1, the quill only

@@ -41,6 +41,9 @@ struct HullState {
   /// proof: proofs/two-ball-cover.md#corollary-step
   double radius = 0.0;
   int nearest_obstacle = -1;   ///< the obstacle that governs `radius` (-1: broadphase margin)
+  /// As `radius`, over the obstacles the raw hull does not collide with (= radius when it
+  /// collides with none).
+  double radius_beside_collisions = 0.0;
   /// Obstacles without explicit evidence are farther than this from the placed offset
   /// (broadphase, exact box test); +inf when every obstacle has evidence.
   double broadphase_margin = 0.0;

@@ -70,6 +70,12 @@ struct InterferenceEpisode {
   /// First and last step of the run at which the unexpanded hull meets the obstacle.
   std::optional<int> first_collision_step;
   std::optional<int> last_collision_step;
+  /// The step after last_step (the pair no longer interferes there) and its path time; empty
+  /// when the path stops first. Inside a collision the colliding pair is not sampled
+  /// (docs/verification.md#steps-through-a-collision), so the episode ends somewhere in
+  /// (last_time, cleared_time).
+  std::optional<int> cleared_step;
+  std::optional<double> cleared_time;
 };
 
 struct LinkStepRecord {
