@@ -129,8 +129,25 @@ void CellProbe::sort_points(ProbeResult& out) {
 void CellProbe::append_points(int hull_index, int obstacle, ProbeResult& out) {
   const RobotCell& cell = *cell_;
   const LinkHull& hull = cell.hulls()[static_cast<std::size_t>(hull_index)];
-  // The placed offset is hulled once per hull, from its link-frame template; the obstacle's
-  // hull was built once.
+  // In the link frame the offset's exact hull is prebuilt and only the obstacle (8-16
+  // vertices) is placed, by X_LW, and hulled from its world-frame template: the exact points
+  // of that pair, mapped back by X_WL. Both frames see the true placement up to the FK
+  // rounding; the points are report content, no claim rests on them
+  // (docs/verification.md#interference-points).
+  const Eigen::Isometry3d& X_WL = workspace_.X_WL[hull.link];
+  place_points(X_WL.inverse(), cell.obstacles_W()[static_cast<std::size_t>(obstacle)],
+               placed_obstacle_L_);
+  const geometry::ConvexPolytope obstacle_L = geometry::ConvexPolytope::from_points_like(
+      placed_obstacle_L_, cell.obstacle_polytopes_W()[static_cast<std::size_t>(obstacle)]);
+  const std::size_t found_before = out.interference_points.size();
+  for (const auto& point : geometry::interference_points(
+           cell.expanded_polytope_L(static_cast<std::size_t>(hull_index)), obstacle_L)) {
+    out.interference_points.push_back(
+        {hull.link, hull.hull, obstacle, X_WL * point.point, geometry::to_string(point.kind)});
+  }
+  if (out.interference_points.size() > found_before) return;
+  // The world-frame query found the pair interfering (this is only called then) but the
+  // link-frame images merely touch or miss: the world-frame placed offset decides the points.
   if (!expanded_polytope_) {
     expanded_polytope_ = geometry::ConvexPolytope::from_points_like(
         placed_expanded_, cell.expanded_polytope_L(static_cast<std::size_t>(hull_index)));

@@ -81,8 +81,10 @@ RobotCell::RobotCell(const RobotModel& robot, const Environment& environment,
     throw std::logic_error("RobotCell: offset vertices exceed the coordinate bound of the FK error");
   }
   for (const HullPoints& obstacle : environment.obstacles) {
-    obstacle_polytopes_W_.push_back(geometry::ConvexPolytope::from_points(obstacle.points));
-    obstacles_W_.push_back(obstacle_polytopes_W_.back().vertices());
+    // Hulled from its own vertices, so that vertex j is input point j: the obstacle is the
+    // template of its images in the link frames (CellProbe::append_points).
+    obstacles_W_.push_back(geometry::ConvexPolytope::from_points(obstacle.points).vertices());
+    obstacle_polytopes_W_.push_back(geometry::ConvexPolytope::from_points(obstacles_W_.back()));
     obstacle_spheres_W_.push_back(geometry::certified_sphere(obstacles_W_.back()));
   }
   obstacle_index_ = geometry::StaticObstacleIndex(obstacles_W_);

@@ -2,12 +2,17 @@
 // the points a probe with points finds: same pairs, same exact points, same order.
 #include "grpvss/certify/cell_probe.hpp"
 
+#include <algorithm>
 #include <random>
 #include <string>
 
 #include <gtest/gtest.h>
 
+#include "grpvss/geometry/convex_polytope.hpp"
+#include "grpvss/geometry/exact_contact.hpp"
+#include "grpvss/geometry/gjk.hpp"
 #include "grpvss/io/environment_file.hpp"
+#include "grpvss/kinematics/forward_kinematics.hpp"
 #include "grpvss/io/robot_file.hpp"
 #include "support/random_configurations.hpp"
 
@@ -53,6 +58,80 @@ TEST(CellProbe, AddedInterferencePointsAreThoseOfAProbeWithPoints) {
     }
   }
   EXPECT_GT(with_points, 20);  // the property is exercised, not vacuous
+}
+
+// True if some point of `points` has `kind` and lies within 1e-9 in. of `p`.
+bool has_point_near(const std::vector<std::pair<std::string, Eigen::Vector3d>>& points,
+                    const std::string& kind, const Eigen::Vector3d& p) {
+  return std::any_of(points.begin(), points.end(), [&](const auto& point) {
+    return point.first == kind && (point.second - p).norm() < 1e-9;
+  });
+}
+
+// The probe computes a pair's points in the link frame (the offset's exact hull prebuilt, the
+// obstacle placed by X_LW) and maps them back by X_WL. Reference: the exact points of the
+// offset placed in the world frame and hulled from scratch with the obstacle's world hull,
+// as the probe did before. Each is exact for its own placement; the placements differ by the
+// FK rounding. The contained vertices agree both ways within 1e-9 in. Edge points can
+// differ where faces are coplanar only up to rounding (the offset's vertices are rounded
+// Minkowski sums, the obstacle's decimal inputs): such a face is two triangles, and which
+// diagonal is an edge depends on the rounding, in either frame. So every edge point must lie
+// on both placed hulls in the world frame (within 1e-9 in. of each) and the pair must have a
+// point in both computations.
+TEST(CellProbe, LinkFramePointsAreTheWorldFramePlacedOffsetsPoints) {
+  const RobotModel robot = io::read_robot_file(data("robot.txt"));
+  std::mt19937_64 rng(4341);
+  int pairs_compared = 0;
+  for (const char* environment_file : {"environment.txt", "bench-environment.txt"}) {
+    const Environment environment = io::read_environment_file(data(environment_file));
+    CellOptions options;
+    options.tolerance = 0.5;
+    const RobotCell cell(robot, environment, options);
+    CellProbe probe(cell);
+    ProbeResult result;
+    kinematics::Workspace workspace(robot);
+    std::vector<Eigen::Vector3d> placed_W;
+    for (int k = 0; k < 300; ++k) {
+      const Eigen::VectorXd q = test::random_configuration(robot, rng);
+      probe.probe(q, /*with_points=*/true, result);
+      kinematics::forward_kinematics(cell.chain(), q, workspace);
+      for (const PairEvidence& evidence : result.evidence) {
+        if (!evidence.expanded || evidence.separated) continue;
+        const LinkHull& hull = cell.hulls()[static_cast<std::size_t>(evidence.hull_index)];
+        place_points(workspace.X_WL[hull.link], hull.expanded_L, placed_W);
+        std::vector<std::pair<std::string, Eigen::Vector3d>> reference, found;
+        for (const auto& point : geometry::interference_points(
+                 geometry::ConvexPolytope::from_points(placed_W),
+                 cell.obstacle_polytopes_W()[static_cast<std::size_t>(evidence.obstacle)])) {
+          reference.emplace_back(geometry::to_string(point.kind), point.point);
+        }
+        for (const InterferencePoint& point : result.interference_points) {
+          if (point.link == hull.link && point.hull == hull.hull &&
+              point.obstacle == evidence.obstacle) {
+            found.emplace_back(point.kind, point.p_W);
+          }
+        }
+        ASSERT_FALSE(found.empty()) << "configuration " << k;
+        ASSERT_FALSE(reference.empty()) << "configuration " << k;
+        const auto& obstacle_W = cell.obstacles_W()[static_cast<std::size_t>(evidence.obstacle)];
+        for (const auto& [kind, p] : found) {
+          if (kind.rfind("vertex", 0) == 0) {
+            EXPECT_TRUE(has_point_near(reference, kind, p)) << "configuration " << k;
+          } else {
+            EXPECT_LT(geometry::gjk({p}, placed_W).distance, 1e-9) << "configuration " << k;
+            EXPECT_LT(geometry::gjk({p}, obstacle_W).distance, 1e-9) << "configuration " << k;
+          }
+        }
+        for (const auto& [kind, p] : reference) {
+          if (kind.rfind("vertex", 0) == 0) {
+            EXPECT_TRUE(has_point_near(found, kind, p)) << "configuration " << k;
+          }
+        }
+        ++pairs_compared;
+      }
+    }
+  }
+  EXPECT_GT(pairs_compared, 20);  // the property is exercised, not vacuous
 }
 
 }  // namespace

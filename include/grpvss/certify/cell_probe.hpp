@@ -81,8 +81,10 @@ class CellProbe {
 
  private:
   void probe_hull(int hull_index, bool with_points, ProbeResult& out);
-  /// Appends the points of the placed offset of hull `hull_index` (in placed_expanded_) with
-  /// obstacle `obstacle`; hulls the offset once per hull (expanded_polytope_).
+  /// Appends the points of the offset of hull `hull_index` with obstacle `obstacle`, computed
+  /// in the link frame (the offset's exact hull is prebuilt there; the obstacle is placed) and
+  /// mapped to the world frame; the world-frame placed offset (placed_expanded_, hulled once
+  /// per hull into expanded_polytope_) only when the link frame shows no point.
   void append_points(int hull_index, int obstacle, ProbeResult& out);
   /// Sorts out.interference_points into the one canonical order reports use.
   static void sort_points(ProbeResult& out);
@@ -91,6 +93,7 @@ class CellProbe {
   kinematics::Workspace workspace_;
   std::vector<Eigen::Vector3d> placed_expanded_;
   std::vector<Eigen::Vector3d> placed_raw_;
+  std::vector<Eigen::Vector3d> placed_obstacle_L_;
   std::optional<geometry::ConvexPolytope> expanded_polytope_;
   std::vector<int> candidates_;
   std::vector<std::pair<double, int>> ordered_candidates_;
