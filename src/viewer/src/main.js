@@ -259,13 +259,15 @@ function auditPanel() {
       ? '' : `; along the motion &gt; ${fmtLowerBound(c.min_motion_clearance, 4)} (steps ${c.motion_step - 1}–${c.motion_step})`}</td></tr>`).join('');
   const errors = report.errors.map((e) => `<li>error ${e.code} (segment ${e.segment}, step ${e.step}): ${escapeHtml(e.message)}</li>`).join('');
   // One row per interference episode; its button shows the first colliding step (else the first
-  // interfering one).
+  // interfering one). A certified run does not sample a pair while it collides, so the episode
+  // ends somewhere before the step at which the pair is clear again ("clear by").
   const range = (a, b) => (a === b ? `step ${a}` : `steps ${a}–${b}`);
   const episodes = report.interference_episodes.map((e) => {
     const collides = e.first_collision_step !== null;
     const target = collides ? e.first_collision_step : e.first_step;
     return `<tr class="episode"><th><button class="episode-go" data-step="${target}" title="show step ${target}">link ${e.link} hull ${e.hull} / obstacle ${e.obstacle}</button></th>
-      <td>${range(e.first_step, e.last_step)} (${fmt(e.first_time, 2)}–${fmt(e.last_time, 2)} s)<br>${collides
+      <td>${range(e.first_step, e.last_step)} (${fmt(e.first_time, 2)}–${fmt(e.last_time, 2)} s${e.cleared_time === null
+        ? '' : `, <span class="cleared">clear by ${fmt(e.cleared_time, 2)} s</span>`})<br>${collides
         ? `<span class="bad">collides ${range(e.first_collision_step, e.last_collision_step)}</span>`
         : '<span class="warn">expanded hull only</span>'}</td></tr>`;
   }).join('');

@@ -76,6 +76,11 @@ try {
   // colliding step.
   check(state.episodesShown === report.interference_episodes.length && state.episodesShown > 0,
     `audit panel lists the report's ${report.interference_episodes.length} interference episodes (${state.episodesShown})`);
+  const clearedShown = await page.locator('#episodes .cleared').allInnerTexts();
+  const cleared = report.interference_episodes.filter((e) => e.cleared_time !== null);
+  check(clearedShown.length === cleared.length && cleared.length > 0 &&
+      cleared.every((e, i) => clearedShown[i] === `clear by ${e.cleared_time.toFixed(2)} s`),
+    `each episode shows the time its pair is clear by (${clearedShown.join('; ')})`);
   const colliding = report.interference_episodes.findIndex((e) => e.first_collision_step !== null);
   check(colliding >= 0, 'the IBM 7545 run has an episode in which the unexpanded robot collides');
   if (colliding >= 0) {
