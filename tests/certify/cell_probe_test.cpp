@@ -35,28 +35,34 @@ void expect_same_points(const std::vector<InterferencePoint>& expected,
   }
 }
 
-TEST(CellProbe, AddedInterferencePointsAreThoseOfAProbeWithPoints) {
+// Calls visit(cell, q, k) for 300 random configurations q of the IBM 7545 in each of its two
+// sample cells (tolerance 0.5).
+template <class Visit>
+void for_random_configurations(std::uint64_t seed, Visit visit) {
   const RobotModel robot = io::read_robot_file(data("robot.txt"));
-  std::mt19937_64 rng(7545);
-  int with_points = 0;
+  std::mt19937_64 rng(seed);
   for (const char* environment_file : {"environment.txt", "bench-environment.txt"}) {
     const Environment environment = io::read_environment_file(data(environment_file));
     CellOptions options;
     options.tolerance = 0.5;
     const RobotCell cell(robot, environment, options);
+    for (int k = 0; k < 300; ++k) visit(cell, test::random_configuration(robot, rng), k);
+  }
+}
+
+TEST(CellProbe, AddedInterferencePointsAreThoseOfAProbeWithPoints) {
+  int with_points = 0;
+  for_random_configurations(7545, [&](const RobotCell& cell, const Eigen::VectorXd& q, int k) {
     CellProbe reference(cell);
     CellProbe added(cell);
     ProbeResult full, trial;
-    for (int k = 0; k < 300; ++k) {
-      const Eigen::VectorXd q = test::random_configuration(robot, rng);
-      reference.probe(q, /*with_points=*/true, full);
-      added.probe(q, /*with_points=*/false, trial);
-      ASSERT_TRUE(trial.interference_points.empty());
-      added.add_interference_points(trial);
-      expect_same_points(full.interference_points, trial.interference_points, k);
-      with_points += full.interference_points.empty() ? 0 : 1;
-    }
-  }
+    reference.probe(q, /*with_points=*/true, full);
+    added.probe(q, /*with_points=*/false, trial);
+    ASSERT_TRUE(trial.interference_points.empty());
+    added.add_interference_points(trial);
+    expect_same_points(full.interference_points, trial.interference_points, k);
+    with_points += full.interference_points.empty() ? 0 : 1;
+  });
   EXPECT_GT(with_points, 20);  // the property is exercised, not vacuous
 }
 
@@ -79,58 +85,49 @@ bool has_point_near(const std::vector<std::pair<std::string, Eigen::Vector3d>>& 
 // on both placed hulls in the world frame (within 1e-9 in. of each) and the pair must have a
 // point in both computations.
 TEST(CellProbe, LinkFramePointsAreTheWorldFramePlacedOffsetsPoints) {
-  const RobotModel robot = io::read_robot_file(data("robot.txt"));
-  std::mt19937_64 rng(4341);
   int pairs_compared = 0;
-  for (const char* environment_file : {"environment.txt", "bench-environment.txt"}) {
-    const Environment environment = io::read_environment_file(data(environment_file));
-    CellOptions options;
-    options.tolerance = 0.5;
-    const RobotCell cell(robot, environment, options);
+  for_random_configurations(4341, [&](const RobotCell& cell, const Eigen::VectorXd& q, int k) {
     CellProbe probe(cell);
     ProbeResult result;
-    kinematics::Workspace workspace(robot);
+    probe.probe(q, /*with_points=*/true, result);
+    kinematics::Workspace workspace(cell.robot());
+    kinematics::forward_kinematics(cell.chain(), q, workspace);
     std::vector<Eigen::Vector3d> placed_W;
-    for (int k = 0; k < 300; ++k) {
-      const Eigen::VectorXd q = test::random_configuration(robot, rng);
-      probe.probe(q, /*with_points=*/true, result);
-      kinematics::forward_kinematics(cell.chain(), q, workspace);
-      for (const PairEvidence& evidence : result.evidence) {
-        if (!evidence.expanded || evidence.separated) continue;
-        const LinkHull& hull = cell.hulls()[static_cast<std::size_t>(evidence.hull_index)];
-        place_points(workspace.X_WL[hull.link], hull.expanded_L, placed_W);
-        std::vector<std::pair<std::string, Eigen::Vector3d>> reference, found;
-        for (const auto& point : geometry::interference_points(
-                 geometry::ConvexPolytope::from_points(placed_W),
-                 cell.obstacle_polytopes_W()[static_cast<std::size_t>(evidence.obstacle)])) {
-          reference.emplace_back(geometry::to_string(point.kind), point.point);
-        }
-        for (const InterferencePoint& point : result.interference_points) {
-          if (point.link == hull.link && point.hull == hull.hull &&
-              point.obstacle == evidence.obstacle) {
-            found.emplace_back(point.kind, point.p_W);
-          }
-        }
-        ASSERT_FALSE(found.empty()) << "configuration " << k;
-        ASSERT_FALSE(reference.empty()) << "configuration " << k;
-        const auto& obstacle_W = cell.obstacles_W()[static_cast<std::size_t>(evidence.obstacle)];
-        for (const auto& [kind, p] : found) {
-          if (kind.rfind("vertex", 0) == 0) {
-            EXPECT_TRUE(has_point_near(reference, kind, p)) << "configuration " << k;
-          } else {
-            EXPECT_LT(geometry::gjk({p}, placed_W).distance, 1e-9) << "configuration " << k;
-            EXPECT_LT(geometry::gjk({p}, obstacle_W).distance, 1e-9) << "configuration " << k;
-          }
-        }
-        for (const auto& [kind, p] : reference) {
-          if (kind.rfind("vertex", 0) == 0) {
-            EXPECT_TRUE(has_point_near(found, kind, p)) << "configuration " << k;
-          }
-        }
-        ++pairs_compared;
+    for (const PairEvidence& evidence : result.evidence) {
+      if (!evidence.expanded || evidence.separated) continue;
+      const LinkHull& hull = cell.hulls()[static_cast<std::size_t>(evidence.hull_index)];
+      place_points(workspace.X_WL[hull.link], hull.expanded_L, placed_W);
+      std::vector<std::pair<std::string, Eigen::Vector3d>> reference, found;
+      for (const auto& point : geometry::interference_points(
+               geometry::ConvexPolytope::from_points(placed_W),
+               cell.obstacle_polytopes_W()[static_cast<std::size_t>(evidence.obstacle)])) {
+        reference.emplace_back(geometry::to_string(point.kind), point.point);
       }
+      for (const InterferencePoint& point : result.interference_points) {
+        if (point.link == hull.link && point.hull == hull.hull &&
+            point.obstacle == evidence.obstacle) {
+          found.emplace_back(point.kind, point.p_W);
+        }
+      }
+      ASSERT_FALSE(found.empty()) << "configuration " << k;
+      ASSERT_FALSE(reference.empty()) << "configuration " << k;
+      const auto& obstacle_W = cell.obstacles_W()[static_cast<std::size_t>(evidence.obstacle)];
+      for (const auto& [kind, p] : found) {
+        if (kind.rfind("vertex", 0) == 0) {
+          EXPECT_TRUE(has_point_near(reference, kind, p)) << "configuration " << k;
+        } else {
+          EXPECT_LT(geometry::gjk({p}, placed_W).distance, 1e-9) << "configuration " << k;
+          EXPECT_LT(geometry::gjk({p}, obstacle_W).distance, 1e-9) << "configuration " << k;
+        }
+      }
+      for (const auto& [kind, p] : reference) {
+        if (kind.rfind("vertex", 0) == 0) {
+          EXPECT_TRUE(has_point_near(found, kind, p)) << "configuration " << k;
+        }
+      }
+      ++pairs_compared;
     }
-  }
+  });
   EXPECT_GT(pairs_compared, 20);  // the property is exercised, not vacuous
 }
 
