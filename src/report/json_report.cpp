@@ -127,6 +127,8 @@ class JsonWriter {
     const auto optional_step = [](const std::optional<int>& step) {
       return step ? json(*step) : json(nullptr);
     };
+    const json cleared_time =
+        run.cleared_time ? json(finite(*run.cleared_time, "episode cleared_time")) : json(nullptr);
     return {{"link", run.link},
             {"hull", run.hull},
             {"obstacle", run.obstacle},
@@ -139,8 +141,7 @@ class JsonWriter {
             {"first_collision_step", optional_step(run.first_collision_step)},
             {"last_collision_step", optional_step(run.last_collision_step)},
             {"cleared_step", optional_step(run.cleared_step)},
-            {"cleared_time", run.cleared_time ? json(finite(*run.cleared_time, "episode cleared_time"))
-                                              : json(nullptr)}};
+            {"cleared_time", cleared_time}};
   }
 
   json step(const certify::StepRecord& record) const {

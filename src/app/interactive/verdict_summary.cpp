@@ -30,10 +30,11 @@ std::string step_range(int first, int last) {
 std::string episode_line(const certify::InterferenceEpisode& episode) {
   const std::string cleared =
       episode.cleared_time ? fmt::format(", clear by {:.3f} s", *episode.cleared_time) : "";
-  std::string line = fmt::format("interference: link {} hull {} / obstacle {}, {} ({:.3f}-{:.3f} s{}), ",
-                                 episode.link, episode.hull, episode.obstacle,
-                                 step_range(episode.first_step, episode.last_step),
-                                 episode.first_time, episode.last_time, cleared);
+  std::string line =
+      fmt::format("interference: link {} hull {} / obstacle {}, {} ({:.3f}-{:.3f} s{}), ",
+                  episode.link, episode.hull, episode.obstacle,
+                  step_range(episode.first_step, episode.last_step), episode.first_time,
+                  episode.last_time, cleared);
   if (episode.first_collision_step) {
     line += "unexpanded collides at " +
             step_range(*episode.first_collision_step, *episode.last_collision_step);
