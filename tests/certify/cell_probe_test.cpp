@@ -131,5 +131,53 @@ TEST(CellProbe, LinkFramePointsAreTheWorldFramePlacedOffsetsPoints) {
   EXPECT_GT(pairs_compared, 20);  // the property is exercised, not vacuous
 }
 
+// The probe is asked for points only when the world-frame query finds the pair interfering.
+// If the pair merely touches there, the link-frame images (the obstacle placed by X_LW, rounded
+// differently) may miss by a rounding, and the probe must fall back to the world-frame placed
+// offset rather than list no point. Each case puts a box exactly against the world-placed
+// quill offset's extreme vertex in x, so the pair touches there only (in that vertex, or along
+// the vertical edge through it: the joints turn about z).
+TEST(CellProbe, APairTouchingOnlyInTheWorldFrameStillHasItsPoint) {
+  const RobotModel robot = io::read_robot_file(data("robot.txt"));
+  const CellOptions options{0.5, geometry::OffsetShape::kCube};
+  const std::size_t quill = 10;  // link 4 hull 0, the last of the IBM 7545's 11 hulls
+  std::mt19937_64 rng(7545);
+  int touching = 0;
+  for (int k = 0; k < 40; ++k) {
+    const Eigen::VectorXd q = test::random_configuration(robot, rng);
+    // The world-placed offset, exactly as the probe places it (the cell is obstacle-free).
+    const RobotCell free_cell(robot, Environment{1.0, 0.1, {}}, options);
+    ASSERT_EQ(free_cell.hulls()[quill].link, 4);
+    kinematics::Workspace workspace(robot);
+    kinematics::forward_kinematics(free_cell.chain(), q, workspace);
+    std::vector<Eigen::Vector3d> placed_W;
+    place_points(workspace.X_WL[4], free_cell.hulls()[quill].expanded_L, placed_W);
+    const Eigen::Vector3d v = *std::max_element(
+        placed_W.begin(), placed_W.end(),
+        [](const Eigen::Vector3d& a, const Eigen::Vector3d& b) { return a.x() < b.x(); });
+    HullPoints box;
+    for (double dx : {0.0, 1.0}) {
+      for (double dy : {-1.0, 1.0}) {
+        for (double dz : {-1.0, 1.0}) box.points.emplace_back(v.x() + dx, v.y() + dy, v.z() + dz);
+      }
+    }
+    const RobotCell cell(robot, Environment{1.0, 0.1, {box}}, options);
+    CellProbe probe(cell);
+    ProbeResult result;
+    probe.probe(q, /*with_points=*/true, result);
+    if (!result.hulls[quill].expanded_interferes) continue;
+    ++touching;
+    int quill_points = 0;
+    for (const InterferencePoint& point : result.interference_points) {
+      if (point.link != 4) continue;  // other links may reach into the box
+      ++quill_points;
+      // On the box's face x = v.x: the vertex, or the vertical edge through it.
+      EXPECT_LT(std::abs(point.p_W.x() - v.x()), 1e-9) << "configuration " << k;
+    }
+    EXPECT_GT(quill_points, 0) << "configuration " << k;
+  }
+  EXPECT_GT(touching, 20);
+}
+
 }  // namespace
 }  // namespace grpvss::certify
