@@ -38,7 +38,8 @@ enum class GoverningTerm {
   kSegmentEnd,  ///< the step was cut short by the segment's end
 };
 
-/// One interference point (rounded from exact coordinates) with its ids.
+/// One interference point with its ids: exact in the link frame, rounded, and mapped to the
+/// world frame by the link's floating-point pose (docs/verification.md#interference-points).
 struct InterferencePoint {
   int link = 0;      ///< 0..N
   int hull = 0;      ///< index within the link (0-based)
