@@ -94,6 +94,7 @@ void CellProbe::probe(const Eigen::VectorXd& q, bool with_points, ProbeResult& o
   out.any_expanded_interference = false;
   out.any_collision = false;
   kinematics::forward_kinematics(cell_->chain(), q, workspace_);
+  out.X_WL = workspace_.X_WL;
   for (int i = 0; i < static_cast<int>(cell_->hulls().size()); ++i) probe_hull(i, with_points, out);
   sort_points(out);
 }

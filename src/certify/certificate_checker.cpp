@@ -104,10 +104,21 @@ class Checker {
   void check_segment(const SegmentCertificate& segment, const motion::SegmentTrajectory& planned);
   // Returns the exactly verified radius bound of every hull at this step (claimed radii that
   // exceed what the evidence proves are failures).
-  std::vector<Rational> check_step(const StepCertificate& step, const std::string& where);
+  // `placed_raw` receives each hull's raw vertices placed at the step (the chord bound's ends).
+  std::vector<Rational> check_step(const StepCertificate& step, const std::string& where,
+                                   std::vector<std::vector<Eigen::Vector3d>>& placed_raw);
+  /// `joint_linear`: a CP step, where the chord bound may stand in for the joint-sum bound.
   void check_transition(const StepCertificate& from, const StepCertificate& to,
                         const std::vector<Rational>& radius_from,
-                        const std::vector<Rational>& radius_to, const std::string& where);
+                        const std::vector<Rational>& radius_to,
+                        const std::vector<std::vector<Eigen::Vector3d>>& placed_from,
+                        const std::vector<std::vector<Eigen::Vector3d>>& placed_to,
+                        bool joint_linear, const std::string& where);
+  /// claimed >= max_v |placed_to[v] - placed_from[v]| + 2 placement_error + P_h / 3, exactly
+  /// (proofs/motion-bound.md#lemma-joint-linear-chord).
+  bool chord_bound_holds(const CheckedHull& hull, const StepCertificate& from,
+                         const StepCertificate& to, const std::vector<Eigen::Vector3d>& placed_from,
+                         const std::vector<Eigen::Vector3d>& placed_to, double claimed) const;
   void check_claim();
 
   const RobotModel& robot_;
@@ -203,8 +214,10 @@ bool Checker::build_hulls() {
   return true;
 }
 
-std::vector<Rational> Checker::check_step(const StepCertificate& step, const std::string& where) {
+std::vector<Rational> Checker::check_step(const StepCertificate& step, const std::string& where,
+                                          std::vector<std::vector<Eigen::Vector3d>>& placed_raw_out) {
   std::vector<Rational> verified(hulls_.size(), Rational(0));
+  placed_raw_out.assign(hulls_.size(), {});
   if (step.q.size() != robot_.joint_count()) {
     fail(where + ": wrong joint count");
     return verified;
@@ -230,6 +243,7 @@ std::vector<Rational> Checker::check_step(const StepCertificate& step, const std
     std::vector<Eigen::Vector3d> placed_expanded, placed_raw;
     place_points(X_WL, hull.expanded_L, placed_expanded);
     place_points(X_WL, hull.raw_L, placed_raw);
+    placed_raw_out[i] = placed_raw;
     const Box placed_box = box_of(placed_expanded);
     // Per obstacle: the radius its evidence proves (proofs/two-ball-cover.md#corollary-step).
     std::vector<std::optional<Rational>> expanded_radius(obstacle_count), raw_radius(obstacle_count);
@@ -312,7 +326,10 @@ std::vector<Rational> Checker::check_step(const StepCertificate& step, const std
 // proof: proofs/motion-bound.md#lemma-motion-bound, proofs/two-ball-cover.md#corollary-step
 void Checker::check_transition(const StepCertificate& from, const StepCertificate& to,
                                const std::vector<Rational>& radius_from,
-                               const std::vector<Rational>& radius_to, const std::string& where) {
+                               const std::vector<Rational>& radius_to,
+                               const std::vector<std::vector<Eigen::Vector3d>>& placed_from,
+                               const std::vector<std::vector<Eigen::Vector3d>>& placed_to,
+                               bool joint_linear, const std::string& where) {
   const TransitionRecord& claimed = from.to_next;
   // A step with the wrong joint count was already rejected by check_step(); reading its q here
   // would run past the vector (found reviewing for the checker fuzz target, docs/reliability.md).
@@ -338,9 +355,21 @@ void Checker::check_transition(const StepCertificate& from, const StepCertificat
     }
     const Rational allowance = radius_from[i] + radius_to[i];
     report_.inequalities_checked += 3;
-    if (!(exact(claimed.hull_motion_bounds[i]) >= bound)) {
-      fail(where + " hull " + std::to_string(i) + ": the recorded motion bound is below the exact bound");
-      certified = false;
+    const Rational recorded = exact(claimed.hull_motion_bounds[i]);
+    if (!(recorded >= bound)) {
+      // proof: proofs/motion-bound.md#lemma-joint-linear-chord
+      ++report_.inequalities_checked;
+      if (joint_linear && placed_from[i].size() == hull.raw_L.size() &&
+          placed_to[i].size() == hull.raw_L.size() &&
+          chord_bound_holds(hull, from, to, placed_from[i], placed_to[i],
+                            claimed.hull_motion_bounds[i])) {
+        bound = recorded;  // proven >= every point's path length
+      } else {
+        fail(where + " hull " + std::to_string(i) +
+             (joint_linear ? ": the recorded motion bound is below both the exact bound and the chord bound"
+                           : ": the recorded motion bound is below the exact bound"));
+        certified = false;
+      }
     }
     if (!(exact(claimed.hull_allowances[i]) <= allowance)) {
       fail(where + " hull " + std::to_string(i) + ": the recorded allowance exceeds r_k + r_k+1");
@@ -362,6 +391,38 @@ void Checker::check_transition(const StepCertificate& from, const StepCertificat
   if (!certified) all_transitions_certified_ = false;
 }
 
+bool Checker::chord_bound_holds(const CheckedHull& hull, const StepCertificate& from,
+                                const StepCertificate& to,
+                                const std::vector<Eigen::Vector3d>& placed_from,
+                                const std::vector<Eigen::Vector3d>& placed_to,
+                                double claimed) const {
+  if (!std::isfinite(claimed)) return false;
+  // P_h exactly: sum_m w_m |dq_m| ([m rev] |dq_m| + 2 sum_{j<m rev} |dq_j|).
+  Rational curvature = 0;
+  Rational revolute_before = 0;
+  for (int m = 1; m <= hull.link; ++m) {
+    const Rational increment = abs(exact(to.q[m - 1]) - exact(from.q[m - 1]));
+    const bool revolute = robot_.joints[m - 1].type == JointType::kRevolute;
+    const Rational weight = revolute ? hull.axis_radius[m - 1] : Rational(1);
+    curvature += weight * increment * (2 * revolute_before + (revolute ? increment : Rational(0)));
+    if (revolute) revolute_before += increment;
+  }
+  // Each placed point is within placement_error of its exact place (proofs/fk-rounding.md).
+  const Rational chord_allowed =
+      exact(claimed) - 2 * exact(certificate_.placement_error) - curvature / 3;
+  if (chord_allowed < 0) return false;
+  const Rational chord_allowed_squared = chord_allowed * chord_allowed;
+  for (std::size_t v = 0; v < placed_from.size(); ++v) {
+    Rational square = 0;
+    for (int k = 0; k < 3; ++k) {
+      const Rational d = exact(placed_to[v][k]) - exact(placed_from[v][k]);
+      square += d * d;
+    }
+    if (square > chord_allowed_squared) return false;
+  }
+  return true;
+}
+
 void Checker::check_segment(const SegmentCertificate& segment,
                             const motion::SegmentTrajectory& planned) {
   const std::string where_segment = "segment " + std::to_string(segment.number);
@@ -379,6 +440,7 @@ void Checker::check_segment(const SegmentCertificate& segment,
     coverage_complete_ = false;  // fine for a path stopped by an error; not for a safety claim
   }
   std::vector<Rational> previous_radius;
+  std::vector<std::vector<Eigen::Vector3d>> previous_placed, placed;
   const StepCertificate* previous = nullptr;
   for (std::size_t k = 0; k < segment.steps.size(); ++k) {
     const StepCertificate& step = segment.steps[k];
@@ -401,13 +463,14 @@ void Checker::check_segment(const SegmentCertificate& segment,
     if (!expected || expected->size() != step.q.size() || *expected != step.q) {
       fail(where + ": the configuration is not the trajectory's at this parameter");
     }
-    std::vector<Rational> radius = check_step(step, where);
+    std::vector<Rational> radius = check_step(step, where, placed);
     if (previous != nullptr) {
-      check_transition(*previous, step, previous_radius, radius,
+      check_transition(*previous, step, previous_radius, radius, previous_placed, placed, cp,
                        where_segment + " steps " + std::to_string(previous->step) + "-" +
                            std::to_string(step.step));
     }
     previous_radius = std::move(radius);
+    std::swap(previous_placed, placed);
     previous = &step;
     if (step.step == certificate_.collision_step) collision_step_q_ = step.q;
   }

@@ -10,6 +10,7 @@
 #include <Eigen/SVD>
 
 #include "grpvss/certify/cell_probe.hpp"
+#include "grpvss/certify/joint_linear_motion_bound.hpp"
 #include "grpvss/certify/interference_episodes.hpp"
 #include "grpvss/certify/motion_clearance.hpp"
 #include "grpvss/certify/robot_cell.hpp"
@@ -136,10 +137,19 @@ class PathVerifier {
   StepCertificate certificate_step(const ProbeResult& probe, int index, double parameter) const;
   bool march_segment(const SegmentPath& path, int segment_number);
   double predicted_ptp_step(const SegmentPath& path, double s, double step) const;
+  /// `joint_linear`: the joints move along the straight line between the two configurations
+  /// (a CP step, proofs/cp-joint-path.md#model), so the chord bound may be used.
   TransitionRecord judge_transition(const ProbeResult& from, const ProbeResult& to,
-                                    bool cut_by_segment_end) const;
+                                    bool cut_by_segment_end, bool joint_linear) const;
   bool cp_model_holds(const SegmentPath& path, double s0, const Eigen::VectorXd& q0, double s1,
-                      const Eigen::VectorXd& q1);
+                      const Eigen::VectorXd& q1) {
+    return cp_model_deviation(path, s0, q0, s1, q1) <= 1.0;
+  }
+  /// How far the joint-linear motion strays from the commanded line, as a multiple of what
+  /// the CP model allows (the largest of the position and orientation ratios at the sampled
+  /// fractions): the model holds iff it is <= 1.
+  double cp_model_deviation(const SegmentPath& path, double s0, const Eigen::VectorXd& q0,
+                            double s1, const Eigen::VectorXd& q1);
   /// The longest step from s (to `resolution`) over which cp_model_holds, found by bisection
   /// below s_failing (where it fails); from current_.q. Proposals only: the march decides.
   double cp_model_reach(const SegmentPath& path, double s, double s_failing, double resolution);
@@ -169,6 +179,10 @@ class PathVerifier {
   std::vector<double> previous_radii_;
   std::vector<double> proposal_weights_;  ///< [hull * joints + joint - 1]: M_h's coefficients
   double previous_step_ = 1.0;
+  /// The last trial that failed the CP model: its start, length and deviation (jump test).
+  double failed_model_from_ = -1.0;
+  double failed_model_step_ = 0.0;
+  double failed_model_deviation_ = 0.0;
   double previous_slack_ = 0.0;  ///< of the last accepted certified transition
   bool basic_resolution_mode_ = false;  ///< after an uncertified step, until one certifies  ///< max |p_L| over the last link's hulls (at least 1)
   long long probes_ = 0;
@@ -318,16 +332,25 @@ void PathVerifier::flush_certificate_step() {
   pending_certificate_step_.reset();
 }
 
-// proof: proofs/two-ball-cover.md#corollary-step, proofs/motion-bound.md#lemma-motion-bound
+// proof: proofs/two-ball-cover.md#corollary-step, proofs/motion-bound.md#lemma-motion-bound,
+// proofs/motion-bound.md#lemma-joint-linear-chord
 TransitionRecord PathVerifier::judge_transition(const ProbeResult& from, const ProbeResult& to,
-                                                bool cut_by_segment_end) const {
+                                                bool cut_by_segment_end, bool joint_linear) const {
   TransitionRecord record;
   record.certified = true;
   const Eigen::VectorXd dq = to.q - from.q;
   const double two_delta = 2.0 * cell_.tolerance();
   for (std::size_t i = 0; i < cell_.hulls().size(); ++i) {
     const LinkHull& hull = cell_.hulls()[i];
-    const double bound = cell_.radii().hull_motion_bound(hull.link, hull.hull, dq);
+    double bound = cell_.radii().hull_motion_bound(hull.link, hull.hull, dq);
+    if (joint_linear && bound > 0.0) {
+      // Joints that undo each other's sweep (a roll joint keeping the tool's orientation on a
+      // CP line) move the hull far less than the sum of their sweeps: the chord sees that.
+      bound = std::min(bound, joint_linear_motion_bound(
+                                  cell_.radii(), hull.link, hull.hull, hull.raw_L, from.q,
+                                  from.X_WL[hull.link], to.q, to.X_WL[hull.link],
+                                  cell_.placement_error()));
+    }
     const double allowance = allowance_down(from.hulls[i].radius, to.hulls[i].radius);
     GoverningTerm governing = GoverningTerm::kClearance;
     if (from.hulls[i].expanded_interferes || to.hulls[i].expanded_interferes) {
@@ -373,23 +396,27 @@ double PathVerifier::cp_model_reach(const SegmentPath& path, double s, double s_
 // The CP model (proofs/cp-joint-path.md#model): the joints move linearly between the two
 // samples; the end effector of that motion must stay near the commanded line. A step that
 // fails is subdivided by the caller; a jump that survives subdivision is error 7.
-bool PathVerifier::cp_model_holds(const SegmentPath& path, double s0, const Eigen::VectorXd& q0,
-                                  double s1, const Eigen::VectorXd& q1) {
+double PathVerifier::cp_model_deviation(const SegmentPath& path, double s0,
+                                        const Eigen::VectorXd& q0, double s1,
+                                        const Eigen::VectorXd& q1) {
   // Position: the tolerance (times a fraction). Orientation: the angle that moves the farthest
   // point of the last link's hulls by that much (a joint-4 wrap of 360 degrees moves no
   // origin but sweeps the whole tool).
   const double limit = options_.cp_deviation_fraction * options_.tolerance;
   const double angle_limit = limit / end_link_reach_;
+  double deviation = 0.0;
   for (const double fraction : {0.25, 0.5, 0.75}) {
     const Eigen::VectorXd q_mid = q0 + fraction * (q1 - q0);
     const Eigen::Isometry3d X_WE_joint_linear = kinematics::end_effector_pose(cell_.chain(), q_mid);
     const Eigen::Isometry3d X_WE_line = path.line().pose_at(s0 + fraction * (s1 - s0));
-    if ((X_WE_joint_linear.translation() - X_WE_line.translation()).norm() > limit) return false;
     const Eigen::AngleAxisd rotation_error(X_WE_line.linear().transpose() *
                                            X_WE_joint_linear.linear());
-    if (std::abs(rotation_error.angle()) > angle_limit) return false;
+    deviation = std::max({deviation,
+                          (X_WE_joint_linear.translation() - X_WE_line.translation()).norm() / limit,
+                          std::abs(rotation_error.angle()) / angle_limit});
+    if (!(deviation <= 1.0)) return deviation;  // NaN too: the model fails
   }
-  return true;
+  return deviation;
 }
 
 std::vector<double> PathVerifier::thesis_allowed_displacements(const Eigen::VectorXd& q) {
@@ -505,11 +532,16 @@ bool PathVerifier::march_segment(const SegmentPath& path, int segment_number) {
       step = std::max({predicted, previous_slack_ >= 1.5 ? step : 0.0,
                        std::min(certify_floor, end - s)});
     }
+    const bool first_trial = !retrying;  // of this step (not a shrunk retry)
     retrying = true;
     const double proposed = step;
     double s1 = 0.0;
     if (certified()) {
       s1 = std::min(end, s + step);
+      // A sliver left before the segment's end would cost a probe of its own: take it now
+      // (the transition still decides). Only on a first trial: a shrunk retry must not be
+      // stretched back to the same rejected end.
+      if (first_trial && end - s1 < 0.25 * step) s1 = end;
     } else {
       s1 = thesis_next_parameter(path, s, current_.q, step);
     }
@@ -519,16 +551,27 @@ bool PathVerifier::march_segment(const SegmentPath& path, int segment_number) {
                 motion::thesis_error_text(5, segment_number));
       return false;
     }
+    double model_deviation = 0.0;  ///< of the CP model over this step (certified CP only)
     if (path.is_cp() && certified()) {
-      if (!cp_model_holds(path, s, current_.q, s1, *q1)) {
+      model_deviation = cp_model_deviation(path, s, current_.q, s1, *q1);
+      if (!(model_deviation <= 1.0)) {
         if (proposed > min_step) {
-          step = (s1 - s) / 2.0;
-          // A step far shorter than the last one this segment accepted failing too points at
-          // a joint jump ahead: halving and growing again would crowd the report with proven
-          // steps creeping up to it. Locate it (IK and FK only, no probe) and aim just before.
-          // (previous_radii_ is empty until this segment accepts a step; previous_step_ is
-          // that step's length.)
-          if (!previous_radii_.empty() && s1 - s < 0.25 * previous_step_) {
+          // A smooth joint path strays from the line by about the square of the step: a
+          // step a little too long shrinks just inside the model. A deviation many times
+          // the model's is halved as before: it may be a jump, whose deviation does not shrink
+          // with the step (the test below must see the failing steps get shorter gradually).
+          step = (s1 - s) * (model_deviation < 4.0 ? 0.9 / std::sqrt(model_deviation) : 0.5);
+          // A step far shorter than the last one this segment accepted failing too, or a
+          // deviation that did not shrink with the step, points at a joint jump ahead:
+          // halving and growing again would crowd the report with proven steps creeping up
+          // to it. Locate it (IK and FK only, no probe) and aim just before. (previous_radii_
+          // is empty until this segment accepts a step; previous_step_ is that step's length.)
+          const bool deviation_kept = failed_model_from_ == s && s1 - s < failed_model_step_ &&
+                                      model_deviation >= 0.5 * failed_model_deviation_;
+          failed_model_from_ = s;
+          failed_model_step_ = s1 - s;
+          failed_model_deviation_ = model_deviation;
+          if (!previous_radii_.empty() && (s1 - s < 0.25 * previous_step_ || deviation_kept)) {
             step = cp_model_reach(path, s, s1, min_step);
             if (!(step > min_step)) step = 0.0;  // fails at any step: the jump is here
           }
@@ -551,7 +594,7 @@ bool PathVerifier::march_segment(const SegmentPath& path, int segment_number) {
     // that interferes is evaluated again with them below.
     probe_.probe(*q1, /*with_points=*/false, trial_);
     const bool cut = s1 >= end;
-    TransitionRecord transition = judge_transition(current_, trial_, cut);
+    TransitionRecord transition = judge_transition(current_, trial_, cut, path.is_cp());
     const double taken = s1 - s;
     if (!certified()) {
       std::fill(transition.governing.begin(), transition.governing.end(),
@@ -601,6 +644,10 @@ bool PathVerifier::march_segment(const SegmentPath& path, int segment_number) {
       step = taken * std::clamp(0.95 * basic_slack, 1.0, 4.0);
     }
     if (transition.certified) basic_resolution_mode_ = false;
+    if (model_deviation > 0.0) {
+      // Nor should the next CP proposal outgrow the model (the square law again).
+      step = std::min(step, taken * std::max(1.0, 0.95 / std::sqrt(model_deviation)));
+    }
     if (trial_.any_expanded_interference) {
       // Only the points are added: the radii and evidence the transition was judged on stay.
       probe_.add_interference_points(trial_);
@@ -767,3 +814,4 @@ VerificationRun verify(const RobotModel& robot, const Environment& environment,
 }
 
 }  // namespace grpvss::certify
+

@@ -41,7 +41,7 @@ TEST(VerifySummaryCli, TheSamplesEpisodesArePrintedBetweenTheFirstCollisionAndTh
       "14.139 s), unexpanded collides at steps 5-13\n"
       "interference: link 4 hull 0 / obstacle 0, steps 4-5 (9.303-9.729 s, clear by "
       "10.156 s), expanded hull only\n"
-      "error 7 (segment 3, step 26)";
+      "error 7 (segment 3, step 24)";
   EXPECT_NE(text.find(expected), std::string::npos) << text;
 }
 

@@ -51,6 +51,8 @@ struct HullState {
 
 struct ProbeResult {
   Eigen::VectorXd q;
+  /// X_WL[i]: link frame i's pose as forward kinematics computed it for q (i = 0..N).
+  std::vector<Eigen::Isometry3d> X_WL;
   std::vector<HullState> hulls;  ///< index = RobotCell::hulls() index
   std::vector<PairEvidence> evidence;
   std::vector<InterferencePoint> interference_points;  ///< filled only when requested

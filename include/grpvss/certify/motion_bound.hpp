@@ -40,6 +40,9 @@ class HullRadiusTable {
   /// Max over the link's hulls of hull_motion_bound.
   double link_motion_bound(int link, const Eigen::VectorXd& dq) const;
 
+  /// The type of joint `joint` (1-based).
+  JointType joint_type(int joint) const { return joint_types_.at(joint - 1); }
+
   int link_count() const { return static_cast<int>(radius_.size()); }
   int hull_count(int link) const { return static_cast<int>(radius_[link].size()); }
 
