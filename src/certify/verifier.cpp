@@ -138,7 +138,8 @@ class PathVerifier {
   bool march_segment(const SegmentPath& path, int segment_number);
   double predicted_ptp_step(const SegmentPath& path, double s, double step) const;
   /// `joint_linear`: the joints move along the straight line between the two configurations
-  /// (a CP step, proofs/cp-joint-path.md#model), so the chord bound may be used.
+  /// (a CP step, proofs/cp-joint-path.md#model), so the chord bound may be used (certified
+  /// mode only: the thesis mode's bounds are for comparison and cost no extra work).
   TransitionRecord judge_transition(const ProbeResult& from, const ProbeResult& to,
                                     bool cut_by_segment_end, bool joint_linear) const;
   bool cp_model_holds(const SegmentPath& path, double s0, const Eigen::VectorXd& q0, double s1,
@@ -594,7 +595,7 @@ bool PathVerifier::march_segment(const SegmentPath& path, int segment_number) {
     // that interferes is evaluated again with them below.
     probe_.probe(*q1, /*with_points=*/false, trial_);
     const bool cut = s1 >= end;
-    TransitionRecord transition = judge_transition(current_, trial_, cut, path.is_cp());
+    TransitionRecord transition = judge_transition(current_, trial_, cut, path.is_cp() && certified());
     const double taken = s1 - s;
     if (!certified()) {
       std::fill(transition.governing.begin(), transition.governing.end(),
