@@ -90,6 +90,12 @@ class CpLineCertificate : public ::testing::Test {
                                                    ws1.X_WL[hull.link], cell_->placement_error());
     return {sum, chord};
   }
+  static bool names(const CheckReport& report, const std::string& failure) {
+    for (const std::string& f : report.failures) {
+      if (f.find(failure) != std::string::npos) return true;
+    }
+    return false;
+  }
   test::Ibm7545Run run_;
   nlohmann::json document_;
   std::optional<RobotCell> cell_;
@@ -126,11 +132,7 @@ TEST_F(CpLineCertificate, CheckerRejectsACpBoundBelowTheChordBound) {
   bound = chord * 0.98;
   const CheckReport report = check(document_);
   EXPECT_FALSE(report.accepted);
-  bool named = false;
-  for (const std::string& failure : report.failures) {
-    named |= failure.find("below both the exact bound and the chord bound") != std::string::npos;
-  }
-  EXPECT_TRUE(named);
+  EXPECT_TRUE(names(report, "below both the exact bound and the chord bound"));
   // Just at the chord bound it holds (the checker decides the same inequality exactly).
   bound = chord;
   EXPECT_TRUE(check(document_).accepted);
@@ -147,11 +149,7 @@ TEST_F(CpLineCertificate, CheckerAllowsTheChordBoundOnlyOnCpSteps) {
       document_["segments"][0]["steps"][k]["to_next"]["hull_motion_bounds"][i] = 0.9 * sum;
       const CheckReport report = check(document_);
       EXPECT_FALSE(report.accepted);
-      bool named = false;
-      for (const std::string& failure : report.failures) {
-        named |= failure.find("the recorded motion bound is below the exact bound") != std::string::npos;
-      }
-      EXPECT_TRUE(named);
+      EXPECT_TRUE(names(report, "the recorded motion bound is below the exact bound"));
       return;
     }
   }
