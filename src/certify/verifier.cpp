@@ -10,8 +10,8 @@
 #include <Eigen/SVD>
 
 #include "grpvss/certify/cell_probe.hpp"
-#include "grpvss/certify/joint_linear_motion_bound.hpp"
 #include "grpvss/certify/interference_episodes.hpp"
+#include "grpvss/certify/joint_linear_motion_bound.hpp"
 #include "grpvss/certify/motion_clearance.hpp"
 #include "grpvss/certify/robot_cell.hpp"
 #include "grpvss/certify/step_proposal.hpp"
@@ -155,6 +155,10 @@ class PathVerifier {
   /// below s_failing (where it fails); from current_.q. Proposals only: the march decides.
   double cp_model_reach(const SegmentPath& path, double s, double s_failing, double resolution);
   bool near_singularity(const Eigen::VectorXd& q);
+  /// A joint at (within kLimitBand of) its limit at s, and the line unreachable just ahead:
+  /// a stretch shorter than any step whose IK samples on both sides succeed
+  /// (proofs/cp-joint-path.md#ik-failure; the long oracle run's case 1199).
+  bool unreachable_next_to_a_limit(const SegmentPath& path, double s, const Eigen::VectorXd& q);
   double thesis_next_parameter(const SegmentPath& path, double s, const Eigen::VectorXd& q,
                                double previous_step);
   std::vector<double> thesis_allowed_displacements(const Eigen::VectorXd& q);
@@ -381,6 +385,27 @@ bool PathVerifier::near_singularity(const Eigen::VectorXd& q) {
   return svd.singularValues().minCoeff() < options_.cp_singular_value_threshold;
 }
 
+bool PathVerifier::unreachable_next_to_a_limit(const SegmentPath& path, double s,
+                                               const Eigen::VectorXd& q) {
+  // Joint values are clamped to their limits by PTP targets, so a CP segment may start with a
+  // joint exactly at one; elsewhere a step landing on a limit is rare. Only then the line is
+  // probed, at distances far below a step (IK only, no probe).
+  constexpr double kLimitBand = 1e-6;
+  bool at_limit = false;
+  for (int j = 0; j < robot_.joint_count(); ++j) {
+    const Joint& joint = robot_.joints[static_cast<std::size_t>(j)];
+    at_limit |= std::abs(q[j] - joint.minimum) <= kLimitBand ||
+                std::abs(q[j] - joint.maximum) <= kLimitBand;
+  }
+  if (!at_limit) return false;
+  const double left = path.parameter_end() - s;
+  for (const double ahead : {options_.tolerance / 64.0, options_.tolerance / 8.0}) {
+    if (!(ahead < left)) break;
+    if (!path.q_at(s + ahead, q)) return true;
+  }
+  return false;
+}
+
 double PathVerifier::cp_model_reach(const SegmentPath& path, double s, double s_failing,
                                     double resolution) {
   // Invariant: the model holds from s to s + low (trivially at 0) and fails to s_failing.
@@ -516,6 +541,7 @@ bool PathVerifier::march_segment(const SegmentPath& path, int segment_number) {
   double s = 0.0;
   double step = end;
   previous_slack_ = 0.0;
+  failed_model_from_ = -1.0;  // no failed CP trial in this segment yet
   bool retrying = false;  ///< the proposal is a shrunk retry of a rejected one
   while (s < end) {
     if (probes_ >= options_.max_probes) {
@@ -547,7 +573,8 @@ bool PathVerifier::march_segment(const SegmentPath& path, int segment_number) {
       s1 = thesis_next_parameter(path, s, current_.q, step);
     }
     const std::optional<Eigen::VectorXd> q1 = path.q_at(s1, current_.q);
-    if (!q1) {
+    if (!q1 || (first_trial && path.is_cp() && certified() &&
+                unreachable_next_to_a_limit(path, s, current_.q))) {
       add_error(5, segment_number,
                 motion::thesis_error_text(5, segment_number));
       return false;
@@ -815,4 +842,3 @@ VerificationRun verify(const RobotModel& robot, const Environment& environment,
 }
 
 }  // namespace grpvss::certify
-
