@@ -66,31 +66,37 @@ class Ibm7545Ik final : public InverseKinematics {
     if (std::abs(c2) > 1 + 1e-12) return {IkStatus::kOutOfWorkspace, {}};
     c2 = std::clamp(c2, -1.0, 1.0);
 
-    IkSolution best{IkStatus::kOutOfWorkspace, {}};
+    // Fixed-size candidates (no allocation per branch: CP lines solve the IK every 0.5 in.).
+    const Eigen::Vector4d near = q_near;
+    const double bearing = std::atan2(p.y(), p.x());
+    const double elbow = std::acos(c2);
+    bool solved = false;
+    Eigen::Vector4d best_q;
     double best_distance = std::numeric_limits<double>::infinity();
     for (const double branch : {1.0, -1.0}) {
-      const double theta2 = branch * std::acos(c2);
-      const double theta1 = std::atan2(p.y(), p.x()) -
-                            std::atan2(a2 * std::sin(theta2), a1 + a2 * std::cos(theta2));
+      const double theta2 = branch * elbow;
+      const double theta1 = bearing - std::atan2(a2 * std::sin(theta2), a1 + a2 * std::cos(theta2));
       // yaw = theta1 + theta2 - theta3_offset - theta4, theta_i = dh_i.theta + q_i.
       const double theta4 = theta1 + theta2 - dh3.theta - yaw;
-      Eigen::VectorXd q(4);
+      Eigen::Vector4d q;
       q[2] = std::clamp(q3, joints_[2].minimum, joints_[2].maximum);
-      if (!fit_revolute(theta1 - dh1.theta, joints_[0].minimum, joints_[0].maximum, q_near[0],
+      if (!fit_revolute(theta1 - dh1.theta, joints_[0].minimum, joints_[0].maximum, near[0],
                         q[0]) ||
-          !fit_revolute(theta2 - dh2.theta, joints_[1].minimum, joints_[1].maximum, q_near[1],
+          !fit_revolute(theta2 - dh2.theta, joints_[1].minimum, joints_[1].maximum, near[1],
                         q[1]) ||
-          !fit_revolute(theta4 - dh4.theta, joints_[3].minimum, joints_[3].maximum, q_near[3],
+          !fit_revolute(theta4 - dh4.theta, joints_[3].minimum, joints_[3].maximum, near[3],
                         q[3])) {
         continue;
       }
-      const double distance = (q - q_near).norm();
+      const double distance = (q - near).norm();
       if (distance < best_distance) {
         best_distance = distance;
-        best = {IkStatus::kSolved, q};
+        best_q = q;
+        solved = true;
       }
     }
-    return best;
+    if (!solved) return {IkStatus::kOutOfWorkspace, {}};
+    return {IkStatus::kSolved, Eigen::VectorXd(best_q)};
   }
 
   std::string name() const override { return "IBM 7545 closed form"; }
