@@ -35,7 +35,9 @@ struct HullRecord {
 
 struct TransitionRecord {
   bool certified = false;
-  std::vector<double> hull_motion_bounds;  ///< M_h, same order as StepCertificate::hulls
+  /// M_h, or on certified CP steps min(M_h, L_h) with the chord bound L_h
+  /// (proofs/motion-bound.md#lemma-joint-linear-chord); same order as StepCertificate::hulls
+  std::vector<double> hull_motion_bounds;
   std::vector<double> hull_allowances;     ///< r_k + r_{k+1}
   std::vector<GoverningTerm> governing;
 };
