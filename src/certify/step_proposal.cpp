@@ -1,6 +1,7 @@
 #include "grpvss/certify/step_proposal.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace grpvss::certify {
@@ -57,6 +58,23 @@ double predicted_ptp_step(const std::function<Eigen::VectorXd(double)>& joints_a
     (fits(middle) ? low : high) = middle;
   }
   return low;
+}
+
+double cp_model_retry_fraction(double deviation) {
+  return deviation < 4.0 ? 0.9 / std::sqrt(deviation) : 0.5;  // NaN < 4 is false
+}
+
+double cp_model_growth_cap(double deviation) {
+  if (!(deviation > 0.0)) return std::numeric_limits<double>::infinity();
+  return std::max(1.0, 0.95 / std::sqrt(deviation));
+}
+
+bool CpModelFailures::record(double s, double length, double deviation) {
+  const bool kept = from_ == s && length < length_ && deviation >= 0.5 * deviation_;
+  from_ = s;
+  length_ = length;
+  deviation_ = deviation;
+  return kept;
 }
 
 }  // namespace grpvss::certify

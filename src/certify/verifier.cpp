@@ -184,10 +184,7 @@ class PathVerifier {
   std::vector<double> previous_radii_;
   std::vector<double> proposal_weights_;  ///< [hull * joints + joint - 1]: M_h's coefficients
   double previous_step_ = 1.0;
-  /// The last trial that failed the CP model: its start, length and deviation (jump test).
-  double failed_model_from_ = -1.0;
-  double failed_model_step_ = 0.0;
-  double failed_model_deviation_ = 0.0;
+  CpModelFailures model_failures_;  ///< the failed CP-model trials from the current step
   double previous_slack_ = 0.0;  ///< of the last accepted certified transition
   bool basic_resolution_mode_ = false;  ///< after an uncertified step, until one certifies  ///< max |p_L| over the last link's hulls (at least 1)
   long long probes_ = 0;
@@ -541,7 +538,7 @@ bool PathVerifier::march_segment(const SegmentPath& path, int segment_number) {
   double s = 0.0;
   double step = end;
   previous_slack_ = 0.0;
-  failed_model_from_ = -1.0;  // no failed CP trial in this segment yet
+  model_failures_.reset();
   bool retrying = false;  ///< the proposal is a shrunk retry of a rejected one
   while (s < end) {
     if (probes_ >= options_.max_probes) {
@@ -584,21 +581,13 @@ bool PathVerifier::march_segment(const SegmentPath& path, int segment_number) {
       model_deviation = cp_model_deviation(path, s, current_.q, s1, *q1);
       if (!(model_deviation <= 1.0)) {
         if (proposed > min_step) {
-          // A smooth joint path strays from the line by about the square of the step: a
-          // step a little too long shrinks just inside the model. A deviation many times
-          // the model's is halved as before: it may be a jump, whose deviation does not shrink
-          // with the step (the test below must see the failing steps get shorter gradually).
-          step = (s1 - s) * (model_deviation < 4.0 ? 0.9 / std::sqrt(model_deviation) : 0.5);
+          step = (s1 - s) * cp_model_retry_fraction(model_deviation);
           // A step far shorter than the last one this segment accepted failing too, or a
           // deviation that did not shrink with the step, points at a joint jump ahead:
           // halving and growing again would crowd the report with proven steps creeping up
           // to it. Locate it (IK and FK only, no probe) and aim just before. (previous_radii_
           // is empty until this segment accepts a step; previous_step_ is that step's length.)
-          const bool deviation_kept = failed_model_from_ == s && s1 - s < failed_model_step_ &&
-                                      model_deviation >= 0.5 * failed_model_deviation_;
-          failed_model_from_ = s;
-          failed_model_step_ = s1 - s;
-          failed_model_deviation_ = model_deviation;
+          const bool deviation_kept = model_failures_.record(s, s1 - s, model_deviation);
           if (!previous_radii_.empty() && (s1 - s < 0.25 * previous_step_ || deviation_kept)) {
             step = cp_model_reach(path, s, s1, min_step);
             if (!(step > min_step)) step = 0.0;  // fails at any step: the jump is here
@@ -672,10 +661,8 @@ bool PathVerifier::march_segment(const SegmentPath& path, int segment_number) {
       step = taken * std::clamp(0.95 * basic_slack, 1.0, 4.0);
     }
     if (transition.certified) basic_resolution_mode_ = false;
-    if (model_deviation > 0.0) {
-      // Nor should the next CP proposal outgrow the model (the square law again).
-      step = std::min(step, taken * std::max(1.0, 0.95 / std::sqrt(model_deviation)));
-    }
+    // Nor should the next CP proposal outgrow the model (the square law again).
+    step = std::min(step, taken * cp_model_growth_cap(model_deviation));
     if (trial_.any_expanded_interference) {
       // Only the points are added: the radii and evidence the transition was judged on stay.
       probe_.add_interference_points(trial_);

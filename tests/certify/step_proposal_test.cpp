@@ -77,3 +77,48 @@ TEST(StepProposal, TheTightestHullGovernsAndContactOrRefiningHullsAreIgnored) {
 
 }  // namespace
 }  // namespace grpvss::certify
+
+namespace grpvss::certify {
+namespace {
+
+// A trial 1.44x over the model's deviation shrinks to 0.9 / 1.2 = 0.75 of itself; 4x and more,
+// or NaN, is halved (a jump does not follow the square law).
+TEST(StepProposal, CpModelRetryFollowsTheSquareLawBelowFourTimesTheModel) {
+  EXPECT_DOUBLE_EQ(cp_model_retry_fraction(1.44), 0.75);
+  EXPECT_DOUBLE_EQ(cp_model_retry_fraction(1.0 + 1e-12), 0.9 / std::sqrt(1.0 + 1e-12));
+  EXPECT_DOUBLE_EQ(cp_model_retry_fraction(3.24), 0.5);  // 0.9 / 1.8
+  EXPECT_DOUBLE_EQ(cp_model_retry_fraction(4.0), 0.5);
+  EXPECT_DOUBLE_EQ(cp_model_retry_fraction(22.047), 0.5);
+  EXPECT_DOUBLE_EQ(cp_model_retry_fraction(std::nan("")), 0.5);
+}
+
+// After a step that used 0.25 of the model, the next may be 0.95 / 0.5 = 1.9 times as long;
+// one at the model's limit does not shrink the next proposal; a straight one is not capped.
+TEST(StepProposal, CpModelCapsTheNextProposalByTheSquareLaw) {
+  EXPECT_DOUBLE_EQ(cp_model_growth_cap(0.25), 1.9);
+  EXPECT_DOUBLE_EQ(cp_model_growth_cap(1.0), 1.0);
+  EXPECT_EQ(cp_model_growth_cap(0.0), std::numeric_limits<double>::infinity());
+}
+
+// The sample path's joint-4 wrap keeps a deviation of 22 whatever the step: the second, shorter
+// failure from the same start is a jump. A smooth failure that drops fourfold is not; nor is
+// a failure from another start, or after reset().
+TEST(StepProposal, CpModelFailuresTellAJumpFromAStepTooLong) {
+  CpModelFailures wrap;
+  EXPECT_FALSE(wrap.record(5.8, 6.1, 22.0));
+  EXPECT_TRUE(wrap.record(5.8, 3.0, 22.0));
+
+  CpModelFailures quartered;
+  EXPECT_FALSE(quartered.record(0.0, 8.0, 4.0));
+  EXPECT_FALSE(quartered.record(0.0, 4.0, 1.1));  // 1.1 < 4 / 2: the square law holds
+
+  CpModelFailures moved;
+  EXPECT_FALSE(moved.record(0.0, 8.0, 22.0));
+  EXPECT_FALSE(moved.record(2.0, 4.0, 22.0));  // another start
+  moved.reset();
+  EXPECT_FALSE(moved.record(2.0, 2.0, 22.0));  // forgotten
+  EXPECT_FALSE(moved.record(2.0, 3.0, 22.0));  // not shorter
+}
+
+}  // namespace
+}  // namespace grpvss::certify

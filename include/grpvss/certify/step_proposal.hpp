@@ -44,4 +44,32 @@ double predicted_ptp_step(const std::function<Eigen::VectorXd(double)>& joints_a
                           const std::vector<ProposalHull>& hulls, bool has_trend,
                           double previous_step);
 
+/// \brief CP steps against the joint-path model (proofs/cp-joint-path.md#model): a smooth
+/// joint-linear path strays from the line by about the square of the step. A trial that failed
+/// the model by `deviation` (> 1, a multiple of the allowed deviation) is retried at this
+/// fraction of its length: 0.9 / sqrt(deviation) just inside the model for deviation < 4,
+/// halved above (a jump's deviation does not follow the square law), halved for NaN.
+double cp_model_retry_fraction(double deviation);
+
+/// \brief After an accepted CP step whose model deviation was `deviation` (<= 1), the next
+/// proposal is at most this multiple of that step (>= 1; +inf for a zero deviation).
+double cp_model_growth_cap(double deviation);
+
+/// \brief The failed CP-model trials from one step start, to tell a joint jump from a step that
+/// is merely too long: a shorter trial from the same start whose deviation did not drop below
+/// half of the previous one's does not follow the square law.
+class CpModelFailures {
+ public:
+  /// Forgets every failure (a new segment).
+  void reset() { from_ = -1.0; }
+  /// Records a failed trial [s, s + length] and returns whether it kept the deviation of the
+  /// previous failed trial from s.
+  bool record(double s, double length, double deviation);
+
+ private:
+  double from_ = -1.0;
+  double length_ = 0.0;
+  double deviation_ = 0.0;
+};
+
 }  // namespace grpvss::certify
