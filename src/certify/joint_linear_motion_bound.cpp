@@ -20,22 +20,18 @@ double hull_curvature_bound(const HullRadiusTable& radii, int link, int hull,
                             const Eigen::VectorXd& q_from, const Eigen::VectorXd& q_to) {
   // proof: proofs/motion-bound.md#lemma-joint-linear-chord
   const int joints = std::min<int>(link, static_cast<int>(q_from.size()));
-  // Weights in round-to-nearest first: radius() only reads the table.
-  std::vector<double> weight(static_cast<std::size_t>(joints));
-  std::vector<char> revolute(static_cast<std::size_t>(joints));
-  for (int m = 1; m <= joints; ++m) {
-    weight[m - 1] = radii.motion_bound_weight(link, hull, m);
-    revolute[m - 1] = radii.joint_type(m) == JointType::kRevolute;
-  }
   r::UpwardRoundingScope upward;
   double bound = 0.0;
   double revolute_before = 0.0;  // sum_{j < m, j revolute} |dq_j|, rounded up
   for (int m = 1; m <= joints; ++m) {
+    // The weight (R_mh or 1) is read from the table: no arithmetic, so no rounding.
+    const double weight = radii.motion_bound_weight(link, hull, m);
+    const bool revolute = radii.joint_type(m) == JointType::kRevolute;
     const double increment = abs_difference_up(q_from[m - 1], q_to[m - 1]);
     double factor = r::mul_up(2.0, revolute_before);
-    if (revolute[m - 1]) factor = r::add_up(factor, increment);
-    bound = r::add_up(bound, r::mul_up(weight[m - 1], r::mul_up(increment, factor)));
-    if (revolute[m - 1]) revolute_before = r::add_up(revolute_before, increment);
+    if (revolute) factor = r::add_up(factor, increment);
+    bound = r::add_up(bound, r::mul_up(weight, r::mul_up(increment, factor)));
+    if (revolute) revolute_before = r::add_up(revolute_before, increment);
   }
   return bound;
 }
