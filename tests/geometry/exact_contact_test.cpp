@@ -15,6 +15,7 @@
 #include "grpvss/geometry/gjk.hpp"
 #include "support/geometry_reference.hpp"
 #include "support/random_shapes.hpp"
+#include "support/rounding_reference.hpp"
 
 namespace grpvss::geometry {
 namespace {
@@ -323,6 +324,39 @@ TEST(InterferencePoints, NonEmptyExactlyWhenNotSeparatedAndPointsLieInBoth) {
     }
   }
   EXPECT_GT(nonempty, 50);
+}
+
+TEST(InterferencePoints, EveryProperCrossingIsItsExactValueRoundedToNearest) {
+  // End to end through the error-bound filter and the exact path alike
+  // (proofs/interference.md#crossing-by-error-bound): each reported edge-face crossing whose
+  // edge ends lie strictly on opposite sides of its face's plane equals the GMP-rational
+  // reference crossing of that edge and plane, rounded to nearest.
+  int checked = 0;
+  for (const PairCase& c : random_pairs(2026, 600)) {
+    const ConvexPolytope A = ConvexPolytope::from_points(c.a);
+    const ConvexPolytope B = ConvexPolytope::from_points(c.b);
+    for (const auto& ip : interference_points(A, B)) {
+      const bool a_edge = ip.kind == InterferenceKind::kEdgeOfAOnFaceOfB;
+      if (!a_edge && ip.kind != InterferenceKind::kEdgeOfBOnFaceOfA) continue;
+      const ConvexPolytope& edges_of = a_edge ? A : B;
+      const ConvexPolytope& faces_of = a_edge ? B : A;
+      const auto& edge = edges_of.edges()[static_cast<std::size_t>(ip.feature_first)];
+      const auto& loop = faces_of.faces()[static_cast<std::size_t>(ip.feature_second)];
+      const auto& p = edges_of.vertices()[static_cast<std::size_t>(edge[0])];
+      const auto& q = edges_of.vertices()[static_cast<std::size_t>(edge[1])];
+      const auto& fv = faces_of.vertices();
+      const auto& f0 = fv[static_cast<std::size_t>(loop[0])];
+      const auto& f1 = fv[static_cast<std::size_t>(loop[1])];
+      const auto& f2 = fv[static_cast<std::size_t>(loop[2])];
+      if (testing::reference_plane_side(p, f0, f1, f2) *
+              testing::reference_plane_side(q, f0, f1, f2) >= 0) {
+        continue;  // an end point on the plane, or the edge in it: not a proper crossing
+      }
+      ++checked;
+      EXPECT_EQ(ip.point, testing::reference_crossing(p, q, f0, f1, f2)) << c.label;
+    }
+  }
+  EXPECT_GT(checked, 1000);
 }
 
 TEST(InterferencePoints, FaceSharingBoxesGiveExactlyTheCornersOfTheirIntersection) {

@@ -27,6 +27,7 @@
 
 #include "grpvss/geometry/convex_polytope.hpp"
 #include "grpvss/geometry/exact_contact.hpp"
+#include "grpvss/geometry/exact_rounding.hpp"
 #include "grpvss/geometry/separation_witness.hpp"
 
 namespace grpvss::geometry {
@@ -348,50 +349,51 @@ namespace {
 using Fast = CGAL::Mpzf;  // exact +, -, * of doubles, small values on the stack (no malloc)
 using Fast3 = std::array<Fast, 3>;
 
-/// An exact rational point num / den (den > 0), plus its round-to-nearest double image.
+/// An exact rational point num / den (den > 0), plus its round-to-nearest double image. A
+/// crossing rounded by the error-bound filter keeps its segment and face plane instead, and
+/// gets num / den only if a duplicate test needs them.
 struct ExactPoint {
   Fast3 num;
   Fast den;
   Eigen::Vector3d rounded;
-};
+  bool exact_known = true;
+  std::array<Eigen::Vector3d, 5> crossing;  // p, q, f0, f1, f2 while !exact_known
 
-/// num / den (den > 0) rounded to the nearest double (ties upward), decided exactly: q is the
-/// answer iff (q + prev(q)) / 2 <= num / den < (q + next(q)) / 2, tested by cross-multiplying.
-/// Deterministic in the exact value, so different roundings prove different exact values.
-double round_to_nearest(const Fast& num, const Fast& den) {
-  if (CGAL::is_zero(num)) return 0.0;
-  const double inf = std::numeric_limits<double>::infinity();
-  double q = CGAL::to_double(num) / CGAL::to_double(den);
-  if (!std::isfinite(q)) {
-    q = CGAL::to_double(Rational(static_cast<Rational>(num)) / static_cast<Rational>(den));
-  }
-  const Fast twice_num = num + num;
-  for (int step = 0; step < 64; ++step) {
-    const double below = std::nextafter(q, -inf);
-    const double above = std::nextafter(q, inf);
-    if (twice_num < (Fast(q) + Fast(below)) * den) {
-      q = below;
-    } else if (!(twice_num < (Fast(q) + Fast(above)) * den)) {
-      q = above;
-    } else {
-      return q;
+  /// X = (s_p q - s_q p) / (s_p - s_q), s_x = ((f1 - f0) x (f2 - f0)) . (x - f0).
+  void make_exact() {
+    if (exact_known) return;
+    const auto& [p_d, q_d, f0, f1, f2] = crossing;
+    const Fast3 n = cross(diff<Fast>(f1, f0), diff<Fast>(f2, f0));
+    const Fast s_p = dot(n, diff<Fast>(p_d, f0));
+    const Fast s_q = dot(n, diff<Fast>(q_d, f0));
+    const Fast3 p = lift<Fast>(p_d);
+    const Fast3 q = lift<Fast>(q_d);
+    for (int k = 0; k < 3; ++k) num[k] = s_p * q[k] - s_q * p[k];
+    den = s_p - s_q;
+    if (CGAL::sign(den) == CGAL::NEGATIVE) {
+      for (auto& c : num) c = -c;
+      den = -den;
     }
+    exact_known = true;
   }
-  throw std::logic_error("round_to_nearest did not converge");
-}
+};
 
 struct PointCollector {
   std::vector<std::pair<ExactPoint, InterferencePoint>> found;
 
   void add(ExactPoint x, InterferenceKind kind, int first, int second) {
-    if (x.den == Fast(1)) {
+    if (!x.exact_known) {
+      // rounded by crossing_rounded_by_error_bound already
+    } else if (x.den == Fast(1)) {
       for (int k = 0; k < 3; ++k) x.rounded[k] = CGAL::to_double(x.num[k]);
     } else {
-      for (int k = 0; k < 3; ++k) x.rounded[k] = round_to_nearest(x.num[k], x.den);
+      for (int k = 0; k < 3; ++k) x.rounded[k] = round_quotient_to_nearest(x.num[k], x.den);
     }
-    for (const auto& [y, ip] : found) {
+    for (auto& [y, ip] : found) {
       // Equal exact points round equally, so only equal roundings need the exact test.
       if (ip.kind != kind || y.rounded != x.rounded) continue;
+      x.make_exact();
+      y.make_exact();
       bool same = true;
       for (int k = 0; k < 3 && same; ++k) same = x.num[k] * y.den == y.num[k] * x.den;
       if (same) return;
@@ -406,7 +408,7 @@ struct PointCollector {
 };
 
 ExactPoint exact_vertex(const Eigen::Vector3d& v) {
-  return {lift<Fast>(v), Fast(1), v};
+  return {lift<Fast>(v), Fast(1), v, true, {}};
 }
 
 /// Per face of `faces_of`: the exact sign of n_f . (v - v_0) for every vertex v of
@@ -535,6 +537,8 @@ void edge_face_points(const Hull& edges_of, const Hull& faces_of, InterferenceKi
   std::vector<IV> value(ev.size());
   std::vector<char> have_value(ev.size());
   std::vector<int> side(ev.size());
+  std::vector<std::size_t> side_stamp(ev.size(), 0);
+  std::size_t face_stamp = 0;
   std::vector<IV3> m_iv;  // per face, reused
   std::vector<IV3> v_iv;
   std::vector<std::size_t> undecided;
@@ -552,22 +556,26 @@ void edge_face_points(const Hull& edges_of, const Hull& faces_of, InterferenceKi
     const EpickPoint f0(fv[loop[0]].x(), fv[loop[0]].y(), fv[loop[0]].z());
     const EpickPoint f1(fv[loop[1]].x(), fv[loop[1]].y(), fv[loop[1]].z());
     const EpickPoint f2(fv[loop[2]].x(), fv[loop[2]].y(), fv[loop[2]].z());
-    bool any_positive = false, any_nonpositive = false;
-    for (std::size_t v = 0; v < ev.size(); ++v) {
-      side[v] = static_cast<int>(CGAL::orientation(f0, f1, f2, ep[v]));
-      (side[v] > 0 ? any_positive : any_nonpositive) = true;
-    }
-    if (!any_nonpositive) continue;  // every edge strictly beyond the face plane
-    if (!any_positive && std::find(side.begin(), side.end(), 0) == side.end()) {
-      continue;  // every edge strictly behind it
-    }
-    FaceSides face(faces_of, ev, static_cast<int>(f));
-    std::fill(have_value.begin(), have_value.end(), 0);
+    // Plane sides are taken only for the end points of edges whose box meets the face's box
+    // (most edges of a large hull are nowhere near a given face): memoised for this face.
+    ++face_stamp;
+    const auto plane_side = [&](int v) {
+      if (side_stamp[v] != face_stamp) {
+        side[v] = static_cast<int>(CGAL::orientation(f0, f1, f2, ep[v]));
+        side_stamp[v] = face_stamp;
+      }
+      return side[v];
+    };
+    // The face's exact and interval data are built for its first candidate edge only.
+    std::optional<FaceSides> face;
     IV3 n;
     IV3 v0_iv;
-    m_iv.clear();
-    v_iv.clear();
-    {
+    const auto prepare_face = [&] {
+      if (face) return;
+      face.emplace(faces_of, ev, static_cast<int>(f));
+      std::fill(have_value.begin(), have_value.end(), 0);
+      m_iv.clear();
+      v_iv.clear();
       CGAL::Protect_FPU_rounding<true> guard;
       n = faces_of.face_normal<IV>(static_cast<int>(f));
       v0_iv = lift<IV>(fv[loop[0]]);
@@ -576,7 +584,7 @@ void edge_face_points(const Hull& edges_of, const Hull& faces_of, InterferenceKi
         v_iv.push_back(vk);
         m_iv.push_back(cross(n, minus(lift<IV>(fv[loop[(k + 1) % loop.size()]]), vk)));
       }
-    }
+    };
     const auto interval_value = [&](int v) -> const IV& {
       if (!have_value[v]) {
         value[v] = dot(n, minus(lift<IV>(ev[v]), v0_iv));  // caller holds the rounding guard
@@ -585,17 +593,18 @@ void edge_face_points(const Hull& edges_of, const Hull& faces_of, InterferenceKi
       return value[v];
     };
     for (std::size_t e = 0; e < edges.size(); ++e) {
-      const int i0 = edges[e][0];
-      const int i1 = edges[e][1];
-      const int s0 = side[i0];
-      const int s1 = side[i1];
-      if (s0 * s1 > 0) continue;
       if ((edge_hi[e].array() < face_lo.array()).any() ||
           (face_hi.array() < edge_lo[e].array()).any()) {
         continue;  // disjoint bounding boxes (exact double compares)
       }
+      const int i0 = edges[e][0];
+      const int i1 = edges[e][1];
+      const int s0 = plane_side(i0);
+      const int s1 = plane_side(i1);
+      if (s0 * s1 > 0) continue;
+      prepare_face();
       if (s0 == 0 && s1 == 0) {
-        coplanar_edge_points(face, faces_of, ev[i0], ev[i1], kind, static_cast<int>(e),
+        coplanar_edge_points(*face, faces_of, ev[i0], ev[i1], kind, static_cast<int>(e),
                              static_cast<int>(f), out);
         continue;
       }
@@ -635,9 +644,18 @@ void edge_face_points(const Hull& edges_of, const Hull& faces_of, InterferenceKi
       ExactPoint x;
       if (at_end) {
         x = exact_vertex(ev[end]);
+      } else if (const auto rounded =
+                     undecided.empty()
+                         ? crossing_rounded_by_error_bound(ev[i0], ev[i1], fv[loop[0]],
+                                                           fv[loop[1]], fv[loop[2]])
+                         : std::nullopt) {
+        // proof: proofs/interference.md#crossing-by-error-bound
+        x.rounded = *rounded;
+        x.exact_known = false;
+        x.crossing = {ev[i0], ev[i1], fv[loop[0]], fv[loop[1]], fv[loop[2]]};
       } else {
-        const Fast& sp = face.side(i0);
-        const Fast& sq = face.side(i1);
+        const Fast& sp = face->side(i0);
+        const Fast& sq = face->side(i1);
         const Fast3 p = lift<Fast>(ev[i0]);
         const Fast3 q = lift<Fast>(ev[i1]);
         for (int k = 0; k < 3; ++k) x.num[k] = sp * q[k] - sq * p[k];
@@ -651,7 +669,7 @@ void edge_face_points(const Hull& edges_of, const Hull& faces_of, InterferenceKi
         const Fast3 vk = lift<Fast>(fv[loop[k]]);
         const Fast3 rel{x.num[0] - x.den * vk[0], x.num[1] - x.den * vk[1],
                         x.num[2] - x.den * vk[2]};
-        if (exact_sign(dot(face.edge_normal(k), rel)) < 0) {
+        if (exact_sign(dot(face->edge_normal(k), rel)) < 0) {
           outside = true;
           break;
         }
@@ -666,8 +684,23 @@ void edge_face_points(const Hull& edges_of, const Hull& faces_of, InterferenceKi
 void vertex_points(const Hull& of, const Hull& in, InterferenceKind kind, PointCollector& out) {
   const std::size_t faces = in.poly.faces().size();
   const auto& vs = of.poly.vertices();
+  // A vertex outside the box of `in`'s vertices is outside `in` (exact double compares).
+  Eigen::Vector3d in_lo = in.poly.vertices()[0], in_hi = in_lo;
+  for (const auto& w : in.poly.vertices()) {
+    in_lo = in_lo.cwiseMin(w);
+    in_hi = in_hi.cwiseMax(w);
+  }
   // Interval pass: 1 certainly outside some face, 0 certainly inside all, -1 undecided.
   std::vector<int> verdict(vs.size(), 0);
+  bool any_in_box = false;
+  for (std::size_t v = 0; v < vs.size(); ++v) {
+    if ((vs[v].array() < in_lo.array()).any() || (in_hi.array() < vs[v].array()).any()) {
+      verdict[v] = 1;
+    } else {
+      any_in_box = true;
+    }
+  }
+  if (!any_in_box) return;
   {
     CGAL::Protect_FPU_rounding<true> guard;
     for (std::size_t f = 0; f < faces; ++f) {
