@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cfenv>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -107,6 +108,63 @@ void require_full_dimensional(const std::vector<Point>& pts) {
   }
 }
 
+/// Exactly coplanar for a reason visible without the determinant (exact comparisons): all
+/// four share one coordinate, or their projections onto some coordinate plane take at most
+/// two values (the points lie in one plane perpendicular to it), or they form a
+/// parallelogram. Axis-aligned faces of input hulls and the faces of placed templates are
+/// often exactly planar in one of these ways, and only the exact path could say so otherwise.
+bool visibly_coplanar(const Eigen::Vector3d& p, const Eigen::Vector3d& q,
+                                    const Eigen::Vector3d& r, const Eigen::Vector3d& s) {
+  for (int k = 0; k < 3; ++k) {
+    if (p[k] == q[k] && p[k] == r[k] && p[k] == s[k]) return true;  // in the plane x_k = p_k
+  }
+  for (int drop = 0; drop < 3; ++drop) {
+    const int i = (drop + 1) % 3, j = (drop + 2) % 3;
+    const auto same = [&](const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+      return a[i] == b[i] && a[j] == b[j];
+    };
+    // Distinct projections among p, q, r, s: at most two iff every point equals p's or the
+    // first one that differs from p's.
+    const Eigen::Vector3d* other = nullptr;
+    bool at_most_two = true;
+    for (const Eigen::Vector3d* x : {&q, &r, &s}) {
+      if (same(*x, p)) continue;
+      if (other == nullptr) {
+        other = x;
+      } else if (!same(*x, *other)) {
+        at_most_two = false;
+        break;
+      }
+    }
+    if (at_most_two) return true;
+  }
+  // A parallelogram (a + b = c + d for a pairing, e.g. a vertical rectangle placed by a
+  // rotation whose z coupling tilts both vertical edges alike) is planar. Each sum of two
+  // doubles is formed in long double and used only when TwoSum shows it exact.
+  if constexpr (std::numeric_limits<long double>::digits >= 64) {
+    using L = long double;
+    const auto exact_sum = [](double a, double b, L& sum) {
+      sum = L(a) + L(b);
+      const L b_virtual = sum - L(a);
+      const L error = (L(a) - (sum - b_virtual)) + (L(b) - b_virtual);
+      return error == 0;
+    };
+    const auto equal_sums = [&](const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                                const Eigen::Vector3d& c, const Eigen::Vector3d& d) {
+      for (int k = 0; k < 3; ++k) {
+        L ab = 0, cd = 0;
+        if (!exact_sum(a[k], b[k], ab) || !exact_sum(c[k], d[k], cd) || ab != cd) return false;
+      }
+      return true;
+    };
+    if (std::fegetround() == FE_TONEAREST &&
+        (equal_sums(p, q, r, s) || equal_sums(p, r, q, s) || equal_sums(p, s, q, r))) {
+      return true;
+    }
+  }
+  return false;
+}
+
 /// Sign of det[q - p, r - p, s - p] (positive: s on the side (q - p) x (r - p) points to),
 /// decided exactly: a semi-static floating-point filter (Shewchuk's orient3d error bound
 /// A, which covers the rounding of the differences too), then exact Mpzf arithmetic.
@@ -133,6 +191,29 @@ int orientation_sign(const Eigen::Vector3d& p, const Eigen::Vector3d& q, const E
     if (det > bound) return 1;
     if (-det > bound) return -1;
   }
+  // The same filter in long double (64-bit significand: error bound A with its epsilon
+  // 2^-64): rounded placements of planar faces give determinants a few double ulps from 0,
+  // which 11 more bits usually decide; exact zeros and the rest go to Mpzf. No underflow:
+  // products of three doubles stay far inside long double's exponent range.
+  if constexpr (std::numeric_limits<long double>::digits >= 64) {
+    using L = long double;
+    const L ax = L(q.x()) - L(p.x()), ay = L(q.y()) - L(p.y()), az = L(q.z()) - L(p.z());
+    const L bx = L(r.x()) - L(p.x()), by = L(r.y()) - L(p.y()), bz = L(r.z()) - L(p.z());
+    const L cx = L(s.x()) - L(p.x()), cy = L(s.y()) - L(p.y()), cz = L(s.z()) - L(p.z());
+    const L bxcy = bx * cy, cxby = cx * by, cxay = cx * ay, axcy = ax * cy, axby = ax * by,
+            bxay = bx * ay;
+    const L det_l = az * (bxcy - cxby) + bz * (cxay - axcy) + cz * (axby - bxay);
+    const auto abs = [](L x) { return x < 0 ? -x : x; };
+    const L permanent_l = (abs(bxcy) + abs(cxby)) * abs(az) + (abs(cxay) + abs(axcy)) * abs(bz) +
+                          (abs(axby) + abs(bxay)) * abs(cz);
+    constexpr L kErrorBoundALong = 8 * 0x1p-64L;  // >= (7 + 56 eps) eps, eps = 2^-64
+    if (std::fegetround() == FE_TONEAREST) {
+      const L bound = kErrorBoundALong * permanent_l;
+      if (det_l > bound) return 1;
+      if (-det_l > bound) return -1;
+    }
+  }
+  if (visibly_coplanar(p, q, r, s)) return 0;
   const std::array<Exact, 3> u{Exact(q.x()) - Exact(p.x()), Exact(q.y()) - Exact(p.y()),
                                Exact(q.z()) - Exact(p.z())};
   const std::array<Exact, 3> w{Exact(r.x()) - Exact(p.x()), Exact(r.y()) - Exact(p.y()),
