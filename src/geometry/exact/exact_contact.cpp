@@ -690,51 +690,39 @@ void vertex_points(const Hull& of, const Hull& in, InterferenceKind kind, PointC
     in_lo = in_lo.cwiseMin(w);
     in_hi = in_hi.cwiseMax(w);
   }
-  // Interval pass: 1 certainly outside some face, 0 certainly inside all, -1 undecided.
-  std::vector<int> verdict(vs.size(), 0);
-  bool any_in_box = false;
+  // Exact plane sides by CGAL's filtered orientation predicate (as in edge_face_points):
+  // n.(x - v_0) has the sign of orientation(v_0, v_1, v_2, x). Inside the closed hull iff on
+  // no face's outer side; the face that rejected the previous vertex is tried first.
+  using EpickPoint = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
+  std::vector<std::array<EpickPoint, 3>> face_corners;
+  std::size_t last_rejecting = 0;
   for (std::size_t v = 0; v < vs.size(); ++v) {
     if ((vs[v].array() < in_lo.array()).any() || (in_hi.array() < vs[v].array()).any()) {
-      verdict[v] = 1;
-    } else {
-      any_in_box = true;
+      continue;
     }
-  }
-  if (!any_in_box) return;
-  {
-    CGAL::Protect_FPU_rounding<true> guard;
-    for (std::size_t f = 0; f < faces; ++f) {
-      const IV3 n = in.face_normal<IV>(static_cast<int>(f));
-      const IV3 v0 = lift<IV>(in.vertex(static_cast<int>(f), 0));
-      for (std::size_t v = 0; v < vs.size(); ++v) {
-        if (verdict[v] == 1) continue;
-        const Certain side = sign_of(dot(n, minus(lift<IV>(vs[v]), v0)));
-        if (side == Certain::kPositive) verdict[v] = 1;
-        else if (side != Certain::kNegative && side != Certain::kZero) verdict[v] = -1;
+    if (face_corners.empty()) {
+      face_corners.reserve(faces);
+      for (std::size_t f = 0; f < faces; ++f) {
+        const auto corner = [&](int k) {
+          const Eigen::Vector3d& c = in.vertex(static_cast<int>(f), k);
+          return EpickPoint(c.x(), c.y(), c.z());
+        };
+        face_corners.push_back({corner(0), corner(1), corner(2)});
       }
     }
-  }
-  std::vector<std::pair<Fast3, Fast>> planes;
-  for (std::size_t v = 0; v < vs.size(); ++v) {
-    if (verdict[v] == 1) continue;
-    if (verdict[v] == -1) {
-      if (planes.empty()) {
-        for (std::size_t f = 0; f < faces; ++f) {
-          const Fast3 n = in.face_normal<Fast>(static_cast<int>(f));
-          planes.emplace_back(n, dot(n, lift<Fast>(in.vertex(static_cast<int>(f), 0))));
-        }
+    const EpickPoint x(vs[v].x(), vs[v].y(), vs[v].z());
+    const auto outside_of = [&](std::size_t f) {
+      const auto& c = face_corners[f];
+      return CGAL::orientation(c[0], c[1], c[2], x) == CGAL::POSITIVE;
+    };
+    bool inside = !outside_of(last_rejecting);
+    for (std::size_t f = 0; f < faces && inside; ++f) {
+      if (f != last_rejecting && outside_of(f)) {
+        inside = false;
+        last_rejecting = f;
       }
-      const Fast3 x = lift<Fast>(vs[v]);
-      bool inside = true;
-      for (const auto& [n, c] : planes) {
-        if (dot(n, x) > c) {
-          inside = false;
-          break;
-        }
-      }
-      if (!inside) continue;
     }
-    out.add(exact_vertex(vs[v]), kind, static_cast<int>(v), -1);
+    if (inside) out.add(exact_vertex(vs[v]), kind, static_cast<int>(v), -1);
   }
 }
 
