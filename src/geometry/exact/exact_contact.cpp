@@ -521,12 +521,25 @@ void edge_face_points(const Hull& edges_of, const Hull& faces_of, InterferenceKi
   std::vector<EpickPoint> ep;
   ep.reserve(ev.size());
   for (const auto& v : ev) ep.emplace_back(v.x(), v.y(), v.z());
-  // Bounding boxes of the edges (exact double compares drop edges far from a face).
+  // Bounding boxes of the edges (exact double compares drop edges far from a face). Only
+  // edges whose box meets the box of faces_of's vertices can meet any of its faces: the
+  // face loop below visits those alone.
+  Eigen::Vector3d faces_lo = fv[0], faces_hi = fv[0];
+  for (const auto& v : fv) {
+    faces_lo = faces_lo.cwiseMin(v);
+    faces_hi = faces_hi.cwiseMax(v);
+  }
   std::vector<Eigen::Vector3d> edge_lo(edges.size()), edge_hi(edges.size());
+  std::vector<std::size_t> near_edges;
   for (std::size_t e = 0; e < edges.size(); ++e) {
     edge_lo[e] = ev[edges[e][0]].cwiseMin(ev[edges[e][1]]);
     edge_hi[e] = ev[edges[e][0]].cwiseMax(ev[edges[e][1]]);
+    if (!((edge_hi[e].array() < faces_lo.array()).any() ||
+          (faces_hi.array() < edge_lo[e].array()).any())) {
+      near_edges.push_back(e);
+    }
   }
+  if (near_edges.empty()) return;
   // Every crossing point lies on an edge, hence in the box of all of edges_of's vertices: a
   // face whose box misses it has none (exact double compares, before any predicate).
   Eigen::Vector3d all_lo = ev[0], all_hi = ev[0];
@@ -592,7 +605,7 @@ void edge_face_points(const Hull& edges_of, const Hull& faces_of, InterferenceKi
       }
       return value[v];
     };
-    for (std::size_t e = 0; e < edges.size(); ++e) {
+    for (const std::size_t e : near_edges) {
       if ((edge_hi[e].array() < face_lo.array()).any() ||
           (face_hi.array() < edge_lo[e].array()).any()) {
         continue;  // disjoint bounding boxes (exact double compares)
