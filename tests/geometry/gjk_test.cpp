@@ -115,3 +115,43 @@ TEST(Gjk, RandomDeepOverlapsAreReportedOverlapping) {
 
 }  // namespace
 }  // namespace grpvss::geometry
+
+namespace grpvss::geometry {
+namespace {
+
+/// The definition: the first index of the largest (x dx + y dy) + z dz.
+int first_maximum(const std::vector<Eigen::Vector3d>& points, const Eigen::Vector3d& d) {
+  int best = 0;
+  for (int i = 1; i < static_cast<int>(points.size()); ++i) {
+    if (points[i].dot(d) > points[best].dot(d)) best = i;
+  }
+  return best;
+}
+
+TEST(SupportIndex, IsTheFirstMaximumForEveryCountAndWithTies) {
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> coordinate(-10.0, 10.0);
+  std::uniform_int_distribution<int> small(-2, 2);
+  int ties = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    const int n = 1 + trial % 60;
+    const bool on_grid = trial % 3 == 0;  // small integers: many equal dot products
+    std::vector<Eigen::Vector3d> points;
+    for (int i = 0; i < n; ++i) {
+      points.emplace_back(on_grid ? Eigen::Vector3d(small(rng), small(rng), small(rng))
+                                  : Eigen::Vector3d(coordinate(rng), coordinate(rng),
+                                                    coordinate(rng)));
+    }
+    if (trial % 7 == 0 && n > 2) points[static_cast<std::size_t>(n) - 1] = points[1];
+    const Eigen::Vector3d d = on_grid ? Eigen::Vector3d(small(rng), small(rng), small(rng))
+                                      : Eigen::Vector3d(coordinate(rng), coordinate(rng),
+                                                        coordinate(rng));
+    const int expected = first_maximum(points, d);
+    for (int i = expected + 1; i < n; ++i) ties += points[i].dot(d) == points[expected].dot(d);
+    ASSERT_EQ(support_index(points, d), expected) << "trial " << trial << ", " << n << " points";
+  }
+  EXPECT_GT(ties, 1000);  // the tie rule was exercised
+}
+
+}  // namespace
+}  // namespace grpvss::geometry
