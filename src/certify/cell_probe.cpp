@@ -144,7 +144,7 @@ void CellProbe::append_points(int hull_index, int obstacle, ProbeResult& out) {
   for (const auto& point : geometry::interference_points(
            cell.expanded_polytope_L(static_cast<std::size_t>(hull_index)), obstacle_L)) {
     out.interference_points.push_back(
-        {hull.link, hull.hull, obstacle, X_WL * point.point, geometry::to_string(point.kind)});
+        {hull.link, hull.hull, obstacle, X_WL * point.point, point.kind});
   }
   if (out.interference_points.size() > found_before) return;
   // The world-frame query found the pair interfering (this is only called then) but the
@@ -156,7 +156,7 @@ void CellProbe::append_points(int hull_index, int obstacle, ProbeResult& out) {
   for (const auto& point :
        geometry::interference_points(*expanded_polytope_, cell.obstacle_polytopes_W()[obstacle])) {
     out.interference_points.push_back(
-        {hull.link, hull.hull, obstacle, point.point, geometry::to_string(point.kind)});
+        {hull.link, hull.hull, obstacle, point.point, point.kind});
   }
 }
 

@@ -113,7 +113,7 @@ class JsonWriter {
             {"hull", point.hull},
             {"obstacle", point.obstacle},
             {"point", vector3(point.p_W, "interference point")},
-            {"kind", point.kind}};
+            {"kind", geometry::to_string(point.kind)}};
   }
 
   static json contact(const certify::PairContact& pair) {

@@ -106,7 +106,7 @@ TEST(CellProbe, LinkFramePointsAreTheWorldFramePlacedOffsetsPoints) {
       for (const InterferencePoint& point : result.interference_points) {
         if (point.link == hull.link && point.hull == hull.hull &&
             point.obstacle == evidence.obstacle) {
-          found.emplace_back(point.kind, point.p_W);
+          found.emplace_back(geometry::to_string(point.kind), point.p_W);
         }
       }
       ASSERT_FALSE(found.empty()) << "configuration " << k;

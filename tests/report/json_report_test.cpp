@@ -61,7 +61,7 @@ certify::VerificationResult rich_sample_result() {
       point.link = 4;
       point.hull = static_cast<int>(i % 2);
       point.obstacle = static_cast<int>(i % 3);
-      point.kind = "edge-of-link/face-of-obstacle";
+      point.kind = geometry::InterferenceKind::kEdgeOfAOnFaceOfB;
     }
   }
   result.link_clearances = {{1, 0.75, 12, 2, 0.0625, 11},
@@ -196,7 +196,7 @@ TEST(JsonReport, StepsCarryLinkRecordsAndInterferenceIds) {
   ASSERT_EQ(step41["interference_points"].size(), 8u);
   EXPECT_EQ(step41["interference_points"][5],
             json({{"link", 4}, {"hull", 1}, {"obstacle", 2}, {"point", {-14.10, 2.85, 9.00}},
-                  {"kind", "edge-of-link/face-of-obstacle"}}));
+                  {"kind", "edge-of-A/face-of-B"}}));
   EXPECT_EQ(step41["expanded_interferes"], true);
 }
 

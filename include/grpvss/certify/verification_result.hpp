@@ -10,6 +10,7 @@
 
 #include <Eigen/Core>
 
+#include "grpvss/geometry/interference_kind.hpp"
 #include "grpvss/model/path_program.hpp"
 
 namespace grpvss::certify {
@@ -45,7 +46,8 @@ struct InterferencePoint {
   int hull = 0;      ///< index within the link (0-based)
   int obstacle = 0;  ///< index within the environment (0-based)
   Eigen::Vector3d p_W = Eigen::Vector3d::Zero();
-  std::string kind;  ///< "edge-of-link/face-of-obstacle", "obstacle-vertex-inside-link", ...
+  /// A is the link hull's offset, B the obstacle; printed by geometry::to_string.
+  geometry::InterferenceKind kind = geometry::InterferenceKind::kEdgeOfAOnFaceOfB;
 };
 
 /// One (link hull, obstacle) pair whose expanded hull interferes at a step.

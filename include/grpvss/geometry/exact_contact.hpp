@@ -13,6 +13,7 @@
 #include <Eigen/Core>
 
 #include "grpvss/geometry/convex_polytope.hpp"
+#include "grpvss/geometry/interference_kind.hpp"
 
 namespace grpvss::geometry {
 
@@ -41,17 +42,6 @@ Contact classify_exact(const std::vector<Eigen::Vector3d>& a,
 /// \brief Same decision on prebuilt exact hulls (saves the hull construction, ~0.3 ms for a
 /// rotated 16-point hull, when one side is reused, e.g. a static obstacle or its offset).
 Contact classify_exact(const ConvexPolytope& a, const ConvexPolytope& b);
-
-/// \brief Which features produced an interference point.
-enum class InterferenceKind {
-  kEdgeOfAOnFaceOfB,  ///< An edge of hull(A) meets a face of hull(B).
-  kEdgeOfBOnFaceOfA,  ///< An edge of hull(B) meets a face of hull(A).
-  kVertexOfAInB,      ///< A vertex of hull(A) lies in (closed) hull(B).
-  kVertexOfBInA,      ///< A vertex of hull(B) lies in (closed) hull(A).
-};
-
-/// \brief Printable name of an InterferenceKind.
-const char* to_string(InterferenceKind kind);
 
 /// \brief One point of conv(a) ∩ conv(b).
 struct InterferencePoint {
