@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <tuple>
 
@@ -84,7 +85,25 @@ CellProbe::CellProbe(const RobotCell& cell)
     : cell_(&cell),
       workspace_(cell.robot()),
       warm_normals_(cell.hulls().size() * cell.obstacles_W().size()),
-      has_warm_normal_(cell.hulls().size() * cell.obstacles_W().size(), 0) {}
+      has_warm_normal_(cell.hulls().size() * cell.obstacles_W().size(), 0),
+      unmoved_hulls_(cell.hulls().size()) {}
+
+bool CellProbe::reuse_unmoved_hull(int hull_index, const Eigen::Isometry3d& X_WL,
+                                   ProbeResult& out) const {
+  const UnmovedHull& last = unmoved_hulls_[static_cast<std::size_t>(hull_index)];
+  if (!last.valid) return false;
+  // Bit for bit (even -0.0 and 0.0 differ here): the same doubles in, the same decisions out.
+  // The rotation and translation only: an isometry's bottom row is not part of the pose.
+  for (int column = 0; column < 4; ++column) {
+    if (std::memcmp(last.X_WL.matrix().col(column).data(), X_WL.matrix().col(column).data(),
+                    sizeof(double) * 3) != 0) {
+      return false;
+    }
+  }
+  out.hulls[static_cast<std::size_t>(hull_index)] = last.state;
+  out.evidence.insert(out.evidence.end(), last.evidence.begin(), last.evidence.end());
+  return true;
+}
 
 void CellProbe::probe(const Eigen::VectorXd& q, bool with_points, ProbeResult& out) {
   out.q = q;
@@ -167,6 +186,8 @@ void CellProbe::probe_hull(int hull_index, bool with_points, ProbeResult& out) {
   const double eps = cell.placement_error();
   const double delta = cell.tolerance();
   const int obstacle_count = static_cast<int>(cell.obstacles_W().size());
+  if (reuse_unmoved_hull(hull_index, X_WL, out)) return;
+  const std::size_t evidence_before = out.evidence.size();
   HullState& state = out.hulls[hull_index];
 
   const Eigen::Vector3d center_W = X_WL * hull.expanded_sphere_L.center;
@@ -283,6 +304,14 @@ void CellProbe::probe_hull(int hull_index, bool with_points, ProbeResult& out) {
   // number in the certificate is finite (a smaller radius is always still a valid one).
   state.radius = std::min(state.radius, kUnboundedRadius);
   state.radius_beside_collisions = std::min(state.radius_beside_collisions, kUnboundedRadius);
+  UnmovedHull& kept = unmoved_hulls_[static_cast<std::size_t>(hull_index)];
+  kept.valid = !state.expanded_interferes;  // no points, no raw query to replay
+  if (kept.valid) {
+    kept.X_WL = X_WL;
+    kept.state = state;
+    kept.evidence.assign(out.evidence.begin() + static_cast<std::ptrdiff_t>(evidence_before),
+                         out.evidence.end());
+  }
 }
 
 }  // namespace grpvss::certify

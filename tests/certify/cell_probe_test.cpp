@@ -131,6 +131,70 @@ TEST(CellProbe, LinkFramePointsAreTheWorldFramePlacedOffsetsPoints) {
   EXPECT_GT(pairs_compared, 20);  // the property is exercised, not vacuous
 }
 
+std::vector<PairEvidence> evidence_of(const ProbeResult& result, int hull_index) {
+  std::vector<PairEvidence> found;
+  for (const PairEvidence& evidence : result.evidence) {
+    if (evidence.hull_index == hull_index) found.push_back(evidence);
+  }
+  return found;
+}
+
+void expect_same_evidence(const std::vector<PairEvidence>& expected,
+                          const std::vector<PairEvidence>& actual, int configuration) {
+  ASSERT_EQ(expected.size(), actual.size()) << "configuration " << configuration;
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    EXPECT_EQ(expected[i].obstacle, actual[i].obstacle);
+    EXPECT_EQ(expected[i].expanded, actual[i].expanded);
+    EXPECT_EQ(expected[i].separated, actual[i].separated);
+    EXPECT_EQ(expected[i].witness.normal, actual[i].witness.normal);
+    EXPECT_EQ(expected[i].witness.offset_a, actual[i].witness.offset_a);
+    EXPECT_EQ(expected[i].witness.offset_b, actual[i].witness.offset_b);
+    EXPECT_EQ(expected[i].lower_bound, actual[i].lower_bound) << "configuration " << configuration;
+  }
+}
+
+// A probe keeps what it proved for a hull none of whose offset's pairs interfere and copies it
+// when the hull's link is placed bit for bit the same again. After a move of one joint the
+// links before it are such hulls: their proofs must be exactly what a fresh probe proves there
+// (same inputs, no warm start in either), and the links the joint moves must be decided anew
+// (a stale copy would keep the old radius; checked by breaking the pose comparison).
+TEST(CellProbe, AHullWhoseLinkDidNotMoveKeepsItsProofAndAMovedOneIsDecidedAgain) {
+  int unmoved = 0;
+  int decided_again = 0;
+  std::mt19937_64 joint_rng(42);
+  for_random_configurations(4341, [&](const RobotCell& cell, const Eigen::VectorXd& q1, int k) {
+    const int joint = std::uniform_int_distribution<int>(0, 3)(joint_rng);  // moves links > joint
+    Eigen::VectorXd q2 = q1;
+    const Joint& limits = cell.robot().joints[static_cast<std::size_t>(joint)];
+    q2[joint] = 0.5 * (limits.minimum + limits.maximum) + 0.25 * (limits.maximum - q1[joint]);
+    CellProbe reusing(cell);
+    CellProbe fresh(cell);
+    ProbeResult first, second, reference;
+    reusing.probe(q1, /*with_points=*/false, first);
+    reusing.probe(q2, /*with_points=*/false, second);
+    fresh.probe(q2, /*with_points=*/false, reference);
+    for (int i = 0; i < static_cast<int>(cell.hulls().size()); ++i) {
+      const HullState& got = second.hulls[static_cast<std::size_t>(i)];
+      const HullState& want = reference.hulls[static_cast<std::size_t>(i)];
+      EXPECT_EQ(got.expanded_interferes, want.expanded_interferes) << "configuration " << k;
+      EXPECT_EQ(got.raw_collides, want.raw_collides) << "configuration " << k;
+      // A hull whose offset meets an obstacle is decided anew even when it did not move.
+      if (cell.hulls()[static_cast<std::size_t>(i)].link <= joint && !want.expanded_interferes) {
+        ++unmoved;
+        EXPECT_EQ(got.radius, want.radius) << "configuration " << k << " hull " << i;
+        expect_same_evidence(evidence_of(reference, i), evidence_of(second, i), k);
+      } else {
+        ++decided_again;
+        // Warm-started from q1's witnesses: the same proof up to GJK's convergence.
+        EXPECT_NEAR(got.radius, want.radius, 1e-9 * (1.0 + want.radius))
+            << "configuration " << k << " hull " << i;
+      }
+    }
+  });
+  EXPECT_GT(unmoved, 2000);
+  EXPECT_GT(decided_again, 2000);
+}
+
 // The probe is asked for points only when the world-frame query finds the pair interfering.
 // If the pair merely touches there, the link-frame images (the obstacle placed by X_LW, rounded
 // differently) may miss by a rounding, and the probe must fall back to the world-frame placed

@@ -91,6 +91,18 @@ class CellProbe {
   /// Sorts out.interference_points into the one canonical order reports use.
   static void sort_points(ProbeResult& out);
 
+  /// What the last probe proved about one hull that no obstacle's offset interference touched,
+  /// with the pose of its link it was proved for. The obstacles are static, so a later probe
+  /// that places the link bit for bit the same (the base; every link a PTP move leaves still)
+  /// proves the same from the same inputs: it copies this instead of deciding again.
+  struct UnmovedHull {
+    bool valid = false;
+    Eigen::Isometry3d X_WL;
+    HullState state;
+    std::vector<PairEvidence> evidence;
+  };
+  bool reuse_unmoved_hull(int hull_index, const Eigen::Isometry3d& X_WL, ProbeResult& out) const;
+
   const RobotCell* cell_;
   kinematics::Workspace workspace_;
   std::vector<Eigen::Vector3d> placed_expanded_;
@@ -101,6 +113,7 @@ class CellProbe {
   std::vector<std::pair<double, int>> ordered_candidates_;
   std::vector<Eigen::Vector3d> warm_normals_;  ///< [hull * obstacles + obstacle]
   std::vector<char> has_warm_normal_;
+  std::vector<UnmovedHull> unmoved_hulls_;  ///< [hull]
 };
 
 /// Places link-frame points with the pose X_WL exactly as forward kinematics places hull
