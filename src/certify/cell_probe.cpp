@@ -240,7 +240,8 @@ void CellProbe::probe_hull(int hull_index, bool with_points, ProbeResult& out) {
       const std::size_t warm_slot = static_cast<std::size_t>(hull_index) * obstacle_count + o;
       const geometry::CertifiedPairResult result = geometry::certified_pair_query(
           placed_expanded_, cell.obstacles_W()[o],
-          has_warm_normal_[warm_slot] ? &warm_normals_[warm_slot] : nullptr);
+          has_warm_normal_[warm_slot] ? &warm_normals_[warm_slot] : nullptr,
+          &cell.expanded_skeleton(static_cast<std::size_t>(hull_index)));
       if (result.contact == geometry::Contact::kSeparated && result.witness) {
         evidence.separated = true;
         evidence.witness = *result.witness;

@@ -74,6 +74,8 @@ RobotCell::RobotCell(const RobotModel& robot, const Environment& environment,
         geometry::minkowski_offset(raw_polytopes[i], expansion_radius_, options.offset_shape);
     hulls_[i].expanded_L = expanded.vertices();
     expanded_polytopes_L_.push_back(geometry::ConvexPolytope::from_points(hulls_[i].expanded_L));
+    expanded_skeletons_.push_back(geometry::hull_skeleton(
+        expanded_polytopes_L_.back(), static_cast<int>(hulls_[i].expanded_L.size())));
     hulls_[i].raw_sphere_L = geometry::certified_sphere(hulls_[i].raw_L);
     hulls_[i].expanded_sphere_L = geometry::certified_sphere(hulls_[i].expanded_L);
   }

@@ -137,9 +137,10 @@ Simplex closest(const Simplex& s) {
   }
 }
 
+/// The support point of A - B in direction d; A's climbed from `a_last` when A has a skeleton.
 SimplexVertex support(const std::vector<Vector3d>& a, const std::vector<Vector3d>& b,
-                      const Vector3d& d) {
-  const int ia = support_index(a, d);
+                      const Vector3d& d, const HullSkeleton* a_skeleton, int a_last) {
+  const int ia = a_skeleton ? climb_support_index(a, *a_skeleton, a_last, d) : support_index(a, d);
   const int ib = support_index(b, -d);
   return {a[ia] - b[ib], ia, ib};
 }
@@ -180,8 +181,11 @@ int support_index(const std::vector<Vector3d>& points, const Vector3d& d) {
 }
 
 GjkResult gjk(const std::vector<Vector3d>& a, const std::vector<Vector3d>& b,
-              const Vector3d* warm_start_normal) {
+              const Vector3d* warm_start_normal, const HullSkeleton* a_skeleton) {
   if (a.empty() || b.empty()) throw std::invalid_argument("gjk: empty point set");
+  if (a_skeleton && a_skeleton->point_count() != static_cast<int>(a.size())) {
+    throw std::invalid_argument("gjk: the skeleton does not fit the point set");
+  }
   GjkResult result;
   // n separates A (below) from B (above), so the first useful support direction of A - B is
   // -v = n; without a warm start use the direction from a[0] to b[0].
@@ -190,7 +194,8 @@ GjkResult gjk(const std::vector<Vector3d>& a, const std::vector<Vector3d>& b,
   Vector3d direction = warm ? *warm_start_normal : Vector3d(b[0] - a[0]);
   if ((direction.array() == 0.0).all()) direction = Vector3d::UnitX();
   Simplex simplex;
-  simplex.v[0] = support(a, b, direction);
+  simplex.v[0] = support(a, b, direction, a_skeleton, 0);
+  int a_last = simplex.v[0].ia;
   simplex.weight[0] = 1.0;
   simplex.size = 1;
   double scale2 = simplex.v[0].w.squaredNorm();
@@ -204,7 +209,9 @@ GjkResult gjk(const std::vector<Vector3d>& a, const std::vector<Vector3d>& b,
       result.status = GjkStatus::kNearContact;
       return result;
     }
-    const SimplexVertex w = support(a, b, -v);
+    // A's support moves little between iterations: climb from the last one.
+    const SimplexVertex w = support(a, b, -v, a_skeleton, a_last);
+    a_last = w.ia;
     scale2 = std::max(scale2, w.w.squaredNorm());
     const bool repeated = std::any_of(simplex.v.begin(), simplex.v.begin() + simplex.size,
                                       [&](const SimplexVertex& s) {

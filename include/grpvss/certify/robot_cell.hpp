@@ -13,6 +13,7 @@
 #include "grpvss/geometry/broadphase.hpp"
 #include "grpvss/geometry/centroid_cull.hpp"
 #include "grpvss/geometry/convex_polytope.hpp"
+#include "grpvss/geometry/hull_skeleton.hpp"
 #include "grpvss/geometry/minkowski_offset.hpp"
 #include "grpvss/kinematics/kinematic_chain.hpp"
 #include "grpvss/model/environment.hpp"
@@ -51,6 +52,11 @@ class RobotCell {
   const geometry::ConvexPolytope& expanded_polytope_L(std::size_t i) const {
     return expanded_polytopes_L_[i];
   }
+  /// Vertex graph of hull i's offset in expanded_L's numbering: GJK climbs it on the placed
+  /// offset (geometry/hull_skeleton.hpp).
+  const geometry::HullSkeleton& expanded_skeleton(std::size_t i) const {
+    return expanded_skeletons_[i];
+  }
   /// Exact-hull vertices of obstacle o, world frame.
   const std::vector<std::vector<Eigen::Vector3d>>& obstacles_W() const { return obstacles_W_; }
   /// The obstacles' exact hulls, built once (interference points reuse them).
@@ -81,6 +87,7 @@ class RobotCell {
   double expansion_radius_ = 0.0;
   std::vector<LinkHull> hulls_;
   std::vector<geometry::ConvexPolytope> expanded_polytopes_L_;
+  std::vector<geometry::HullSkeleton> expanded_skeletons_;
   std::vector<std::vector<Eigen::Vector3d>> obstacles_W_;
   std::vector<geometry::ConvexPolytope> obstacle_polytopes_W_;
   std::vector<geometry::CertifiedSphere> obstacle_spheres_W_;

@@ -56,9 +56,12 @@ struct CertifiedPairResult {
 ///        e.g. the previous step's witness normal.
 /// \throws std::invalid_argument if a set is empty; DegenerateHullError if the exact fallback
 ///         is needed and a set does not span 3-D.
+/// \param a_skeleton optional vertex graph of conv(a) for GJK's support search (gjk()); the
+///        certificate is decided over all points whatever GJK proposes.
 CertifiedPairResult certified_pair_query(const std::vector<Eigen::Vector3d>& a,
                                          const std::vector<Eigen::Vector3d>& b,
-                                         const Eigen::Vector3d* warm_start_direction = nullptr);
+                                         const Eigen::Vector3d* warm_start_direction = nullptr,
+                                         const HullSkeleton* a_skeleton = nullptr);
 
 /// \brief A separation proven by the filter: the witness and its rounded-down bound.
 struct CertifiedSeparation {

@@ -12,6 +12,8 @@
 
 #include <Eigen/Core>
 
+#include "grpvss/geometry/hull_skeleton.hpp"
+
 namespace grpvss::geometry {
 
 /// \brief What double-precision GJK believes about two point sets.
@@ -39,9 +41,12 @@ struct GjkResult {
 /// \brief Runs GJK on the convex hulls of \p a and \p b (each non-empty).
 /// \param warm_start_normal optional direction believed to separate A (below) from B (above),
 ///        e.g. the previous step's witness normal; GJK starts from \f$v = -n\f$.
-/// \throws std::invalid_argument if a point set is empty.
+/// \param a_skeleton optional vertex graph of conv(a) in a's numbering (hull_skeleton.hpp):
+///        A's support points are then climbed to from the last one instead of scanned for.
+/// \throws std::invalid_argument if a point set is empty or a_skeleton does not fit a.
 GjkResult gjk(const std::vector<Eigen::Vector3d>& a, const std::vector<Eigen::Vector3d>& b,
-              const Eigen::Vector3d* warm_start_normal = nullptr);
+              const Eigen::Vector3d* warm_start_normal = nullptr,
+              const HullSkeleton* a_skeleton = nullptr);
 
 /// \brief Index of the point of \p points maximising \f$d \cdot p\f$ (first on ties).
 int support_index(const std::vector<Eigen::Vector3d>& points, const Eigen::Vector3d& d);

@@ -1,0 +1,132 @@
+// The vertex graph GJK climbs on placed link offsets (hull_skeleton.hpp): its rows are the
+// hull's edges in the point set's numbering, and a climb from any vertex ends where a full
+// scan ends (the maximum), on rotated prisms and on their tolerance offsets.
+#include "grpvss/geometry/hull_skeleton.hpp"
+
+#include <algorithm>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "grpvss/geometry/convex_polytope.hpp"
+#include "grpvss/geometry/gjk.hpp"
+#include "grpvss/geometry/minkowski_offset.hpp"
+#include "support/random_shapes.hpp"
+
+namespace grpvss::geometry {
+namespace {
+
+using Eigen::Vector3d;
+
+std::vector<int> row(const HullSkeleton& skeleton, int i) {
+  return {skeleton.neighbours.begin() + skeleton.first[i],
+          skeleton.neighbours.begin() + skeleton.first[i + 1]};
+}
+
+TEST(HullSkeleton, ACubesRowsAreItsThreeEdgeNeighboursAndAnInteriorPointHasNone) {
+  std::vector<Vector3d> points = test::cube(Vector3d(1, 2, 3), 2.0);  // vertex k: bits of k
+  points.insert(points.begin() + 3, Vector3d(2, 3, 4));                // the centre, input 3
+  const ConvexPolytope cube = ConvexPolytope::from_points(points);
+  const HullSkeleton skeleton = hull_skeleton(cube, static_cast<int>(points.size()));
+  ASSERT_EQ(skeleton.point_count(), 9);
+  // Input index of cube vertex k (the centre shifts the vertices from 3 on by one).
+  const auto input = [](int k) { return k < 3 ? k : k + 1; };
+  for (int k = 0; k < 8; ++k) {
+    std::vector<int> expected = {input(k ^ 1), input(k ^ 2), input(k ^ 4)};
+    std::sort(expected.begin(), expected.end());
+    EXPECT_EQ(row(skeleton, input(k)), expected) << "vertex " << k;
+  }
+  EXPECT_TRUE(row(skeleton, 3).empty());
+}
+
+TEST(HullSkeleton, RowsAreSymmetricAscendingAndTwiceTheEdgeCount) {
+  std::mt19937_64 rng(2027);
+  for (int trial = 0; trial < 50; ++trial) {
+    const auto points = test::random_prism(rng, Vector3d(trial, -trial, 0.5 * trial), 3.0);
+    const ConvexPolytope hull = ConvexPolytope::from_points(points);
+    const HullSkeleton skeleton = hull_skeleton(hull, static_cast<int>(points.size()));
+    EXPECT_EQ(skeleton.neighbours.size(), 2 * hull.edges().size());
+    for (int i = 0; i < skeleton.point_count(); ++i) {
+      const std::vector<int> neighbours = row(skeleton, i);
+      EXPECT_TRUE(std::is_sorted(neighbours.begin(), neighbours.end())) << "trial " << trial;
+      EXPECT_EQ(std::adjacent_find(neighbours.begin(), neighbours.end()), neighbours.end());
+      for (const int j : neighbours) {
+        const std::vector<int> back = row(skeleton, j);
+        EXPECT_TRUE(std::binary_search(back.begin(), back.end(), i)) << i << " -> " << j;
+      }
+    }
+  }
+}
+
+// The support value a climb reaches, from every start, is the scanned maximum: on 30 random
+// prisms and their rhombicuboctahedron offsets (the 50-60-vertex hulls the verifier places),
+// 40 random directions each.
+TEST(HullSkeleton, ClimbFromEveryVertexReachesTheScannedMaximum) {
+  std::mt19937_64 rng(4341);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  int climbs = 0;
+  int longer_than_one_move = 0;
+  for (int trial = 0; trial < 30; ++trial) {
+    const ConvexPolytope prism =
+        ConvexPolytope::from_points(test::random_prism(rng, Vector3d(2, 1, -3), 4.0));
+    // Hulled again from its own vertices, as RobotCell does: vertex i is input point i.
+    const ConvexPolytope offset = ConvexPolytope::from_points(
+        minkowski_offset(prism, 0.5, OffsetShape::kRhombicuboctahedron).vertices());
+    for (const ConvexPolytope* hull : {&prism, &offset}) {
+      const std::vector<Vector3d>& points = hull->vertices();
+      const HullSkeleton skeleton = hull_skeleton(*hull, static_cast<int>(points.size()));
+      for (int d = 0; d < 40; ++d) {
+        const Vector3d direction(normal(rng), normal(rng), normal(rng));
+        const double maximum = points[support_index(points, direction)].dot(direction);
+        for (int start = 0; start < static_cast<int>(points.size()); ++start) {
+          const int top = climb_support_index(points, skeleton, start, direction);
+          ASSERT_EQ(points[top].dot(direction), maximum)
+              << "trial " << trial << ", direction " << d << ", start " << start;
+          ++climbs;
+          if (top != start && std::find(skeleton.neighbours.begin() + skeleton.first[start],
+                                        skeleton.neighbours.begin() + skeleton.first[start + 1],
+                                        top) == skeleton.neighbours.begin() + skeleton.first[start + 1]) {
+            ++longer_than_one_move;
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GT(climbs, 50000);
+  EXPECT_GT(longer_than_one_move, climbs / 4);  // the climbs are walks, not one look around
+}
+
+// GJK that climbs A's skeleton proposes what GJK that scans A proposes: the same status and
+// distance on random prism pairs, separated and overlapping.
+TEST(HullSkeleton, GjkClimbingProposesWhatGjkScanningProposes) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> offset(-5.5, 5.5);
+  int separated = 0;
+  int overlapping = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    const ConvexPolytope a =
+        ConvexPolytope::from_points(test::random_prism(rng, Vector3d::Zero(), 3.0));
+    const auto b = test::random_prism(rng, Vector3d(offset(rng), offset(rng), offset(rng)), 2.0);
+    const HullSkeleton skeleton = hull_skeleton(a, static_cast<int>(a.vertices().size()));
+    const GjkResult scanned = gjk(a.vertices(), b);
+    const GjkResult climbed = gjk(a.vertices(), b, nullptr, &skeleton);
+    ASSERT_EQ(climbed.status, scanned.status) << "trial " << trial;
+    EXPECT_NEAR(climbed.distance, scanned.distance, 1e-12 * (1.0 + scanned.distance));
+    separated += scanned.status == GjkStatus::kSeparated;
+    overlapping += scanned.status == GjkStatus::kOverlapping;
+  }
+  EXPECT_GT(separated, 100);
+  EXPECT_GT(overlapping, 30);
+}
+
+TEST(HullSkeleton, GjkRefusesASkeletonOfAnotherPointSet) {
+  const auto a = test::cube(Vector3d::Zero(), 1.0);
+  const HullSkeleton skeleton = hull_skeleton(ConvexPolytope::from_points(a), 8);
+  std::vector<Vector3d> more = a;
+  more.push_back(Vector3d(0.5, 0.5, 0.5));
+  EXPECT_THROW(gjk(more, test::cube(Vector3d(3, 0, 0), 1.0), nullptr, &skeleton),
+               std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace grpvss::geometry
