@@ -218,12 +218,16 @@ StepCertificate PathVerifier::certificate_step(const ProbeResult& probe, int ind
   step.step = index;
   step.parameter = parameter;
   step.q = probe.q;
+  std::vector<int> evidence_count(cell_.hulls().size(), 0);
+  for (const PairEvidence& evidence : probe.evidence) ++evidence_count[evidence.hull_index];
+  step.hulls.reserve(cell_.hulls().size());
   for (std::size_t i = 0; i < cell_.hulls().size(); ++i) {
     HullRecord hull;
     hull.link = cell_.hulls()[i].link;
     hull.hull = cell_.hulls()[i].hull;
     hull.radius = probe.hulls[i].radius;
     hull.broadphase_margin = probe.hulls[i].broadphase_margin;
+    hull.evidence.reserve(static_cast<std::size_t>(evidence_count[i]));
     step.hulls.push_back(std::move(hull));
   }
   for (const PairEvidence& evidence : probe.evidence) {

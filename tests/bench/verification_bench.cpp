@@ -204,4 +204,37 @@ void BM_ProbeOperationSteps(benchmark::State& state) {
 }
 BENCHMARK(BM_ProbeOperationSteps)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMicrosecond);
 
+// The exact interference points alone, at the accepted steps of the certified operation where
+// the expanded robot interferes (CellProbe::add_interference_points on probes without them).
+// Arg 0: PTP operation (post crossed), 1: CP line through a post. Counter: points.
+void BM_InterferencePointsOfOperation(benchmark::State& state) {
+  Operation op = state.range(0) == 1 ? cp_operation() : ptp_operation();
+  if (state.range(0) == 1) {
+    op.environment = grpvss::io::read_environment_file(kData + "bench-environment-cp-line.txt");
+  }
+  const grpvss::certify::RobotCell cell(
+      op.robot, op.environment,
+      grpvss::certify::make_cell_options(options_for(ResolutionMode::kCertified)));
+  const grpvss::certify::VerificationRun reference = run(op, cell, ResolutionMode::kCertified);
+  grpvss::certify::CellProbe probe(cell);
+  std::vector<grpvss::certify::ProbeResult> interfering;
+  for (const auto& step : reference.result.steps) {
+    if (!step.expanded_interferes) continue;
+    interfering.emplace_back();
+    probe.probe(step.q, false, interfering.back());
+  }
+  std::size_t points = 0;
+  for (auto _ : state) {
+    points = 0;
+    for (auto& probed : interfering) {
+      probe.add_interference_points(probed);
+      points += probed.interference_points.size();
+    }
+    benchmark::DoNotOptimize(points);
+  }
+  state.counters["steps"] = static_cast<double>(interfering.size());
+  state.counters["points"] = static_cast<double>(points);
+}
+BENCHMARK(BM_InterferencePointsOfOperation)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
+
 }  // namespace
