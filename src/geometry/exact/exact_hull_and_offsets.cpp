@@ -191,9 +191,12 @@ int orientation_sign(const Eigen::Vector3d& p, const Eigen::Vector3d& q, const E
     if (det > bound) return 1;
     if (-det > bound) return -1;
   }
+  // Exact zeros the coordinates show (SCARA placements keep many faces exactly planar) cost
+  // a few compares: before the long double filter, which cannot decide them anyway.
+  if (visibly_coplanar(p, q, r, s)) return 0;
   // The same filter in long double (64-bit significand: error bound A with its epsilon
   // 2^-64): rounded placements of planar faces give determinants a few double ulps from 0,
-  // which 11 more bits usually decide; exact zeros and the rest go to Mpzf. No underflow:
+  // which 11 more bits usually decide; the rest go to Mpzf. No underflow:
   // products of three doubles stay far inside long double's exponent range.
   if constexpr (std::numeric_limits<long double>::digits >= 64) {
     using L = long double;
@@ -213,7 +216,6 @@ int orientation_sign(const Eigen::Vector3d& p, const Eigen::Vector3d& q, const E
       if (-det_l > bound) return -1;
     }
   }
-  if (visibly_coplanar(p, q, r, s)) return 0;
   const std::array<Exact, 3> u{Exact(q.x()) - Exact(p.x()), Exact(q.y()) - Exact(p.y()),
                                Exact(q.z()) - Exact(p.z())};
   const std::array<Exact, 3> w{Exact(r.x()) - Exact(p.x()), Exact(r.y()) - Exact(p.y()),
