@@ -86,6 +86,7 @@ CellProbe::CellProbe(const RobotCell& cell)
       workspace_(cell.robot()),
       warm_normals_(cell.hulls().size() * cell.obstacles_W().size()),
       has_warm_normal_(cell.hulls().size() * cell.obstacles_W().size(), 0),
+      climb_hints_(cell.hulls().size() * cell.obstacles_W().size(), 0),
       unmoved_hulls_(cell.hulls().size()) {}
 
 bool CellProbe::reuse_unmoved_hull(int hull_index, const Eigen::Isometry3d& X_WL,
@@ -241,7 +242,7 @@ void CellProbe::probe_hull(int hull_index, bool with_points, ProbeResult& out) {
       const geometry::CertifiedPairResult result = geometry::certified_pair_query(
           placed_expanded_, cell.obstacles_W()[o],
           has_warm_normal_[warm_slot] ? &warm_normals_[warm_slot] : nullptr,
-          &cell.expanded_skeleton(static_cast<std::size_t>(hull_index)));
+          &cell.expanded_skeleton(static_cast<std::size_t>(hull_index)), &climb_hints_[warm_slot]);
       if (result.contact == geometry::Contact::kSeparated && result.witness) {
         evidence.separated = true;
         evidence.witness = *result.witness;

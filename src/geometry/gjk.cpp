@@ -181,7 +181,8 @@ int support_index(const std::vector<Vector3d>& points, const Vector3d& d) {
 }
 
 GjkResult gjk(const std::vector<Vector3d>& a, const std::vector<Vector3d>& b,
-              const Vector3d* warm_start_normal, const HullSkeleton* a_skeleton) {
+              const Vector3d* warm_start_normal, const HullSkeleton* a_skeleton,
+              int a_climb_start) {
   if (a.empty() || b.empty()) throw std::invalid_argument("gjk: empty point set");
   if (a_skeleton && a_skeleton->point_count() != static_cast<int>(a.size())) {
     throw std::invalid_argument("gjk: the skeleton does not fit the point set");
@@ -194,10 +195,12 @@ GjkResult gjk(const std::vector<Vector3d>& a, const std::vector<Vector3d>& b,
   Vector3d direction = warm ? *warm_start_normal : Vector3d(b[0] - a[0]);
   if ((direction.array() == 0.0).all()) direction = Vector3d::UnitX();
   Simplex simplex;
-  simplex.v[0] = support(a, b, direction, a_skeleton, 0);
+  if (a_climb_start < 0 || a_climb_start >= static_cast<int>(a.size())) a_climb_start = 0;
+  simplex.v[0] = support(a, b, direction, a_skeleton, a_climb_start);
   int a_last = simplex.v[0].ia;
   simplex.weight[0] = 1.0;
   simplex.size = 1;
+  result.last_support_a = a_last;
   double scale2 = simplex.v[0].w.squaredNorm();
   Vector3d v = simplex.v[0].w;
 
@@ -212,6 +215,7 @@ GjkResult gjk(const std::vector<Vector3d>& a, const std::vector<Vector3d>& b,
     // A's support moves little between iterations: climb from the last one.
     const SimplexVertex w = support(a, b, -v, a_skeleton, a_last);
     a_last = w.ia;
+    result.last_support_a = a_last;
     scale2 = std::max(scale2, w.w.squaredNorm());
     const bool repeated = std::any_of(simplex.v.begin(), simplex.v.begin() + simplex.size,
                                       [&](const SimplexVertex& s) {

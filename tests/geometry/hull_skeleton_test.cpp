@@ -96,8 +96,8 @@ TEST(HullSkeleton, ClimbFromEveryVertexReachesTheScannedMaximum) {
   EXPECT_GT(longer_than_one_move, climbs / 4);  // the climbs are walks, not one look around
 }
 
-// GJK that climbs A's skeleton proposes what GJK that scans A proposes: the same status and
-// distance on random prism pairs, separated and overlapping.
+// GJK that climbs A's skeleton, from any start, proposes what GJK that scans A proposes: the
+// same status and distance on random prism pairs, separated and overlapping.
 TEST(HullSkeleton, GjkClimbingProposesWhatGjkScanningProposes) {
   std::mt19937_64 rng(11);
   std::uniform_real_distribution<double> offset(-5.5, 5.5);
@@ -109,9 +109,12 @@ TEST(HullSkeleton, GjkClimbingProposesWhatGjkScanningProposes) {
     const auto b = test::random_prism(rng, Vector3d(offset(rng), offset(rng), offset(rng)), 2.0);
     const HullSkeleton skeleton = hull_skeleton(a, static_cast<int>(a.vertices().size()));
     const GjkResult scanned = gjk(a.vertices(), b);
-    const GjkResult climbed = gjk(a.vertices(), b, nullptr, &skeleton);
+    const int start = std::uniform_int_distribution<int>(-2, 17)(rng);  // out of range: 0
+    const GjkResult climbed = gjk(a.vertices(), b, nullptr, &skeleton, start);
     ASSERT_EQ(climbed.status, scanned.status) << "trial " << trial;
     EXPECT_NEAR(climbed.distance, scanned.distance, 1e-12 * (1.0 + scanned.distance));
+    ASSERT_GE(climbed.last_support_a, 0);
+    ASSERT_LT(climbed.last_support_a, static_cast<int>(a.vertices().size()));
     separated += scanned.status == GjkStatus::kSeparated;
     overlapping += scanned.status == GjkStatus::kOverlapping;
   }

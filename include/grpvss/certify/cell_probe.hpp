@@ -113,6 +113,7 @@ class CellProbe {
   std::vector<std::pair<double, int>> ordered_candidates_;
   std::vector<Eigen::Vector3d> warm_normals_;  ///< [hull * obstacles + obstacle]
   std::vector<char> has_warm_normal_;
+  std::vector<int> climb_hints_;  ///< [hull * obstacles + obstacle]: GJK's last support of A
   std::vector<UnmovedHull> unmoved_hulls_;  ///< [hull]
 };
 
