@@ -4,6 +4,7 @@
 #include <random>
 #include <stdexcept>
 
+#include <boost/multiprecision/cpp_bin_float.hpp>
 #include <gtest/gtest.h>
 
 #include "grpvss/kinematics/kinematic_chain.hpp"
@@ -119,6 +120,52 @@ TEST(KinematicChain, LimitsAndHomeComeFromTheModel) {
   q[2] = 9.81;
   EXPECT_FALSE(chain.within_limits(q));
   EXPECT_TRUE(chain.within_limits(q, 0.02));
+}
+
+// proofs/fk-rounding.md#trig-rounding: a constant DH angle that is a quarter-turn multiple in
+// degrees (within one turn) is stored with exact 0 and +-1 entries, each still within the
+// lemma's 4u of the exact cosine and sine of the double angle (50 digits), up to two turns.
+TEST(KinematicChain, QuarterTurnAnglesAreStoredWithoutTrigResidueWithinTheLemmasBound) {
+  using Float50 = boost::multiprecision::cpp_bin_float_50;
+  constexpr double u = 0x1p-53;
+  for (int quarter = -8; quarter <= 8; ++quarter) {
+    RobotModel model = test::make_puma560_model();
+    const double alpha = quarter * 90.0 * kPi / 180.0;  // as the robot file reader converts
+    model.joints[0].dh.alpha = alpha;
+    const Eigen::Matrix3d R = make_chain(model).joints[0].X_JC.linear();
+    const Float50 c = cos(Float50(alpha));
+    const Float50 s = sin(Float50(alpha));
+    const Eigen::Matrix<Float50, 3, 3> exact =
+        (Eigen::Matrix<Float50, 3, 3>() << 1, 0, 0, 0, c, -s, 0, s, c).finished();
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) {
+        // Within one turn the residue is below 3u; at 720 deg (4.9e-16) it must be kept.
+        if (std::abs(quarter) <= 4) {
+          EXPECT_TRUE(R(i, j) == 0.0 || std::abs(R(i, j)) == 1.0) << quarter << " " << i << j;
+        }
+        EXPECT_LE(abs(Float50(R(i, j)) - exact(i, j)), Float50(4 * u)) << quarter << " " << i << j;
+      }
+    }
+  }
+}
+
+// So the IBM 7545's 180 deg twist keeps every link frame's z axis exactly vertical: a placed
+// horizontal face stays exactly planar (docs/verification.md#interference-points).
+TEST(KinematicChain, Ibm7545LinkFramesKeepAnExactlyVerticalAxis) {
+  const RobotModel model = test::make_ibm7545_model();
+  const KinematicChain chain = make_chain(model);
+  Workspace ws(model);
+  std::mt19937_64 generator(7545);
+  for (int trial = 0; trial < 200; ++trial) {
+    forward_kinematics(chain, test::random_configuration(model, generator), ws);
+    for (const Eigen::Isometry3d& X_WL : ws.X_WL) {
+      EXPECT_EQ(X_WL.linear()(2, 0), 0.0);
+      EXPECT_EQ(X_WL.linear()(2, 1), 0.0);
+      EXPECT_EQ(X_WL.linear()(0, 2), 0.0);
+      EXPECT_EQ(X_WL.linear()(1, 2), 0.0);
+      EXPECT_EQ(std::abs(X_WL.linear()(2, 2)), 1.0);
+    }
+  }
 }
 
 }  // namespace
