@@ -756,10 +756,12 @@ std::vector<InterferencePoint> interference_points(const ConvexPolytope& a,
   // No classify_hulls() first: the list is empty iff the hulls are disjoint (proof below), so
   // computing it decides separation too.
   PointCollector out;
+  out.found.reserve(64);  // ExactPoints hold four Mpzf each: regrowing moves them all
   edge_face_points(A, B, InterferenceKind::kEdgeOfAOnFaceOfB, out);
   edge_face_points(B, A, InterferenceKind::kEdgeOfBOnFaceOfA, out);
   vertex_points(A, B, InterferenceKind::kVertexOfAInB, out);
   vertex_points(B, A, InterferenceKind::kVertexOfBInA, out);
+  result.reserve(out.found.size());
   for (auto& [x, ip] : out.found) result.push_back(ip);
   return result;
 }
