@@ -2,6 +2,7 @@
 // #crossing-by-error-bound), checked against a reference written here in GMP rationals: the
 // nearest double, ties toward +infinity, found by exact comparisons with the midpoints.
 #include "grpvss/geometry/exact_rounding.hpp"
+#include "grpvss/geometry/extended_precision.hpp"
 
 #include <gtest/gtest.h>
 
@@ -155,6 +156,26 @@ TEST(CrossingByErrorBound, ExactlyRepresentableCrossingsAndTheRoundingModeGuard)
   std::fesetround(FE_TONEAREST);
   EXPECT_FALSE(upward.has_value());
 }
+
+#if (defined(__x86_64__) || defined(__i386__)) && defined(__GNUC__)
+// The lemma assumes a 64-bit significand: with the x87 precision control set to double (as
+// some libraries do), long double results are rounded to 53 bits and the filter declines.
+TEST(CrossingByErrorBound, DeclinesWhenTheX87PrecisionControlIsDouble) {
+  const Vec p(0.125, 0.125, -1), q(0.125, 0.125, 2);
+  const Vec f0(1, 0, 0), f1(0, 1, 0), f2(0, 0, 1);
+  ASSERT_TRUE(extended_precision_rounds_to_nearest());
+  unsigned short control = 0;
+  __asm__ volatile("fnstcw %0" : "=m"(control));
+  const unsigned short double_precision = static_cast<unsigned short>((control & ~0x300) | 0x200);
+  __asm__ volatile("fldcw %0" : : "m"(double_precision));
+  const bool extended = extended_precision_rounds_to_nearest();
+  const auto answer = crossing_rounded_by_error_bound(p, q, f0, f1, f2);
+  __asm__ volatile("fldcw %0" : : "m"(control));
+  EXPECT_FALSE(extended);
+  EXPECT_FALSE(answer.has_value());
+  EXPECT_TRUE(extended_precision_rounds_to_nearest());
+}
+#endif
 
 }  // namespace
 }  // namespace grpvss::geometry

@@ -31,6 +31,7 @@
 
 #include "grpvss/geometry/convex_polytope.hpp"
 #include "grpvss/geometry/minkowski_offset.hpp"
+#include "grpvss/geometry/extended_precision.hpp"
 
 namespace grpvss::geometry {
 
@@ -157,7 +158,7 @@ bool visibly_coplanar(const Eigen::Vector3d& p, const Eigen::Vector3d& q,
       }
       return true;
     };
-    if (std::fegetround() == FE_TONEAREST &&
+    if (extended_precision_rounds_to_nearest() &&
         (equal_sums(p, q, r, s) || equal_sums(p, r, q, s) || equal_sums(p, s, q, r))) {
       return true;
     }
@@ -210,7 +211,7 @@ int orientation_sign(const Eigen::Vector3d& p, const Eigen::Vector3d& q, const E
     const L permanent_l = (abs(bxcy) + abs(cxby)) * abs(az) + (abs(cxay) + abs(axcy)) * abs(bz) +
                           (abs(axby) + abs(bxay)) * abs(cz);
     constexpr L kErrorBoundALong = 8 * 0x1p-64L;  // >= (7 + 56 eps) eps, eps = 2^-64
-    if (std::fegetround() == FE_TONEAREST) {
+    if (extended_precision_rounds_to_nearest()) {
       const L bound = kErrorBoundALong * permanent_l;
       if (det_l > bound) return 1;
       if (-det_l > bound) return -1;

@@ -3,6 +3,7 @@
 /// Only CGAL's Mpzf and Interval_nt are used here: no kernel.
 
 #include "grpvss/geometry/exact_rounding.hpp"
+#include "grpvss/geometry/extended_precision.hpp"
 
 #include <CGAL/Gmpq.h>
 #include <CGAL/Interval_nt.h>
@@ -95,7 +96,7 @@ std::optional<Eigen::Vector3d> crossing_rounded_by_error_bound(const Eigen::Vect
   if constexpr (std::numeric_limits<L>::digits < 64) {
     return std::nullopt;
   } else {
-    if (std::fegetround() != FE_TONEAREST) return std::nullopt;  // the lemma's rounding
+    if (!extended_precision_rounds_to_nearest()) return std::nullopt;  // the lemma's rounding
     constexpr L u = 0x1p-64L;
     const auto abs = [](L x) { return x < 0 ? -x : x; };
     const L ax = L(f1.x()) - L(f0.x()), ay = L(f1.y()) - L(f0.y()), az = L(f1.z()) - L(f0.z());
