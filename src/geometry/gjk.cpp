@@ -137,10 +137,10 @@ Simplex closest(const Simplex& s) {
   }
 }
 
-/// The support point of A - B in direction d; A's climbed from `a_last` when A has a skeleton.
+/// The support point of A - B in direction d; A's climbed from `a_start` when A has a skeleton.
 SimplexVertex support(const std::vector<Vector3d>& a, const std::vector<Vector3d>& b,
-                      const Vector3d& d, const HullSkeleton* a_skeleton, int a_last) {
-  const int ia = a_skeleton ? climb_support_index(a, *a_skeleton, a_last, d) : support_index(a, d);
+                      const Vector3d& d, const HullSkeleton* a_skeleton, int a_start) {
+  const int ia = a_skeleton ? climb_support_index(a, *a_skeleton, a_start, d) : support_index(a, d);
   const int ib = support_index(b, -d);
   return {a[ia] - b[ib], ia, ib};
 }
@@ -197,10 +197,9 @@ GjkResult gjk(const std::vector<Vector3d>& a, const std::vector<Vector3d>& b,
   Simplex simplex;
   if (a_climb_start < 0 || a_climb_start >= static_cast<int>(a.size())) a_climb_start = 0;
   simplex.v[0] = support(a, b, direction, a_skeleton, a_climb_start);
-  int a_last = simplex.v[0].ia;
   simplex.weight[0] = 1.0;
   simplex.size = 1;
-  result.last_support_a = a_last;
+  result.last_support_a = simplex.v[0].ia;
   double scale2 = simplex.v[0].w.squaredNorm();
   Vector3d v = simplex.v[0].w;
 
@@ -213,9 +212,8 @@ GjkResult gjk(const std::vector<Vector3d>& a, const std::vector<Vector3d>& b,
       return result;
     }
     // A's support moves little between iterations: climb from the last one.
-    const SimplexVertex w = support(a, b, -v, a_skeleton, a_last);
-    a_last = w.ia;
-    result.last_support_a = a_last;
+    const SimplexVertex w = support(a, b, -v, a_skeleton, result.last_support_a);
+    result.last_support_a = w.ia;
     scale2 = std::max(scale2, w.w.squaredNorm());
     const bool repeated = std::any_of(simplex.v.begin(), simplex.v.begin() + simplex.size,
                                       [&](const SimplexVertex& s) {
