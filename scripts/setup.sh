@@ -51,5 +51,8 @@ fi
 
 build_dir="${GRPVSS_BUILD_DIR:-$here/build}"
 jobs="${GRPVSS_JOBS:-$(nproc)}"
-cmake -S "$here" -B "$build_dir" -DCMAKE_BUILD_TYPE=Release >/dev/null
+launcher=()
+# ccache, when the machine has it, shares compiled objects between checkouts (not required).
+command -v ccache >/dev/null 2>&1 && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+cmake -S "$here" -B "$build_dir" -DCMAKE_BUILD_TYPE=Release "${launcher[@]}" >/dev/null
 cmake --build "$build_dir" -j "$jobs"
