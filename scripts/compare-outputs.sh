@@ -12,17 +12,24 @@ set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 
 capture() {
-  local cli="$1" out="$2"
-  [ -x "$cli" ] || { echo "compare-outputs: not an executable: $cli" >&2; exit 2; }
-  mkdir -p "$out"
-  local ibm="$here/data/ibm7545"
+  local cli out
+  cli="$(realpath "$1")"
+  [ -x "$cli" ] || { echo "compare-outputs: not an executable: $1" >&2; exit 2; }
+  out="$(realpath -m "$2")"
+  [ -e "$out" ] && { echo "compare-outputs: $out exists" >&2; exit 2; }
+  # Inputs are named by the same relative paths from every checkout (reports print them).
+  local work
+  work="$(mktemp -d)"
+  ln -s "$here/data" "$work/data"
+  mkdir "$work/out"
+  local ibm="../data/ibm7545"
   local n=0
   # run NAME ARGS...: stdout, stderr and the exit code of one command, then its output files.
   run() {
     local name="$1"; shift
     local code=0
-    (cd "$out" && "$cli" "$@" >"$name.stdout" 2>"$name.stderr") || code=$?
-    echo "$code" >"$out/$name.exit"
+    (cd "$work/out" && "$cli" "$@" >"$name.stdout" 2>"$name.stderr") || code=$?
+    echo "$code" >"$work/out/$name.exit"
     n=$((n + 1))
   }
   local robot="--robot $ibm/robot.txt"
@@ -43,9 +50,9 @@ capture() {
       --path $ibm/path-output-sample.txt --tolerance 0.5 --out a3.out --json a3.json \
       --certificate a3.cert
     run verify-table verify $sample --tolerance 0.5 --profile-table \
-      $here/data/motion/example-table.txt --json table.json --certificate table.cert
+      ../data/motion/example-table.txt --json table.json --certificate table.cert
     run check-table check-certificate $sample --profile-table \
-      $here/data/motion/example-table.txt table.cert
+      ../data/motion/example-table.txt table.cert
     for env in bench-environment bench-environment-cp-line bench-environment-near-miss \
                bench-environment-within-tolerance; do
       run "verify-$env" verify $robot --env "$ibm/$env.txt" --path $ibm/path.txt \
@@ -60,8 +67,10 @@ capture() {
     run trajectory-sync trajectory $robot --path $ibm/path.txt --timing synchronized --step 0.25
     run audit expansion-audit $robot --tolerance 0.5
     run audit-json expansion-audit $robot --tolerance 0.5 --json
-    run audit-puma expansion-audit --robot $here/data/puma560/robot.txt --tolerance 5 --json
+    run audit-puma expansion-audit --robot ../data/puma560/robot.txt --tolerance 5 --json
   }
+  mv "$work/out" "$out"
+  rm -rf "$work"
   # The timestamp is the one field allowed to change (docs/report-schema.md).
   find "$out" -type f \( -name '*.json' -o -name '*.html' \) -print0 |
     xargs -0 sed -i -E 's/"generated_at": ?"[^"]*"/"generated_at":"-"/g'
