@@ -3,12 +3,13 @@
 // outcome of bad input; anything else is a finding.
 #include "fuzz_input.hpp"
 #include "grpvss/common/input_error.hpp"
+#include "grpvss/io/profile_table_file.hpp"
 #include "grpvss/motion/profile_table.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   try {
-    const auto table =
-        grpvss::motion::ProfileTable::parse(grpvss::fuzz::as_text(data, size), "fuzz-table.txt");
+    const grpvss::motion::ProfileTable table(
+        grpvss::io::parse_profile_table(grpvss::fuzz::as_text(data, size), "fuzz-table.txt"));
     for (int joint = 0; joint < table.joint_count(); ++joint) {
       const double duration = table.duration(joint);
       for (const double t : {-1.0, 0.0, 0.25 * duration, 0.5 * duration, duration, duration + 1})

@@ -1,4 +1,4 @@
-#include "grpvss/io/affine_dimension.hpp"
+#include "affine_dimension.hpp"
 
 #include <array>
 #include <climits>

@@ -2,8 +2,8 @@
 
 #include <fmt/format.h>
 
-#include "grpvss/io/hull_file_section.hpp"
-#include "grpvss/io/number_reader.hpp"
+#include "hull_file_section.hpp"
+#include "number_reader.hpp"
 #include "grpvss/io/text_file.hpp"
 #include "grpvss/io/units.hpp"
 

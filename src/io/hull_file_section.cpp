@@ -1,9 +1,9 @@
-#include "grpvss/io/hull_file_section.hpp"
+#include "hull_file_section.hpp"
 
 #include <algorithm>
 #include <optional>
 
-#include "grpvss/io/affine_dimension.hpp"
+#include "affine_dimension.hpp"
 
 namespace grpvss::io {
 namespace {

@@ -1,4 +1,4 @@
-#include "grpvss/io/number_reader.hpp"
+#include "number_reader.hpp"
 
 #include <charconv>
 #include <cmath>

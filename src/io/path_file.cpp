@@ -5,7 +5,7 @@
 
 #include <fmt/format.h>
 
-#include "grpvss/io/number_reader.hpp"
+#include "number_reader.hpp"
 #include "grpvss/io/text_file.hpp"
 #include "grpvss/io/units.hpp"
 

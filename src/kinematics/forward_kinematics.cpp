@@ -73,4 +73,10 @@ Eigen::Isometry3d end_effector_pose(const KinematicChain& chain, const Eigen::Ve
   return X;
 }
 
+void place_points(const Eigen::Isometry3d& X_WL, const std::vector<Eigen::Vector3d>& points_L,
+                  std::vector<Eigen::Vector3d>& points_W) {
+  points_W.resize(points_L.size());
+  for (std::size_t i = 0; i < points_L.size(); ++i) points_W[i] = X_WL * points_L[i];
+}
+
 }  // namespace grpvss::kinematics

@@ -11,20 +11,20 @@
 
 namespace grpvss::motion {
 
-std::shared_ptr<const kinematics::InverseKinematics> select_ik(const std::string& spec,
+std::shared_ptr<const kinematics::InverseKinematics> select_ik(const kinematics::IkChoice& choice,
                                                               const RobotModel& robot,
                                                               const std::string& robot_file) {
-  const std::string plugin_prefix = "plugin:";
-  if (spec == "auto") return kinematics::make_default_ik(robot);
-  if (spec == "numeric") return kinematics::make_numeric_ik(robot);
-  if (spec == "ibm7545") {
-    if (!kinematics::is_ibm7545_structure(robot))
-      throw InputError(robot_file, 0, "a robot of the IBM 7545 structure for --ik ibm7545");
-    return kinematics::make_ibm7545_ik(robot);
+  switch (choice.method) {
+    case kinematics::IkMethod::kAuto: return kinematics::make_default_ik(robot);
+    case kinematics::IkMethod::kNumeric: return kinematics::make_numeric_ik(robot);
+    case kinematics::IkMethod::kIbm7545:
+      if (!kinematics::is_ibm7545_structure(robot))
+        throw InputError(robot_file, 0, "a robot of the IBM 7545 structure for --ik ibm7545");
+      return kinematics::make_ibm7545_ik(robot);
+    case kinematics::IkMethod::kPlugin:
+      return kinematics::load_ik_plugin(choice.plugin_path, robot);
   }
-  if (spec.rfind(plugin_prefix, 0) == 0 && spec.size() > plugin_prefix.size())
-    return kinematics::load_ik_plugin(spec.substr(plugin_prefix.size()), robot);
-  throw InputError("--ik", 0, "auto, ibm7545, numeric or plugin:PATH.so", "'" + spec + "'");
+  throw std::logic_error("select_ik: unknown IK method");
 }
 
 KinematicsAccess make_kinematics_access(const RobotModel& robot,

@@ -1,116 +1,27 @@
 #include "grpvss/motion/profile_table.hpp"
 
 #include <algorithm>
-#include <fstream>
-#include <sstream>
-
-#include <fmt/core.h>
-
-#include "grpvss/common/input_error.hpp"
-#include "grpvss/io/number_reader.hpp"
 
 namespace grpvss::motion {
-namespace {
 
-constexpr int kMaxJoints = 64;
-
-std::string show(double x) { return fmt::format("{}", x); }
-
-/// Fritsch-Carlson: a cubic Hermite piece with secant slope delta and end slopes m0, m1 >= 0
-/// is monotone when m0 = m1 = 0 for a flat piece, else (m0/delta)^2 + (m1/delta)^2 <= 9.
-bool monotone_piece(double delta, double m0, double m1) {
-  if (delta == 0.0) return m0 == 0.0 && m1 == 0.0;
-  const double alpha = m0 / delta, beta = m1 / delta;
-  return alpha * alpha + beta * beta <= 9.0;
-}
-
-}  // namespace
-
-ProfileTable ProfileTable::parse(std::string_view text, std::string file_name) {
-  io::NumberReader reader(text, file_name);
-  ProfileTable table;
-  table.file_name_ = std::move(file_name);
-  const auto joints = reader.read_keyword_integer("joints", "the joint count", 1, kMaxJoints);
-  if (!joints) reader.fail(reader.line() + 1, "a header line 'joints N'");
-  table.header_line_ = reader.line();
-  table.joint_count_ = static_cast<int>(*joints);
-  const int n = table.joint_count_;
-  const std::size_t width = 1 + 2 * static_cast<std::size_t>(n);
-  std::vector<int> lines;
-  while (!reader.at_end()) {
-    const io::NumberLine numbers =
-        reader.read_numbers(width, fmt::format("a row 'time, s_1, ds_1, ..., s_{0}, ds_{0}'", n));
-    Row row;
-    row.time = numbers.values[0];
-    for (int j = 0; j < n; ++j) {
-      const double s = numbers.values[1 + 2 * j], ds = numbers.values[2 + 2 * j];
-      if (s < 0.0 || s > 1.0)
-        reader.fail(numbers.line, fmt::format("progress s_{} in [0, 1]", j + 1), show(s));
-      if (ds < 0.0)
-        reader.fail(numbers.line, fmt::format("progress rate ds_{}/dt >= 0", j + 1), show(ds));
-      row.s.push_back(s);
-      row.ds.push_back(ds);
-    }
-    const bool first = table.rows_.empty();
-    if (first && row.time != 0.0) reader.fail(numbers.line, "the first row at time 0", show(row.time));
-    if (!first) {
-      const Row& previous = table.rows_.back();
-      if (!(row.time > previous.time))
-        reader.fail(numbers.line, fmt::format("a time greater than {}", show(previous.time)),
-                    show(row.time));
-      const double h = row.time - previous.time;
-      for (int j = 0; j < n; ++j) {
-        if (row.s[j] < previous.s[j])
-          reader.fail(numbers.line, fmt::format("non-decreasing progress s_{} (>= {})", j + 1,
-                                                show(previous.s[j])),
-                      show(row.s[j]));
-        if (!monotone_piece((row.s[j] - previous.s[j]) / h, previous.ds[j], row.ds[j]))
-          reader.fail(numbers.line,
-                      fmt::format("rates ds_{}/dt that keep the Hermite interpolant from line {} "
-                                  "monotone (Fritsch-Carlson: (m0/delta)^2 + (m1/delta)^2 <= 9, "
-                                  "both 0 on a flat piece)",
-                                  j + 1, lines.back()),
-                      fmt::format("{} and {}", show(previous.ds[j]), show(row.ds[j])));
-      }
-    } else {
-      for (int j = 0; j < n; ++j)
-        if (row.s[j] != 0.0)
-          reader.fail(numbers.line, fmt::format("s_{} = 0 in the first row", j + 1), show(row.s[j]));
-    }
-    table.rows_.push_back(std::move(row));
-    lines.push_back(numbers.line);
+ProfileTable::ProfileTable(ProfileTableData data) : data_(std::move(data)) {
+  // A joint's move lasts until the first row where its progress reaches 1 (the reader
+  // guarantees the last row has s = 1 for every joint).
+  for (int j = 0; j < data_.joint_count; ++j) {
+    const auto reached = std::find_if(data_.rows.begin(), data_.rows.end(),
+                                      [j](const ProfileTableData::Row& row) { return row.s[j] == 1.0; });
+    durations_.push_back(reached->time);
   }
-  if (table.rows_.size() < 2)
-    reader.fail(reader.end_line(), "at least two rows (time 0 and the end of the move)",
-                "end of file");
-  const Row& last = table.rows_.back();
-  for (int j = 0; j < n; ++j)
-    if (last.s[j] != 1.0)
-      reader.fail(lines.back(), fmt::format("s_{} = 1 in the last row", j + 1), show(last.s[j]));
-  for (int j = 0; j < n; ++j) {
-    const auto reached = std::find_if(table.rows_.begin(), table.rows_.end(),
-                                      [j](const Row& row) { return row.s[j] == 1.0; });
-    table.durations_.push_back(reached->time);
-  }
-  return table;
-}
-
-ProfileTable ProfileTable::read(const std::string& path) {
-  std::ifstream stream(path, std::ios::binary);
-  if (!stream) throw InputError(path, 0, "a readable motion-time table file");
-  std::ostringstream text;
-  text << stream.rdbuf();
-  return parse(text.str(), path);
 }
 
 JointState ProfileTable::progress(int joint, double t) const {
   if (t <= 0.0) return {0.0, 0.0};
   if (t >= durations_[joint]) return {1.0, 0.0};
   // First row strictly after t; t lies in [rows[k-1].time, rows[k].time).
-  const auto after = std::upper_bound(rows_.begin(), rows_.end(), t,
-                                      [](double time, const Row& row) { return time < row.time; });
-  const Row& r1 = *after;
-  const Row& r0 = *(after - 1);
+  const auto after = std::upper_bound(data_.rows.begin(), data_.rows.end(), t,
+                                      [](double time, const ProfileTableData::Row& row) { return time < row.time; });
+  const ProfileTableData::Row& r1 = *after;
+  const ProfileTableData::Row& r0 = *(after - 1);
   const double h = r1.time - r0.time;
   const double u = (t - r0.time) / h;
   const double s0 = r0.s[joint], s1 = r1.s[joint], m0 = r0.ds[joint], m1 = r1.ds[joint];

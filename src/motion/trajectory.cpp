@@ -7,6 +7,22 @@
 #include <fmt/core.h>
 
 namespace grpvss::motion {
+
+const char* to_string(SegmentKind kind) {
+  switch (kind) {
+    case SegmentKind::kPtpJoint: return "ptp-joint";
+    case SegmentKind::kPtpWorld: return "ptp-world";
+    case SegmentKind::kCpLine: return "cp-line";
+  }
+  return "?";
+}
+
+std::optional<SegmentKind> segment_kind_from_string(std::string_view text) {
+  for (SegmentKind kind : {SegmentKind::kPtpJoint, SegmentKind::kPtpWorld, SegmentKind::kCpLine}) {
+    if (text == to_string(kind)) return kind;
+  }
+  return std::nullopt;
+}
 namespace {
 
 Eigen::VectorXd home_of(const RobotModel& robot) {
@@ -24,7 +40,7 @@ std::string joint_limit_detail(const RobotModel& robot, const Eigen::VectorXd& q
 struct Planner {
   const RobotModel& robot;
   const KinematicsAccess& kinematics;
-  const TrajectoryOptions& options;
+  const MotionModel& options;
 
   // Joint-space PTP (IND 1, and IND 2 after IK): error 3 when the target is outside limits.
   std::optional<ThesisError> ptp(SegmentTrajectory& piece, const Eigen::VectorXd& target,
@@ -66,7 +82,7 @@ struct Planner {
 }  // namespace
 
 Trajectory Trajectory::plan(const RobotModel& robot, const PathProgram& program,
-                            const KinematicsAccess& kinematics, const TrajectoryOptions& options) {
+                            const KinematicsAccess& kinematics, const MotionModel& options) {
   if (!(options.cp_speed > 0.0) || !std::isfinite(options.cp_speed))
     throw std::invalid_argument("Trajectory::plan: cp_speed must be positive and finite");
   Trajectory trajectory;

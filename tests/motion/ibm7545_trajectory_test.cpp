@@ -20,10 +20,10 @@ struct Sample {
   RobotModel robot = io::read_robot_file(kData + "robot.txt");
   PathProgram program = io::read_path_file(kData + "path-output-sample.txt", robot);
   Trajectory plan(PtpTiming timing) const {
-    TrajectoryOptions options;
+    MotionModel options;
     options.timing = timing;
     return Trajectory::plan(robot, program,
-                            make_kinematics_access(robot, select_ik("auto", robot, "robot.txt")),
+                            make_kinematics_access(robot, select_ik({}, robot, "robot.txt")),
                             options);
   }
 };
@@ -64,7 +64,7 @@ TEST(Ibm7545Trajectory, CpSamplesTraceTheLineAndTheYawRule) {
   const Trajectory trajectory = sample.plan(PtpTiming::kIndependent);
   const SegmentTrajectory& cp = trajectory.segments()[1];
   ASSERT_TRUE(cp.cp);
-  const auto forward = make_kinematics_access(sample.robot, select_ik("auto", sample.robot, "r")).forward;
+  const auto forward = make_kinematics_access(sample.robot, select_ik({}, sample.robot, "r")).forward;
   for (std::size_t k = 0; k < cp.cp_samples.size(); ++k) {
     const CpSample& s = cp.cp_samples[k];
     const Eigen::Isometry3d X_WE = forward(s.q);
@@ -84,7 +84,7 @@ TEST(Ibm7545Trajectory, ThesisCpStepsLieOnTheLineAndMatchOurIk) {
   const Sample sample;
   const Trajectory trajectory = sample.plan(PtpTiming::kIndependent);
   const SegmentTrajectory& cp = trajectory.segments()[1];
-  const auto access = make_kinematics_access(sample.robot, select_ik("auto", sample.robot, "r"));
+  const auto access = make_kinematics_access(sample.robot, select_ik({}, sample.robot, "r"));
   const double steps[8][4] = {{62.69, 95.39, 3.00, -169.16},  {67.36, 107.88, 3.56, -149.23},
                               {112.45, 126.75, 5.77, -74.22}, {125.16, 122.05, 6.32, -63.45},
                               {136.72, 114.01, 6.87, -57.16}, {147.39, 103.13, 7.42, -54.62},

@@ -6,11 +6,20 @@
 #include <gtest/gtest.h>
 
 #include "grpvss/common/input_error.hpp"
+#include "grpvss/io/profile_table_file.hpp"
 #include "grpvss/motion/ptp_motion.hpp"
 #include "motion/cartesian_robot.hpp"
 
 namespace grpvss::motion {
 namespace {
+
+// The reader (io/) validates, the motion stage evaluates.
+ProfileTable parse_table(std::string_view text, std::string file_name) {
+  return ProfileTable(io::parse_profile_table(text, std::move(file_name)));
+}
+ProfileTable read_table(const std::string& path) {
+  return ProfileTable(io::read_profile_table_file(path));
+}
 
 // Smoothstep s(t) = 3 t^2 - 2 t^3 on [0, 1] s, ds/dt = 6 t - 6 t^2: a cubic, so the Hermite
 // interpolant of its samples is exact everywhere (an independent reference).
@@ -26,7 +35,7 @@ std::string smoothstep_table(int joints) {
 }
 
 TEST(ProfileTable, HermiteInterpolationReproducesACubic) {
-  const ProfileTable table = ProfileTable::parse(smoothstep_table(2), "table.txt");
+  const ProfileTable table = parse_table(smoothstep_table(2), "table.txt");
   EXPECT_EQ(table.joint_count(), 2);
   EXPECT_EQ(table.header_line(), 2);
   EXPECT_EQ(table.duration(1), 1.0);
@@ -39,7 +48,7 @@ TEST(ProfileTable, HermiteInterpolationReproducesACubic) {
 }
 
 TEST(ProfileTable, JointDurationIsWhenItsProgressFirstReachesOne) {
-  const ProfileTable table = ProfileTable::parse(
+  const ProfileTable table = parse_table(
       "joints 2\n0 0 0 0 0\n1 1 0 0.5 0.5\n2 1 0 1 0\n", "t.txt");
   EXPECT_EQ(table.duration(0), 1.0);
   EXPECT_EQ(table.duration(1), 2.0);
@@ -53,7 +62,7 @@ TEST(ProfileTable, JointDurationIsWhenItsProgressFirstReachesOne) {
 }
 
 TEST(ProfileTable, AppliedToAMoveScalesProgressByTheIncrement) {
-  auto table = std::make_shared<const ProfileTable>(ProfileTable::parse(smoothstep_table(4), "t"));
+  auto table = std::make_shared<const ProfileTable>(parse_table(smoothstep_table(4), "t"));
   const RobotModel robot = testing::cartesian_robot();
   Eigen::VectorXd q_s(4), q_f(4), v(4);
   q_s << 1, 2, 3, 0;
@@ -71,7 +80,7 @@ TEST(ProfileTable, AppliedToAMoveScalesProgressByTheIncrement) {
 TEST(ProfileTable, SynchronizedTimingStretchesShorterColumns) {
   // Example table: joints 1, 2, 4 last 8 s, joint 3 lasts 6 s (smoothstep s(u), u = t / 6).
   auto table = std::make_shared<const ProfileTable>(
-      ProfileTable::read(std::string(GRPVSS_SOURCE_DIR) + "/data/motion/example-table.txt"));
+      read_table(std::string(GRPVSS_SOURCE_DIR) + "/data/motion/example-table.txt"));
   const RobotModel robot = testing::cartesian_robot();
   const Eigen::VectorXd q_s = Eigen::VectorXd::Zero(4), q_f = Eigen::VectorXd::Constant(4, 2.0);
   const PtpMotion free = PtpMotion::plan(robot, q_s, q_f, q_f, PtpTiming::kIndependent, table);
@@ -86,7 +95,7 @@ TEST(ProfileTable, SynchronizedTimingStretchesShorterColumns) {
 }
 
 TEST(ProfileTable, JointCountMustMatchTheRobot) {
-  auto table = std::make_shared<const ProfileTable>(ProfileTable::parse(smoothstep_table(3), "t3.txt"));
+  auto table = std::make_shared<const ProfileTable>(parse_table(smoothstep_table(3), "t3.txt"));
   const RobotModel robot = testing::cartesian_robot();
   const Eigen::VectorXd q = Eigen::VectorXd::Zero(4), v = Eigen::VectorXd::Ones(4);
   try {
@@ -123,7 +132,7 @@ TEST(ProfileTable, RejectsMalformedTablesWithFileAndLine) {
   };
   for (const BadTable& bad : cases) {
     try {
-      ProfileTable::parse(bad.text, "bad.txt");
+      parse_table(bad.text, "bad.txt");
       ADD_FAILURE() << "accepted: " << bad.text;
     } catch (const InputError& error) {
       EXPECT_EQ(error.file(), "bad.txt") << bad.text;
@@ -136,7 +145,7 @@ TEST(ProfileTable, RejectsMalformedTablesWithFileAndLine) {
 
 TEST(ProfileTable, MissingFileIsAnInputErrorAtLineZero) {
   try {
-    ProfileTable::read("/nonexistent/table.txt");
+    read_table("/nonexistent/table.txt");
     FAIL();
   } catch (const InputError& error) {
     EXPECT_EQ(error.line(), 0);
@@ -145,7 +154,7 @@ TEST(ProfileTable, MissingFileIsAnInputErrorAtLineZero) {
 
 TEST(ProfileTable, ShippedExampleParses) {
   const ProfileTable table =
-      ProfileTable::read(std::string(GRPVSS_SOURCE_DIR) + "/data/motion/example-table.txt");
+      read_table(std::string(GRPVSS_SOURCE_DIR) + "/data/motion/example-table.txt");
   EXPECT_EQ(table.joint_count(), 4);
   for (int j = 0; j < 4; ++j) EXPECT_GT(table.duration(j), 0.0);
 }

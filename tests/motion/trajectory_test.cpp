@@ -31,7 +31,7 @@ PathProgram sample_program() {
 
 TEST(Trajectory, SegmentsChainFromHomeWithTheirCycleTimes) {
   const RobotModel robot = testing::cartesian_robot();
-  TrajectoryOptions options;
+  MotionModel options;
   options.cp_speed = 2.0;
   options.cp_spacing = 0.25;
   const Trajectory trajectory =
@@ -69,7 +69,7 @@ TEST(Trajectory, ErrorStopsThePathAndKeepsEarlierSegments) {
   program.segments.insert(program.segments.begin() + 2,
                           PathSegment{CpLineSegment{world(2, -1, 4, 0.0)}, 0});  // zero length
   const Trajectory trajectory =
-      Trajectory::plan(robot, program, testing::cartesian_kinematics(), TrajectoryOptions{});
+      Trajectory::plan(robot, program, testing::cartesian_kinematics(), MotionModel{});
   ASSERT_EQ(trajectory.errors().size(), 1u);
   EXPECT_EQ(trajectory.errors()[0].code, 4);
   EXPECT_EQ(trajectory.errors()[0].segment, 3);
@@ -82,7 +82,7 @@ TEST(Trajectory, JointTargetOutsideLimitsIsError3) {
   program.segments.push_back(joint_segment(Eigen::Vector4d(1, 1, 1, 0), Eigen::Vector4d(1, 1, 1, 1)));
   program.segments.push_back(joint_segment(Eigen::Vector4d(1, 11, 1, 0), Eigen::Vector4d(1, 1, 1, 1)));
   const Trajectory trajectory =
-      Trajectory::plan(robot, program, testing::cartesian_kinematics(), TrajectoryOptions{});
+      Trajectory::plan(robot, program, testing::cartesian_kinematics(), MotionModel{});
   ASSERT_EQ(trajectory.errors().size(), 1u);
   EXPECT_EQ(trajectory.errors()[0].code, 3);
   EXPECT_EQ(trajectory.errors()[0].segment, 2);
@@ -95,7 +95,7 @@ TEST(Trajectory, UnreachableWorldTargetIsError3) {
   PathProgram program;
   program.segments.push_back(PathSegment{PtpWorldSegment{world(0, 0, 20, 0), Eigen::Vector4d(1, 1, 1, 1)}, 0});
   const Trajectory trajectory =
-      Trajectory::plan(robot, program, testing::cartesian_kinematics(), TrajectoryOptions{});
+      Trajectory::plan(robot, program, testing::cartesian_kinematics(), MotionModel{});
   ASSERT_EQ(trajectory.errors().size(), 1u);
   EXPECT_EQ(trajectory.errors()[0].code, 3);
   EXPECT_EQ(trajectory.errors()[0].segment, 1);
@@ -107,7 +107,7 @@ TEST(Trajectory, SynchronizedTimingReachesEveryJointTogether) {
   const RobotModel robot = testing::cartesian_robot();
   PathProgram program;
   program.segments.push_back(joint_segment(Eigen::Vector4d(4, 1, -2, 0.5), Eigen::Vector4d(1, 1, 1, 1)));
-  TrajectoryOptions options;
+  MotionModel options;
   options.timing = PtpTiming::kSynchronized;
   const Trajectory trajectory = Trajectory::plan(robot, program, testing::cartesian_kinematics(), options);
   const auto& ptp = *trajectory.segments()[0].ptp;

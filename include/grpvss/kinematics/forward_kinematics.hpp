@@ -38,6 +38,12 @@ void forward_kinematics(const KinematicChain& chain, const Eigen::VectorXd& q, W
 /// \brief Fills ws.hull_points_W from ws.X_WL (call forward_kinematics first). No allocation.
 void place_hull_points(const RobotModel& model, Workspace& ws);
 
+/// \brief Places link-frame points with the pose X_WL exactly as place_hull_points places hull
+/// vertices: the expression the FK rounding bound covers (proofs/fk-rounding.md#fk-rounding).
+/// The verifier's probe and the certificate checker both place points with it.
+void place_points(const Eigen::Isometry3d& X_WL, const std::vector<Eigen::Vector3d>& points_L,
+                  std::vector<Eigen::Vector3d>& points_W);
+
 /// \brief X_WE: pose of the end-effector frame (frame N) in the world for joint values q.
 Eigen::Isometry3d end_effector_pose(const KinematicChain& chain, const Eigen::VectorXd& q);
 

@@ -30,6 +30,19 @@ class InverseKinematics {
   virtual std::string name() const = 0;
 };
 
+/// \brief Which IK a run uses (the CLI's `--ik`, parsed by the app).
+enum class IkMethod {
+  kAuto,     ///< closed form for the IBM 7545 structure, numeric otherwise
+  kIbm7545,  ///< the IBM 7545 closed form (the robot must have its structure)
+  kNumeric,  ///< damped least squares
+  kPlugin,   ///< a user's solver through the C ABI (docs/ik-plugin.md)
+};
+
+struct IkChoice {
+  IkMethod method = IkMethod::kAuto;
+  std::string plugin_path;  ///< the shared object, for IkMethod::kPlugin
+};
+
 /// \brief Closed form when is_ibm7545_structure(model), numeric (default options) otherwise.
 std::unique_ptr<InverseKinematics> make_default_ik(const RobotModel& model);
 

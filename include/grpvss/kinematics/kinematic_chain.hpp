@@ -1,8 +1,10 @@
 #pragma once
 /// \file
 /// \brief The general kinematic description: per joint a fixed transform, a motion along or
-/// about the z axis of a joint frame, and a second fixed transform. Built from DH here; a URDF
-/// reader can build the same structure later without touching motion or certify.
+/// about the z axis of a joint frame, and a second fixed transform. make_chain() builds it from
+/// the model's DH parameters. Forward kinematics and its rounding bound work on any chain of
+/// this form; the motion-bound radii (certify/motion_bound.hpp) and the checker's exact ones
+/// still read the DH parameters of the RobotModel.
 ///
 /// Frame i (link i) is placed in frame i-1 by
 /// \f[ X_{i-1,i}(q_i) = X_{PJ,i}\; M_i(q_i)\; X_{JC,i}, \f]

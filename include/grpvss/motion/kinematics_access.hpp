@@ -2,7 +2,7 @@
 /// \file
 /// \brief What the motion stage needs from kinematics, as two functions, so that motion can
 /// be tested against simple reference robots and does not depend on how IK is provided
-/// (IBM 7545 closed form, numeric, plugin: see app/ for the adapter).
+/// (motion/kinematics_adapter.hpp builds it from the chain and the chosen IK).
 
 #include <functional>
 #include <optional>

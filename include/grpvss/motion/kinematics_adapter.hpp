@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// \brief Builds the motion stage's KinematicsAccess from the kinematics stage (FK of the DH
-/// chain, an InverseKinematics), and picks the IK by the CLI's `--ik` name.
+/// chain, an InverseKinematics), and builds the IK a run chose.
 
 #include <memory>
 #include <string>
@@ -12,12 +12,10 @@
 
 namespace grpvss::motion {
 
-/// \brief The IK named by `spec`: "auto" (closed form for the IBM 7545 structure, numeric
-/// otherwise), "ibm7545", "numeric", or "plugin:PATH.so".
-/// \throws grpvss::InputError for an unknown name (file "--ik", line 0), a robot that is not
-/// of the IBM 7545 structure for "ibm7545" (the robot file, line 0), or a plug-in that cannot
-/// be loaded.
-std::shared_ptr<const kinematics::InverseKinematics> select_ik(const std::string& spec,
+/// \brief The IK `choice` names, for `robot`.
+/// \throws grpvss::InputError for a robot that is not of the IBM 7545 structure for
+/// IkMethod::kIbm7545 (the robot file, line 0), or a plug-in that cannot be loaded.
+std::shared_ptr<const kinematics::InverseKinematics> select_ik(const kinematics::IkChoice& choice,
                                                               const RobotModel& robot,
                                                               const std::string& robot_file);
 

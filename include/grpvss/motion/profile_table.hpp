@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// \brief User motion-time profiles from a table file: GRPVSS's replacement for the thesis's
+/// \brief User motion-time profiles: GRPVSS's replacement for the thesis's
 /// compiled FORTRAN subroutine MOTFIL (Appendix A.1.2). Format: docs/trajectories.md.
 ///
 /// Semantics: for every joint j the table gives its normalised progress \f$s_j(t)\in[0,1]\f$
@@ -11,38 +11,29 @@
 /// interpolant is monotone and stays in [0, 1].
 
 #include <string>
-#include <string_view>
 #include <vector>
 
+#include "grpvss/model/profile_table_data.hpp"
 #include "grpvss/motion/trapezoid_profile.hpp"
 
 namespace grpvss::motion {
 
+/// \brief Evaluates a validated table (io/profile_table_file.hpp reads one).
 class ProfileTable {
  public:
-  /// Parses the table text; `file_name` is used in messages. Throws grpvss::InputError.
-  static ProfileTable parse(std::string_view text, std::string file_name);
-  /// Reads and parses a file. Throws grpvss::InputError (line 0 when it cannot be read).
-  static ProfileTable read(const std::string& path);
+  explicit ProfileTable(ProfileTableData data);
 
-  int joint_count() const { return joint_count_; }
+  int joint_count() const { return data_.joint_count; }
   /// Time at which joint j (0-based) first reaches s = 1: its move duration.
   double duration(int joint) const { return durations_[joint]; }
   /// s_j and ds_j/dt at time t (clamped: s = 0 before 0, s = 1 after the joint's duration).
   JointState progress(int joint, double t) const;
 
-  const std::string& file_name() const { return file_name_; }
-  int header_line() const { return header_line_; }  ///< line of the `joints N` header
+  const std::string& file_name() const { return data_.file_name; }
+  int header_line() const { return data_.header_line; }  ///< line of the `joints N` header
 
  private:
-  struct Row {
-    double time = 0.0;
-    std::vector<double> s, ds;  // one entry per joint
-  };
-  std::string file_name_;
-  int header_line_ = 0;
-  int joint_count_ = 0;
-  std::vector<Row> rows_;
+  ProfileTableData data_;
   std::vector<double> durations_;
 };
 

@@ -9,23 +9,11 @@
 #include <Eigen/Core>
 
 #include "grpvss/model/robot_model.hpp"
+#include "grpvss/motion/motion_model.hpp"
 #include "grpvss/motion/profile_table.hpp"
 #include "grpvss/motion/trapezoid_profile.hpp"
 
 namespace grpvss::motion {
-
-/// \brief How the joints of one PTP move are timed against each other.
-enum class PtpTiming {
-  /// Every joint runs its own profile with its own v_m, a_m, d_m and stops on its own
-  /// (what the thesis's output sample A.3 does). The move lasts as long as the slowest joint.
-  kIndependent,
-  /// All joints arrive together (the "smooth controller" of Section 1.1.2.1.1): the slowest
-  /// joint keeps its profile of duration T; every other joint's profile q_j(t) of duration
-  /// T_j is stretched in time, \f$\tilde q_j(t) = q_j(t\,T_j/T)\f$. For a trapezoid this is
-  /// exactly the trapezoid with \f$k v_m, k^2 a_m, k^2 d_m\f$, \f$k = T_j/T \le 1\f$: the same
-  /// shape, every limit scaled down, so all limits still hold.
-  kSynchronized,
-};
 
 /// \brief One joint's motion in one PTP move: a trapezoid or a table column, possibly
 /// stretched in time (PtpTiming::kSynchronized).

@@ -5,6 +5,7 @@
 
 #include <memory>
 #include <optional>
+#include <string_view>
 #include <vector>
 
 #include <Eigen/Core>
@@ -13,6 +14,7 @@
 #include "grpvss/model/robot_model.hpp"
 #include "grpvss/motion/cp_line.hpp"
 #include "grpvss/motion/kinematics_access.hpp"
+#include "grpvss/motion/motion_model.hpp"
 #include "grpvss/motion/profile_table.hpp"
 #include "grpvss/motion/ptp_motion.hpp"
 #include "grpvss/motion/thesis_error.hpp"
@@ -21,15 +23,10 @@ namespace grpvss::motion {
 
 enum class SegmentKind { kPtpJoint = 1, kPtpWorld = 2, kCpLine = 3 };  ///< the thesis's IND
 
-struct TrajectoryOptions {
-  PtpTiming timing = PtpTiming::kIndependent;
-  std::shared_ptr<const ProfileTable> table;  ///< null: ideal trapezoids
-  /// Nominal constant Cartesian speed of the end effector on CP lines (length units per s).
-  /// The thesis ignores CP velocity (3.2.3.2); GRPVSS times a line of length L as L / speed.
-  double cp_speed = 1.0;
-  /// Largest path-length spacing of the CP samples (IK check points), length units.
-  double cp_spacing = 0.5;
-};
+/// "ptp-joint", "ptp-world", "cp-line" (the reports' and the certificate's spelling).
+const char* to_string(SegmentKind kind);
+/// The kind spelled `text`, or nullopt.
+std::optional<SegmentKind> segment_kind_from_string(std::string_view text);
 
 /// \brief One simulated segment.
 struct SegmentTrajectory {
@@ -52,11 +49,13 @@ class Trajectory {
   /// failing segment: `segments()` holds the earlier ones, `errors()` the error.
   /// \throws grpvss::InputError if the table's joint count differs from the robot's.
   static Trajectory plan(const RobotModel& robot, const PathProgram& program,
-                         const KinematicsAccess& kinematics, const TrajectoryOptions& options);
+                         const KinematicsAccess& kinematics, const MotionModel& options);
 
   const std::vector<SegmentTrajectory>& segments() const { return segments_; }
   const std::vector<ThesisError>& errors() const { return errors_; }
   const Eigen::VectorXd& home() const { return home_; }
+  /// The motion model the trajectory was planned with.
+  const MotionModel& motion_model() const { return options_; }
   /// Total cycle time of the simulated segments.
   double duration() const { return segments_.empty() ? 0.0 : segments_.back().end_time(); }
 
@@ -72,7 +71,7 @@ class Trajectory {
  private:
   const RobotModel* robot_ = nullptr;
   KinematicsAccess kinematics_;
-  TrajectoryOptions options_;
+  MotionModel options_;
   Eigen::VectorXd home_;
   std::vector<SegmentTrajectory> segments_;
   std::vector<ThesisError> errors_;
