@@ -1,4 +1,4 @@
-#include "grpvss/geometry/certified_query.hpp"
+#include "grpvss/exact/certified_query.hpp"
 
 #include <cmath>
 #include <random>

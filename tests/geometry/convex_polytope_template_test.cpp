@@ -3,7 +3,7 @@
 // the template step accepts it; the lemma's hypotheses (proofs/placed-hull.md) must reject
 // surfaces that are not the hull. The reference here is from_points (CGAL convex_hull_3) and
 // an independent exact orientation test over every input point.
-#include "grpvss/geometry/convex_polytope.hpp"
+#include "grpvss/exact/convex_polytope.hpp"
 
 #include <gtest/gtest.h>
 
@@ -14,7 +14,7 @@
 
 #include <Eigen/Geometry>
 
-#include "grpvss/geometry/minkowski_offset.hpp"
+#include "grpvss/exact/minkowski_offset.hpp"
 #include "grpvss/io/robot_file.hpp"
 #include "support/geometry_reference.hpp"
 #include "support/random_shapes.hpp"

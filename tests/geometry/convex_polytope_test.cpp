@@ -1,4 +1,4 @@
-#include "grpvss/geometry/convex_polytope.hpp"
+#include "grpvss/exact/convex_polytope.hpp"
 
 #include <gtest/gtest.h>
 

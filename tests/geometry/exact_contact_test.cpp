@@ -1,4 +1,4 @@
-#include "grpvss/geometry/exact_contact.hpp"
+#include "grpvss/exact/exact_contact.hpp"
 
 #include <gtest/gtest.h>
 
@@ -11,7 +11,7 @@
 #include <set>
 #include <string>
 
-#include "grpvss/geometry/convex_polytope.hpp"
+#include "grpvss/exact/convex_polytope.hpp"
 #include "grpvss/geometry/gjk.hpp"
 #include "support/geometry_reference.hpp"
 #include "support/random_shapes.hpp"

@@ -1,8 +1,8 @@
 // The exact core's rounding of rational points (proofs/interference.md#rounding-the-points,
 // #crossing-by-error-bound), checked against a reference written here in GMP rationals: the
 // nearest double, ties toward +infinity, found by exact comparisons with the midpoints.
-#include "grpvss/geometry/exact_rounding.hpp"
-#include "grpvss/geometry/extended_precision.hpp"
+#include "exact/exact_rounding.hpp"
+#include "exact/extended_precision.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // The audit library: Steiner ball-sum volume against closed forms, and the audit's rows.
-#include "grpvss/geometry/expansion_audit.hpp"
+#include "grpvss/exact/expansion_audit.hpp"
 
 #include <cmath>
 #include <stdexcept>

@@ -1,16 +1,16 @@
 // The vertex graph GJK climbs on placed link offsets (hull_skeleton.hpp): its rows are the
 // hull's edges in the point set's numbering, and a climb from any vertex ends where a full
 // scan ends (the maximum), on rotated prisms and on their tolerance offsets.
-#include "grpvss/geometry/hull_skeleton.hpp"
+#include "grpvss/exact/polytope_skeleton.hpp"
 
 #include <algorithm>
 #include <random>
 
 #include <gtest/gtest.h>
 
-#include "grpvss/geometry/convex_polytope.hpp"
+#include "grpvss/exact/convex_polytope.hpp"
 #include "grpvss/geometry/gjk.hpp"
-#include "grpvss/geometry/minkowski_offset.hpp"
+#include "grpvss/exact/minkowski_offset.hpp"
 #include "support/random_shapes.hpp"
 
 namespace grpvss::geometry {

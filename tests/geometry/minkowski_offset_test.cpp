@@ -1,4 +1,4 @@
-#include "grpvss/geometry/minkowski_offset.hpp"
+#include "grpvss/exact/minkowski_offset.hpp"
 
 #include <gtest/gtest.h>
 

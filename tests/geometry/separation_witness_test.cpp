@@ -8,7 +8,7 @@
 #include <random>
 #include <string>
 
-#include "grpvss/geometry/exact_contact.hpp"
+#include "grpvss/exact/exact_contact.hpp"
 #include "support/geometry_reference.hpp"
 
 namespace grpvss::geometry {

@@ -16,8 +16,6 @@
 
 namespace grpvss::geometry {
 
-class ConvexPolytope;
-
 /// \brief Neighbours of each point of a point set, in compressed rows: the neighbours of
 /// point i are `neighbours[first[i]] .. neighbours[first[i + 1] - 1]`, ascending.
 struct HullSkeleton {
@@ -27,10 +25,7 @@ struct HullSkeleton {
   int point_count() const { return static_cast<int>(first.size()) - 1; }
 };
 
-/// \brief The skeleton of \p polytope in the numbering of the point set it was hulled from
-/// (`polytope.input_indices()`), over \p point_count points; points that are not vertices
-/// have no neighbours.
-HullSkeleton hull_skeleton(const ConvexPolytope& polytope, int point_count);
+/// The skeleton of an exact hull: exact/polytope_skeleton.hpp builds it.
 
 /// \brief A point of \p points maximising \f$d \cdot p\f$ reached by climbing \p skeleton from
 /// \p start: the neighbour with the largest value is taken while it beats the current point.

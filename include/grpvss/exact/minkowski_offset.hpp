@@ -11,21 +11,10 @@
 
 #include <Eigen/Core>
 
-#include "grpvss/geometry/convex_polytope.hpp"
+#include "grpvss/exact/convex_polytope.hpp"
+#include "grpvss/geometry/offset_shape.hpp"
 
 namespace grpvss::geometry {
-
-/// \brief Which polytope circumscribes the ball B(0, r).
-enum class OffsetShape {
-  /// Cube of half-side r: what the thesis's \f$\sqrt{2}\Delta\f$ edge offset amounts to.
-  /// Circumradius \f$\sqrt{3}\,r \approx 1.73\,r\f$.
-  kCube,
-  /// Rhombicuboctahedron with face normals in \f$\{-1,0,1\}^3\setminus 0\f$ (6 squares on the
-  /// axes, 12 squares on the edge diagonals, 8 triangles), every face plane at distance >= r:
-  /// vertices are the permutations of \f$(\pm t, \pm t, \pm r)\f$ with
-  /// \f$t \ge (\sqrt2 - 1) r\f$ (rounded up). Circumradius \f$\approx 1.16\,r\f$.
-  kRhombicuboctahedron,
-};
 
 /// \brief The offset polytope P_r itself (centred at the origin), with B(0, r) inside it
 /// verified exactly.

@@ -29,9 +29,9 @@
 #include <unordered_map>
 #include <vector>
 
-#include "grpvss/geometry/convex_polytope.hpp"
-#include "grpvss/geometry/minkowski_offset.hpp"
-#include "grpvss/geometry/extended_precision.hpp"
+#include "grpvss/exact/convex_polytope.hpp"
+#include "grpvss/exact/minkowski_offset.hpp"
+#include "extended_precision.hpp"
 
 namespace grpvss::geometry {
 
@@ -300,6 +300,9 @@ struct ConvexPolytopeBuilder {
                                const std::vector<int>& corner_input,
                                const std::vector<Triangle>& triangles,
                                const std::vector<signed char>* edge_signs);
+  static void number_vertices(ConvexPolytope& poly, const std::vector<Eigen::Vector3d>& input,
+                              std::vector<std::vector<int>> loops_input);
+  static void number_edges(ConvexPolytope& poly);
 };
 
 ConvexPolytope ConvexPolytopeBuilder::build(const std::vector<Eigen::Vector3d>& input) {
@@ -394,114 +397,145 @@ class HalfEdgeTwins {
 
 }  // namespace
 
-ConvexPolytope ConvexPolytopeBuilder::finish(const std::vector<Eigen::Vector3d>& input,
-                                             const std::vector<int>& hull_to_input,
-                                             const std::vector<Triangle>& triangles,
-                                             const std::vector<signed char>* edge_signs) {
+namespace {
+
+using HullTriangle = std::array<std::size_t, 3>;
+
+/// For half-edge 3 t + k (corner k to corner k+1 of triangle t): the triangle and corner of
+/// its twin.
+struct TriangleTwins {
+  std::vector<int> triangle, corner;
+};
+
+TriangleTwins triangle_twins(const std::vector<HullTriangle>& triangles, std::size_t corners) {
+  std::vector<int> tails(3 * triangles.size()), heads(3 * triangles.size());
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
+    for (int k = 0; k < 3; ++k) {
+      tails[3 * t + k] = static_cast<int>(triangles[t][k]);
+      heads[3 * t + k] = static_cast<int>(triangles[t][(k + 1) % 3]);
+    }
+  }
+  const HalfEdgeTwins twins(tails, heads, corners, "open convex hull mesh", "open convex hull mesh");
+  TriangleTwins result;
+  result.triangle.resize(tails.size());
+  result.corner.resize(tails.size());
+  for (std::size_t h = 0; h < tails.size(); ++h) {
+    result.triangle[h] = twins.twin(h) / 3;
+    result.corner[h] = twins.twin(h) % 3;
+  }
+  return result;
+}
+
+/// Groups of adjacent triangles that are exactly coplanar (`edge_signs` as for finish()).
+UnionFind coplanar_groups(const std::vector<Eigen::Vector3d>& input,
+                          const std::vector<int>& hull_to_input,
+                          const std::vector<HullTriangle>& triangles, const TriangleTwins& twins,
+                          const std::vector<signed char>* edge_signs) {
   const auto corner_point = [&](std::size_t corner) -> const Eigen::Vector3d& {
     return input[static_cast<std::size_t>(hull_to_input[corner])];
   };
+  UnionFind groups(triangles.size());
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
+    for (int k = 0; k < 3; ++k) {
+      const int o = twins.triangle[3 * t + k];
+      if (o < static_cast<int>(t)) continue;  // each edge once
+      const auto& tri = triangles[t];
+      const auto& other = triangles[o];
+      // The corner of `other` not on the shared edge.
+      std::size_t apex = other[0];
+      for (std::size_t c : other) {
+        if (c != tri[k] && c != tri[(k + 1) % 3]) apex = c;
+      }
+      const int side = edge_signs != nullptr
+                           ? (*edge_signs)[3 * t + k]
+                           : orientation_sign(corner_point(tri[0]), corner_point(tri[1]),
+                                              corner_point(tri[2]), corner_point(apex));
+      if (side == 0) groups.unite(t, static_cast<std::size_t>(o));
+    }
+  }
+  return groups;
+}
 
-  // Faces: merged groups of exactly coplanar adjacent triangles. A template hull whose edges
-  // are all strictly convex (every sign < 0) has only triangles: each is its own face.
-  std::vector<std::vector<int>> loops_input;  // input indices
-  loops_input.reserve(triangles.size());
+/// Each group's boundary, walked as a single CCW loop of input indices (a merged face is a
+/// convex polygon).
+std::vector<std::vector<int>> group_boundaries(const std::vector<int>& hull_to_input,
+                                               const std::vector<HullTriangle>& triangles,
+                                               const TriangleTwins& twins, UnionFind& groups) {
+  std::vector<std::vector<int>> loops;
+  std::vector<char> visited(3 * triangles.size(), 0);
+  const auto is_boundary = [&](std::size_t t, int k) {
+    return groups.find(t) != groups.find(static_cast<std::size_t>(twins.triangle[3 * t + k]));
+  };
+  for (std::size_t t0 = 0; t0 < triangles.size(); ++t0) {
+    for (int k0 = 0; k0 < 3; ++k0) {
+      if (visited[3 * t0 + k0] || !is_boundary(t0, k0)) continue;
+      const std::size_t group = groups.find(t0);
+      std::vector<int> loop;
+      std::size_t t = t0;
+      int k = k0;
+      do {
+        if (visited[3 * t + k]) throw std::logic_error("merged hull face is not a simple polygon");
+        visited[3 * t + k] = 1;
+        loop.push_back(hull_to_input[triangles[t][k]]);
+        // Next boundary half-edge: leave the target vertex, rotating through the group.
+        int nk = (k + 1) % 3;
+        while (!is_boundary(t, nk)) {
+          const int opposite_corner = twins.corner[3 * t + nk];
+          t = static_cast<std::size_t>(twins.triangle[3 * t + nk]);
+          nk = (opposite_corner + 1) % 3;
+          if (groups.find(t) != group) throw std::logic_error("merged hull face walk left group");
+        }
+        k = nk;
+      } while (!(t == t0 && k == k0));
+      loops.push_back(std::move(loop));
+    }
+  }
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
+    for (int k = 0; k < 3; ++k) {
+      if (!visited[3 * t + k] && is_boundary(t, k)) {
+        throw std::logic_error("merged hull face has more than one boundary loop");
+      }
+    }
+  }
+  return loops;
+}
+
+/// Faces: merged groups of exactly coplanar adjacent triangles, as loops of input indices. A
+/// template hull whose edges are all strictly convex (every sign < 0) has only triangles: each
+/// is its own face.
+std::vector<std::vector<int>> merged_face_loops(const std::vector<Eigen::Vector3d>& input,
+                                                const std::vector<int>& hull_to_input,
+                                                const std::vector<HullTriangle>& triangles,
+                                                const std::vector<signed char>* edge_signs) {
   const bool only_triangles =
       edge_signs != nullptr &&
       std::none_of(edge_signs->begin(), edge_signs->end(), [](signed char s) { return s == 0; });
   if (only_triangles) {
-    for (const Triangle& t : triangles) {
-      loops_input.push_back({hull_to_input[t[0]], hull_to_input[t[1]], hull_to_input[t[2]]});
+    std::vector<std::vector<int>> loops;
+    loops.reserve(triangles.size());
+    for (const HullTriangle& t : triangles) {
+      loops.push_back({hull_to_input[t[0]], hull_to_input[t[1]], hull_to_input[t[2]]});
     }
-  } else {
-    // Half-edge 3 t + k goes from corner k to corner k+1 of triangle t.
-    std::vector<int> tails(3 * triangles.size()), heads(3 * triangles.size());
-    for (std::size_t t = 0; t < triangles.size(); ++t) {
-      for (int k = 0; k < 3; ++k) {
-        tails[3 * t + k] = static_cast<int>(triangles[t][k]);
-        heads[3 * t + k] = static_cast<int>(triangles[t][(k + 1) % 3]);
-      }
-    }
-    const HalfEdgeTwins twins(tails, heads, hull_to_input.size(), "open convex hull mesh",
-                              "open convex hull mesh");
-    // twin_triangle / twin_corner[3 t + k]: the opposite half-edge of (t, k).
-    std::vector<int> twin_triangle(3 * triangles.size()), twin_corner(3 * triangles.size());
-    for (std::size_t h = 0; h < tails.size(); ++h) {
-      twin_triangle[h] = twins.twin(h) / 3;
-      twin_corner[h] = twins.twin(h) % 3;
-    }
-
-    // Merge adjacent triangles that are exactly coplanar.
-    UnionFind groups(triangles.size());
-    for (std::size_t t = 0; t < triangles.size(); ++t) {
-      for (int k = 0; k < 3; ++k) {
-        const int o = twin_triangle[3 * t + k];
-        if (o < static_cast<int>(t)) continue;  // each edge once
-        const auto& tri = triangles[t];
-        const auto& other = triangles[o];
-        // The corner of `other` not on the shared edge.
-        std::size_t apex = other[0];
-        for (std::size_t c : other) {
-          if (c != tri[k] && c != tri[(k + 1) % 3]) apex = c;
-        }
-        const int side = edge_signs != nullptr
-                             ? (*edge_signs)[3 * t + k]
-                             : orientation_sign(corner_point(tri[0]), corner_point(tri[1]),
-                                                corner_point(tri[2]), corner_point(apex));
-        if (side == 0) {
-          groups.unite(t, static_cast<std::size_t>(o));
-        }
-      }
-    }
-
-    // Walk each group's boundary (a single CCW loop: a merged face is a convex polygon).
-    std::vector<char> visited(3 * triangles.size(), 0);
-    const auto is_boundary = [&](std::size_t t, int k) {
-      return groups.find(t) != groups.find(static_cast<std::size_t>(twin_triangle[3 * t + k]));
-    };
-    for (std::size_t t0 = 0; t0 < triangles.size(); ++t0) {
-      for (int k0 = 0; k0 < 3; ++k0) {
-        if (visited[3 * t0 + k0] || !is_boundary(t0, k0)) continue;
-        const std::size_t group = groups.find(t0);
-        std::vector<int> loop;
-        std::size_t t = t0;
-        int k = k0;
-        do {
-          if (visited[3 * t + k]) throw std::logic_error("merged hull face is not a simple polygon");
-          visited[3 * t + k] = 1;
-          loop.push_back(hull_to_input[triangles[t][k]]);
-          // Next boundary half-edge: leave the target vertex, rotating through the group.
-          int nk = (k + 1) % 3;
-          while (!is_boundary(t, nk)) {
-            const int opposite_corner = twin_corner[3 * t + nk];
-            t = static_cast<std::size_t>(twin_triangle[3 * t + nk]);
-            nk = (opposite_corner + 1) % 3;
-            if (groups.find(t) != group) throw std::logic_error("merged hull face walk left group");
-          }
-          k = nk;
-        } while (!(t == t0 && k == k0));
-        loops_input.push_back(std::move(loop));
-      }
-    }
-    for (std::size_t t = 0; t < triangles.size(); ++t) {
-      for (int k = 0; k < 3; ++k) {
-        if (!visited[3 * t + k] && is_boundary(t, k)) {
-          throw std::logic_error("merged hull face has more than one boundary loop");
-        }
-      }
-    }
-    for (auto& loop : loops_input) drop_collinear(loop, input);
+    return loops;
   }
+  const TriangleTwins twins = triangle_twins(triangles, hull_to_input.size());
+  UnionFind groups = coplanar_groups(input, hull_to_input, triangles, twins, edge_signs);
+  std::vector<std::vector<int>> loops = group_boundaries(hull_to_input, triangles, twins, groups);
+  for (auto& loop : loops) drop_collinear(loop, input);
+  return loops;
+}
 
-  // Vertices: referenced input points, ordered by input index (deterministic). Marks instead
-  // of a sort, and the loops renumbered in place: this runs for every placed hull.
+}  // namespace
+
+// Vertices: referenced input points, ordered by input index (deterministic). Marks instead of
+// a sort, and the loops renumbered in place: this runs for every placed hull.
+void ConvexPolytopeBuilder::number_vertices(ConvexPolytope& poly,
+                                            const std::vector<Eigen::Vector3d>& input,
+                                            std::vector<std::vector<int>> loops_input) {
   std::vector<int> input_to_vertex(input.size(), -1);
-  std::size_t corner_count = 0;
   for (const auto& loop : loops_input) {
-    corner_count += loop.size();
     for (int idx : loop) input_to_vertex[static_cast<std::size_t>(idx)] = 0;
   }
-  ConvexPolytope poly;
   for (std::size_t idx = 0; idx < input.size(); ++idx) {
     if (input_to_vertex[idx] < 0) continue;
     input_to_vertex[idx] = static_cast<int>(poly.vertices_.size());
@@ -512,9 +546,13 @@ ConvexPolytope ConvexPolytopeBuilder::finish(const std::vector<Eigen::Vector3d>&
     for (int& idx : loop) idx = input_to_vertex[static_cast<std::size_t>(idx)];
   }
   poly.faces_ = std::move(loops_input);
+}
 
-  // Edges and their two faces, numbered in order of first appearance along the face loops
-  // (twins from compressed rows, no sort and no map: this runs for every placed hull).
+// Edges and their two faces, numbered in order of first appearance along the face loops (twins
+// from compressed rows, no sort and no map: this runs for every placed hull).
+void ConvexPolytopeBuilder::number_edges(ConvexPolytope& poly) {
+  std::size_t corner_count = 0;
+  for (const auto& loop : poly.faces_) corner_count += loop.size();
   std::vector<int> tails, heads, face_of;
   tails.reserve(corner_count);
   heads.reserve(corner_count);
@@ -541,7 +579,15 @@ ConvexPolytope ConvexPolytopeBuilder::finish(const std::vector<Eigen::Vector3d>&
     poly.edge_faces_.push_back(h_forward ? std::array<int, 2>{face_of[h], face_of[g]}
                                          : std::array<int, 2>{face_of[g], face_of[h]});
   }
+}
 
+ConvexPolytope ConvexPolytopeBuilder::finish(const std::vector<Eigen::Vector3d>& input,
+                                             const std::vector<int>& hull_to_input,
+                                             const std::vector<Triangle>& triangles,
+                                             const std::vector<signed char>* edge_signs) {
+  ConvexPolytope poly;
+  number_vertices(poly, input, merged_face_loops(input, hull_to_input, triangles, edge_signs));
+  number_edges(poly);
   // The template path's callers (placed hulls in the verifier) never read the display
   // planes or the volume; they are computed on first use there.
   if (edge_signs == nullptr) poly.compute_measures();
@@ -586,118 +632,181 @@ ConvexPolytope ConvexPolytope::from_points(const std::vector<Eigen::Vector3d>& p
   return ConvexPolytopeBuilder::build(points);
 }
 
-// proof: proofs/placed-hull.md#lemma-placed-hull (every check below is one of its hypotheses)
-std::optional<ConvexPolytope> ConvexPolytopeBuilder::build_from_template(
-    const std::vector<Eigen::Vector3d>& input, const ConvexPolytope& reference) {
+namespace {
+
+// Hypothesis (H0): the candidate surface uses every input point, each exactly once, as a vertex.
+bool template_fits(const std::vector<Eigen::Vector3d>& input, const ConvexPolytope& reference) {
   const std::size_t n = input.size();
-  // Hypothesis (H0): the candidate surface uses every input point as a vertex.
-  if (reference.vertices().size() != n || n < 4) return std::nullopt;
-  const std::vector<int>& corner_input = reference.input_indices();
+  if (reference.vertices().size() != n || n < 4) return false;
   std::vector<char> seen(n, 0);
-  for (int i : corner_input) {
-    if (i < 0 || static_cast<std::size_t>(i) >= n || seen[i]) return std::nullopt;
+  for (int i : reference.input_indices()) {
+    if (i < 0 || static_cast<std::size_t>(i) >= n || seen[i]) return false;
     seen[i] = 1;
   }
-  for (const auto& p : input) {
-    if (!p.allFinite()) return std::nullopt;
-  }
-  const auto at = [&](std::size_t corner) -> const Eigen::Vector3d& {
-    return input[static_cast<std::size_t>(corner_input[corner])];
-  };
+  return std::all_of(input.begin(), input.end(), [](const auto& p) { return p.allFinite(); });
+}
 
-  // The reference's faces, fan-triangulated. Placement rounding bends planar faces and can
-  // bend nearly flat edges the other way: every reflex edge is flipped (Lawson), and the
-  // surface is accepted only when no edge is reflex (H1), decided exactly.
-  std::vector<Triangle> triangles;
-  triangles.reserve(2 * n);
+/// The reference's faces, fan-triangulated (corner indices).
+std::vector<HullTriangle> fan_triangles(const ConvexPolytope& reference) {
+  std::vector<HullTriangle> triangles;
+  triangles.reserve(2 * reference.vertices().size());
   for (const auto& loop : reference.faces()) {
     for (std::size_t i = 1; i + 1 < loop.size(); ++i) {
       triangles.push_back({static_cast<std::size_t>(loop[0]), static_cast<std::size_t>(loop[i]),
                            static_cast<std::size_t>(loop[i + 1])});
     }
   }
-  // half_edge(u, v) = 3 t + k for the directed edge u->v at corner k of triangle t, -1 if
-  // absent: a dense table for the usual small hulls, a hash map beyond.
-  HalfEdgeTable half_edge(n);
-  std::vector<signed char> edge_signs(3 * triangles.size(), 0);
-  std::vector<char> decided(3 * triangles.size(), 0);
-  const auto link = [&](std::size_t t, bool present) {
+  return triangles;
+}
+
+/// Placement rounding bends planar faces and can bend nearly flat edges the other way: every
+/// reflex edge is flipped (Lawson) until no edge is reflex (H1), decided exactly. Returns the
+/// orientation sign of every half-edge's far apex (finish()'s `edge_signs`), or nullopt when
+/// the flips do not end in a convex surface.
+class ReflexEdgeFlips {
+ public:
+  ReflexEdgeFlips(const std::vector<Eigen::Vector3d>& input, const std::vector<int>& corner_input,
+                  std::vector<HullTriangle>& triangles)
+      : input_(input),
+        corner_input_(corner_input),
+        triangles_(triangles),
+        half_edge_(input.size()),
+        edge_signs_(3 * triangles.size(), 0),
+        decided_(3 * triangles.size(), 0) {}
+
+  std::optional<std::vector<signed char>> run();
+
+ private:
+  const Eigen::Vector3d& at(std::size_t corner) const {
+    return input_[static_cast<std::size_t>(corner_input_[corner])];
+  }
+  void link(std::size_t t, bool present);
+  void queue_every_edge();
+  /// Decides edge u-v: convex or flat (recorded), or reflex (flipped). False when a flip is
+  /// impossible or the flips do not end.
+  bool settle(std::size_t u, std::size_t v);
+
+  const std::vector<Eigen::Vector3d>& input_;
+  const std::vector<int>& corner_input_;
+  std::vector<HullTriangle>& triangles_;
+  /// half_edge(u, v) = 3 t + k for the directed edge u->v at corner k of triangle t, -1 if
+  /// absent: a dense table for the usual small hulls, a hash map beyond.
+  HalfEdgeTable half_edge_;
+  std::vector<signed char> edge_signs_;
+  std::vector<char> decided_;
+  std::vector<std::array<std::size_t, 2>> pending_;
+  std::size_t flips_ = 0;
+};
+
+void ReflexEdgeFlips::link(std::size_t t, bool present) {
+  for (int k = 0; k < 3; ++k) {
+    half_edge_.set(triangles_[t][k], triangles_[t][(k + 1) % 3],
+                   present ? static_cast<int>(3 * t + k) : -1);
+    decided_[3 * t + k] = 0;
+  }
+}
+
+void ReflexEdgeFlips::queue_every_edge() {
+  for (std::size_t t = 0; t < triangles_.size(); ++t) link(t, true);
+  for (const HullTriangle& t : triangles_) {
     for (int k = 0; k < 3; ++k) {
-      half_edge.set(triangles[t][k], triangles[t][(k + 1) % 3],
-                    present ? static_cast<int>(3 * t + k) : -1);
-      decided[3 * t + k] = 0;
-    }
-  };
-  for (std::size_t t = 0; t < triangles.size(); ++t) link(t, true);
-  std::vector<std::array<std::size_t, 2>> pending;
-  for (const Triangle& t : triangles) {
-    for (int k = 0; k < 3; ++k) {
-      if (half_edge.get(t[(k + 1) % 3], t[k]) < 0) {
+      if (half_edge_.get(t[(k + 1) % 3], t[k]) < 0) {
         throw std::logic_error("placed hull template is not a closed surface");
       }
-      if (t[k] < t[(k + 1) % 3]) pending.push_back({t[k], t[(k + 1) % 3]});
+      if (t[k] < t[(k + 1) % 3]) pending_.push_back({t[k], t[(k + 1) % 3]});
     }
   }
-  const std::size_t flip_limit = 4 * triangles.size();
-  std::size_t flips = 0;
-  while (!pending.empty()) {
-    const auto [u, v] = pending.back();
-    pending.pop_back();
-    const int near = half_edge.get(u, v);
-    const int far = half_edge.get(v, u);
-    if (near < 0 || far < 0) continue;  // flipped away meanwhile
-    const std::size_t t = static_cast<std::size_t>(near) / 3, t2 = static_cast<std::size_t>(far) / 3;
-    const std::size_t c = triangles[t][(near % 3 + 2) % 3];
-    const std::size_t d = triangles[t2][(far % 3 + 2) % 3];
-    const int side = orientation_sign(at(triangles[t][0]), at(triangles[t][1]),
-                                      at(triangles[t][2]), at(d));
-    if (side <= 0) {
-      edge_signs[near] = edge_signs[far] = static_cast<signed char>(side);
-      decided[near] = decided[far] = 1;
-      continue;
-    }
-    // Reflex edge u-v: replace triangles (u, v, c), (v, u, d) by (u, d, c), (d, v, c).
-    if (half_edge.get(c, d) >= 0 || ++flips > flip_limit) return std::nullopt;
-    link(t, false);
-    link(t2, false);
-    triangles[t] = {u, d, c};
-    triangles[t2] = {d, v, c};
-    link(t, true);
-    link(t2, true);
-    // The new diagonal's sign is exactly -side (same four points, two of them swapped).
-    const int dc = half_edge.get(d, c), cd = half_edge.get(c, d);
-    edge_signs[dc] = edge_signs[cd] = static_cast<signed char>(-side);
-    decided[dc] = decided[cd] = 1;
-    for (const auto& [a, b] : {std::array<std::size_t, 2>{u, d}, {d, v}, {v, c}, {c, u}}) {
-      pending.push_back({std::min(a, b), std::max(a, b)});
-    }
+}
+
+bool ReflexEdgeFlips::settle(std::size_t u, std::size_t v) {
+  const int near = half_edge_.get(u, v);
+  const int far = half_edge_.get(v, u);
+  if (near < 0 || far < 0) return true;  // flipped away meanwhile
+  const std::size_t t = static_cast<std::size_t>(near) / 3, t2 = static_cast<std::size_t>(far) / 3;
+  const std::size_t c = triangles_[t][(near % 3 + 2) % 3];
+  const std::size_t d = triangles_[t2][(far % 3 + 2) % 3];
+  const int side = orientation_sign(at(triangles_[t][0]), at(triangles_[t][1]),
+                                    at(triangles_[t][2]), at(d));
+  if (side <= 0) {
+    edge_signs_[near] = edge_signs_[far] = static_cast<signed char>(side);
+    decided_[near] = decided_[far] = 1;
+    return true;
   }
-  if (std::find(decided.begin(), decided.end(), 0) != decided.end()) {
+  // Reflex edge u-v: replace triangles (u, v, c), (v, u, d) by (u, d, c), (d, v, c).
+  if (half_edge_.get(c, d) >= 0 || ++flips_ > 4 * triangles_.size()) return false;
+  link(t, false);
+  link(t2, false);
+  triangles_[t] = {u, d, c};
+  triangles_[t2] = {d, v, c};
+  link(t, true);
+  link(t2, true);
+  // The new diagonal's sign is exactly -side (same four points, two of them swapped).
+  const int dc = half_edge_.get(d, c), cd = half_edge_.get(c, d);
+  edge_signs_[dc] = edge_signs_[cd] = static_cast<signed char>(-side);
+  decided_[dc] = decided_[cd] = 1;
+  for (const auto& [a, b] : {std::array<std::size_t, 2>{u, d}, {d, v}, {v, c}, {c, u}}) {
+    pending_.push_back({std::min(a, b), std::max(a, b)});
+  }
+  return true;
+}
+
+std::optional<std::vector<signed char>> ReflexEdgeFlips::run() {
+  queue_every_edge();
+  while (!pending_.empty()) {
+    const auto [u, v] = pending_.back();
+    pending_.pop_back();
+    if (!settle(u, v)) return std::nullopt;
+  }
+  if (std::find(decided_.begin(), decided_.end(), 0) != decided_.end()) {
     throw std::logic_error("placed hull: an edge was left undecided");
   }
-  // (H2) a centre strictly below every triangle's plane.
+  return std::move(edge_signs_);
+}
+
+/// (H2) a centre strictly below every triangle's plane, and (H3) the ray from the centre
+/// through a point inside triangle 0's cone meets no other triangle's closed cone: the radial
+/// projection has degree one.
+bool star_shaped_once_around(const std::vector<Eigen::Vector3d>& input,
+                             const std::vector<int>& corner_input,
+                             const std::vector<HullTriangle>& triangles) {
+  const auto at = [&](std::size_t corner) -> const Eigen::Vector3d& {
+    return input[static_cast<std::size_t>(corner_input[corner])];
+  };
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();
   for (const auto& p : input) centre += p;
-  centre /= static_cast<double>(n);
-  for (const Triangle& t : triangles) {
-    if (orientation_sign(at(t[0]), at(t[1]), at(t[2]), centre) >= 0) return std::nullopt;
+  centre /= static_cast<double>(input.size());
+  for (const HullTriangle& t : triangles) {
+    if (orientation_sign(at(t[0]), at(t[1]), at(t[2]), centre) >= 0) return false;
   }
-  // (H3) the ray from the centre through a point inside triangle 0's cone meets no other
-  // triangle's closed cone: the radial projection has degree one.
-  const Triangle& first = triangles.front();
+  const HullTriangle& first = triangles.front();
   const Eigen::Vector3d target = (at(first[0]) + at(first[1]) + at(first[2])) / 3.0;
   // The third corner c of triangle (a, b, c) is always on the positive side of
   // plane(centre, a, b): det[a-o, b-o, c-o] = -orient(a, b, c, o) > 0 by (H2), so the cone
   // test needs only the target's sides (proofs/placed-hull.md#implementation).
-  const auto side = [&](const Triangle& t, int k) {
+  const auto side = [&](const HullTriangle& t, int k) {
     return orientation_sign(centre, at(t[k]), at(t[(k + 1) % 3]), target);
   };
-  if (side(first, 0) <= 0 || side(first, 1) <= 0 || side(first, 2) <= 0) return std::nullopt;
+  if (side(first, 0) <= 0 || side(first, 1) <= 0 || side(first, 2) <= 0) return false;
   for (std::size_t t = 1; t < triangles.size(); ++t) {
-    const Triangle& other = triangles[t];
-    if (side(other, 0) >= 0 && side(other, 1) >= 0 && side(other, 2) >= 0) return std::nullopt;
+    const HullTriangle& other = triangles[t];
+    if (side(other, 0) >= 0 && side(other, 1) >= 0 && side(other, 2) >= 0) return false;
   }
-  return finish(input, corner_input, triangles, &edge_signs);
+  return true;
+}
+
+}  // namespace
+
+// proof: proofs/placed-hull.md#lemma-placed-hull (every check is one of its hypotheses)
+std::optional<ConvexPolytope> ConvexPolytopeBuilder::build_from_template(
+    const std::vector<Eigen::Vector3d>& input, const ConvexPolytope& reference) {
+  if (!template_fits(input, reference)) return std::nullopt;                       // (H0)
+  std::vector<Triangle> triangles = fan_triangles(reference);
+  const auto edge_signs = ReflexEdgeFlips(input, reference.input_indices(), triangles).run();
+  if (!edge_signs) return std::nullopt;                                            // (H1)
+  if (!star_shaped_once_around(input, reference.input_indices(), triangles)) {     // (H2), (H3)
+    return std::nullopt;
+  }
+  return finish(input, reference.input_indices(), triangles, &*edge_signs);
 }
 
 std::optional<ConvexPolytope> ConvexPolytope::from_template(

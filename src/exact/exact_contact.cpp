@@ -25,9 +25,9 @@
 #include <string>
 #include <vector>
 
-#include "grpvss/geometry/convex_polytope.hpp"
-#include "grpvss/geometry/exact_contact.hpp"
-#include "grpvss/geometry/exact_rounding.hpp"
+#include "grpvss/exact/convex_polytope.hpp"
+#include "grpvss/exact/exact_contact.hpp"
+#include "exact_rounding.hpp"
 #include "grpvss/geometry/separation_witness.hpp"
 
 namespace grpvss::geometry {
@@ -505,192 +505,270 @@ void coplanar_edge_points(FaceSides& face, const Hull& faces_of, const Eigen::Ve
   }
 }
 
+/// Axis-aligned box of some points (exact double compares).
+struct PointBox {
+  Eigen::Vector3d lo, hi;
+  bool misses(const PointBox& other) const {
+    return (hi.array() < other.lo.array()).any() || (other.hi.array() < lo.array()).any();
+  }
+};
+
+template <class Indices>
+PointBox box_of_points(const std::vector<Eigen::Vector3d>& points, const Indices& indices) {
+  PointBox box{points[*indices.begin()], points[*indices.begin()]};
+  for (const int i : indices) {
+    box.lo = box.lo.cwiseMin(points[i]);
+    box.hi = box.hi.cwiseMax(points[i]);
+  }
+  return box;
+}
+
 /// Edges of `edges_of` meeting faces of `faces_of` (closed polygons), exactly.
 /// For a crossing with s_p = n.(p - v_0), s_q = n.(q - v_0) of opposite signs the point is
 /// X = (s_p q - s_q p) / (s_p - s_q); it is inside the face iff
 /// sign(m_k . (N - D v_k)) * sign(D) >= 0 for every loop edge k (N, D its numerator and
 /// denominator). Each sign is taken from intervals when they decide it, else computed exactly.
-void edge_face_points(const Hull& edges_of, const Hull& faces_of, InterferenceKind kind,
-                      PointCollector& out) {
-  const auto& ev = edges_of.poly.vertices();
-  const auto& fv = faces_of.poly.vertices();
-  const auto& edges = edges_of.poly.edges();
+class EdgeFaceScan {
+ public:
+  EdgeFaceScan(const Hull& edges_of, const Hull& faces_of, InterferenceKind kind,
+               PointCollector& out);
+  void run();
+
+ private:
+  using EpickPoint = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
+
+  /// What one face needs, its exact and interval data built for its first candidate edge only.
+  struct FaceScan {
+    int f = 0;
+    PointBox box;
+    EpickPoint f0, f1, f2;
+    std::optional<FaceSides> exact;
+    IV3 n, v0;
+  };
+  void collect_near_edges();
+  void scan_face(FaceScan& face);
+  void edge_meets_face(std::size_t e, FaceScan& face);
+  /// Exact plane side of vertex v of edges_of, memoised for the current face.
+  int plane_side(const FaceScan& face, int v);
+  void prepare_face(FaceScan& face);
+  const IV& interval_value(int v, const FaceScan& face);
+  /// Interval pass over the loop edges for the crossing of edge (i0, i1): false when the point is
+  /// certainly outside the face; `undecided_` holds the loop edges the intervals could not tell.
+  bool maybe_inside(FaceScan& face, int i0, int i1, int s0, bool at_end, int end);
+  ExactPoint crossing_point(FaceScan& face, int i0, int i1, int s0, bool at_end, int end) const;
+  /// The loop edges the intervals left undecided, exactly.
+  bool inside_exactly(FaceScan& face, const ExactPoint& x) const;
+
+  const Hull& edges_of_;
+  const Hull& faces_of_;
+  InterferenceKind kind_;
+  PointCollector& out_;
+  const std::vector<Eigen::Vector3d>& ev_;
+  const std::vector<Eigen::Vector3d>& fv_;
+  const std::vector<std::array<int, 2>>& edges_;
+  std::vector<EpickPoint> ep_;
+  std::vector<PointBox> edge_box_;
+  std::vector<std::size_t> near_edges_;
+  PointBox edges_of_box_;
+  // Per-face caches, sized once.
+  std::vector<IV> value_;
+  std::vector<char> have_value_;
+  std::vector<int> side_;
+  std::vector<std::size_t> side_stamp_;
+  std::size_t face_stamp_ = 0;
+  std::vector<IV3> m_iv_;
+  std::vector<IV3> v_iv_;
+  std::vector<std::size_t> undecided_;
+};
+
+EdgeFaceScan::EdgeFaceScan(const Hull& edges_of, const Hull& faces_of, InterferenceKind kind,
+                           PointCollector& out)
+    : edges_of_(edges_of),
+      faces_of_(faces_of),
+      kind_(kind),
+      out_(out),
+      ev_(edges_of.poly.vertices()),
+      fv_(faces_of.poly.vertices()),
+      edges_(edges_of.poly.edges()) {}
+
+void EdgeFaceScan::run() {
+  collect_near_edges();
+  if (near_edges_.empty()) return;
   // Exact plane sides by CGAL's filtered orientation predicate: n.(p - v_0) with
   // n = (v_1 - v_0) x (v_2 - v_0) is det[v_1 - v_0, v_2 - v_0, p - v_0] = orientation(v0, v1, v2, p).
-  using EpickPoint = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
-  std::vector<EpickPoint> ep;
-  ep.reserve(ev.size());
-  for (const auto& v : ev) ep.emplace_back(v.x(), v.y(), v.z());
-  // Bounding boxes of the edges (exact double compares drop edges far from a face). Only
-  // edges whose box meets the box of faces_of's vertices can meet any of its faces: the
-  // face loop below visits those alone.
-  Eigen::Vector3d faces_lo = fv[0], faces_hi = fv[0];
-  for (const auto& v : fv) {
-    faces_lo = faces_lo.cwiseMin(v);
-    faces_hi = faces_hi.cwiseMax(v);
-  }
-  std::vector<Eigen::Vector3d> edge_lo(edges.size()), edge_hi(edges.size());
-  std::vector<std::size_t> near_edges;
-  for (std::size_t e = 0; e < edges.size(); ++e) {
-    edge_lo[e] = ev[edges[e][0]].cwiseMin(ev[edges[e][1]]);
-    edge_hi[e] = ev[edges[e][0]].cwiseMax(ev[edges[e][1]]);
-    if (!((edge_hi[e].array() < faces_lo.array()).any() ||
-          (faces_hi.array() < edge_lo[e].array()).any())) {
-      near_edges.push_back(e);
-    }
-  }
-  if (near_edges.empty()) return;
+  ep_.reserve(ev_.size());
+  for (const auto& v : ev_) ep_.emplace_back(v.x(), v.y(), v.z());
   // Every crossing point lies on an edge, hence in the box of all of edges_of's vertices: a
   // face whose box misses it has none (exact double compares, before any predicate).
-  Eigen::Vector3d all_lo = ev[0], all_hi = ev[0];
-  for (const auto& v : ev) {
-    all_lo = all_lo.cwiseMin(v);
-    all_hi = all_hi.cwiseMax(v);
+  std::vector<int> all(ev_.size());
+  for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
+  edges_of_box_ = box_of_points(ev_, all);
+  value_.resize(ev_.size());
+  have_value_.resize(ev_.size());
+  side_.resize(ev_.size());
+  side_stamp_.assign(ev_.size(), 0);
+  for (std::size_t f = 0; f < faces_of_.poly.faces().size(); ++f) {
+    FaceScan face;
+    face.f = static_cast<int>(f);
+    face.box = box_of_points(fv_, faces_of_.poly.faces()[f]);
+    if (edges_of_box_.misses(face.box)) continue;
+    scan_face(face);
   }
-  std::vector<IV> value(ev.size());
-  std::vector<char> have_value(ev.size());
-  std::vector<int> side(ev.size());
-  std::vector<std::size_t> side_stamp(ev.size(), 0);
-  std::size_t face_stamp = 0;
-  std::vector<IV3> m_iv;  // per face, reused
-  std::vector<IV3> v_iv;
-  std::vector<std::size_t> undecided;
-  for (std::size_t f = 0; f < faces_of.poly.faces().size(); ++f) {
-    const auto& face_loop = faces_of.poly.faces()[f];
-    Eigen::Vector3d face_lo = fv[face_loop[0]], face_hi = fv[face_loop[0]];
-    for (int i : face_loop) {
-      face_lo = face_lo.cwiseMin(fv[i]);
-      face_hi = face_hi.cwiseMax(fv[i]);
-    }
-    if ((all_hi.array() < face_lo.array()).any() || (face_hi.array() < all_lo.array()).any()) {
-      continue;
-    }
-    const auto& loop = face_loop;
-    const EpickPoint f0(fv[loop[0]].x(), fv[loop[0]].y(), fv[loop[0]].z());
-    const EpickPoint f1(fv[loop[1]].x(), fv[loop[1]].y(), fv[loop[1]].z());
-    const EpickPoint f2(fv[loop[2]].x(), fv[loop[2]].y(), fv[loop[2]].z());
-    // Plane sides are taken only for the end points of edges whose box meets the face's box
-    // (most edges of a large hull are nowhere near a given face): memoised for this face.
-    ++face_stamp;
-    const auto plane_side = [&](int v) {
-      if (side_stamp[v] != face_stamp) {
-        side[v] = static_cast<int>(CGAL::orientation(f0, f1, f2, ep[v]));
-        side_stamp[v] = face_stamp;
-      }
-      return side[v];
-    };
-    // The face's exact and interval data are built for its first candidate edge only.
-    std::optional<FaceSides> face;
-    IV3 n;
-    IV3 v0_iv;
-    const auto prepare_face = [&] {
-      if (face) return;
-      face.emplace(faces_of, ev, static_cast<int>(f));
-      std::fill(have_value.begin(), have_value.end(), 0);
-      m_iv.clear();
-      v_iv.clear();
-      CGAL::Protect_FPU_rounding<true> guard;
-      n = faces_of.face_normal<IV>(static_cast<int>(f));
-      v0_iv = lift<IV>(fv[loop[0]]);
-      for (std::size_t k = 0; k < loop.size(); ++k) {
-        const IV3 vk = lift<IV>(fv[loop[k]]);
-        v_iv.push_back(vk);
-        m_iv.push_back(cross(n, minus(lift<IV>(fv[loop[(k + 1) % loop.size()]]), vk)));
-      }
-    };
-    const auto interval_value = [&](int v) -> const IV& {
-      if (!have_value[v]) {
-        value[v] = dot(n, minus(lift<IV>(ev[v]), v0_iv));  // caller holds the rounding guard
-        have_value[v] = 1;
-      }
-      return value[v];
-    };
-    for (const std::size_t e : near_edges) {
-      if ((edge_hi[e].array() < face_lo.array()).any() ||
-          (face_hi.array() < edge_lo[e].array()).any()) {
-        continue;  // disjoint bounding boxes (exact double compares)
-      }
-      const int i0 = edges[e][0];
-      const int i1 = edges[e][1];
-      const int s0 = plane_side(i0);
-      const int s1 = plane_side(i1);
-      if (s0 * s1 > 0) continue;
-      prepare_face();
-      if (s0 == 0 && s1 == 0) {
-        coplanar_edge_points(*face, faces_of, ev[i0], ev[i1], kind, static_cast<int>(e),
-                             static_cast<int>(f), out);
-        continue;
-      }
-      // The crossing point as N / D: an end point on the plane, or the proper crossing.
-      const bool at_end = s0 == 0 || s1 == 0;
-      const int end = s0 == 0 ? i0 : i1;
-      // Interval pass over the loop edges: -1 certainly outside, 0 undecided, 1 inside.
-      undecided.clear();
-      bool outside = false;
-      {
-        CGAL::Protect_FPU_rounding<true> guard;
-        IV3 num;
-        IV den(1);
-        if (at_end) {
-          num = lift<IV>(ev[end]);
-        } else {
-          const IV3 p = lift<IV>(ev[i0]);
-          const IV3 q = lift<IV>(ev[i1]);
-          const IV& sp = interval_value(i0);
-          const IV& sq = interval_value(i1);
-          for (int k = 0; k < 3; ++k) num[k] = sp * q[k] - sq * p[k];
-          den = sp - sq;
-        }
-        const int sd = at_end ? 1 : s0;  // sign(D) = sign(s_p - s_q) = s_p
-        for (std::size_t k = 0; k < loop.size() && !outside; ++k) {
-          const IV3 rel{num[0] - den * v_iv[k][0], num[1] - den * v_iv[k][1],
-                        num[2] - den * v_iv[k][2]};
-          const Certain c = sign_of(dot(m_iv[k], rel));
-          if (c == Certain::kUnknown) {
-            undecided.push_back(k);
-          } else if (certain_int(c) * sd < 0) {
-            outside = true;
-          }
-        }
-      }
-      if (outside) continue;
-      ExactPoint x;
-      if (at_end) {
-        x = exact_vertex(ev[end]);
-      } else if (const auto rounded =
-                     undecided.empty()
-                         ? crossing_rounded_by_error_bound(ev[i0], ev[i1], fv[loop[0]],
-                                                           fv[loop[1]], fv[loop[2]])
-                         : std::nullopt) {
-        // proof: proofs/interference.md#crossing-by-error-bound
-        x.rounded = *rounded;
-        x.exact_known = false;
-        x.crossing = {ev[i0], ev[i1], fv[loop[0]], fv[loop[1]], fv[loop[2]]};
-      } else {
-        const Fast& sp = face->side(i0);
-        const Fast& sq = face->side(i1);
-        const Fast3 p = lift<Fast>(ev[i0]);
-        const Fast3 q = lift<Fast>(ev[i1]);
-        for (int k = 0; k < 3; ++k) x.num[k] = sp * q[k] - sq * p[k];
-        x.den = sp - sq;
-        if (s0 < 0) {  // keep den > 0
-          for (auto& c : x.num) c = -c;
-          x.den = -x.den;
-        }
-      }
-      for (std::size_t k : undecided) {
-        const Fast3 vk = lift<Fast>(fv[loop[k]]);
-        const Fast3 rel{x.num[0] - x.den * vk[0], x.num[1] - x.den * vk[1],
-                        x.num[2] - x.den * vk[2]};
-        if (exact_sign(dot(face->edge_normal(k), rel)) < 0) {
-          outside = true;
-          break;
-        }
-      }
-      if (outside) continue;
-      out.add(std::move(x), kind, static_cast<int>(e), static_cast<int>(f));
+}
+
+// Only edges whose box meets the box of faces_of's vertices can meet any of its faces: the
+// face loop visits those alone.
+void EdgeFaceScan::collect_near_edges() {
+  std::vector<int> all(fv_.size());
+  for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
+  const PointBox faces_box = box_of_points(fv_, all);
+  edge_box_.resize(edges_.size());
+  for (std::size_t e = 0; e < edges_.size(); ++e) {
+    edge_box_[e] = box_of_points(ev_, edges_[e]);
+    if (!edge_box_[e].misses(faces_box)) near_edges_.push_back(e);
+  }
+}
+
+void EdgeFaceScan::scan_face(FaceScan& face) {
+  const auto& loop = faces_of_.poly.faces()[face.f];
+  const auto epick = [](const Eigen::Vector3d& v) { return EpickPoint(v.x(), v.y(), v.z()); };
+  face.f0 = epick(fv_[loop[0]]);
+  face.f1 = epick(fv_[loop[1]]);
+  face.f2 = epick(fv_[loop[2]]);
+  // Plane sides are taken only for the end points of edges whose box meets the face's box
+  // (most edges of a large hull are nowhere near a given face): memoised for this face.
+  ++face_stamp_;
+  for (const std::size_t e : near_edges_) {
+    if (edge_box_[e].misses(face.box)) continue;  // disjoint boxes (exact double compares)
+    edge_meets_face(e, face);
+  }
+}
+
+int EdgeFaceScan::plane_side(const FaceScan& face, int v) {
+  if (side_stamp_[v] != face_stamp_) {
+    side_[v] = static_cast<int>(CGAL::orientation(face.f0, face.f1, face.f2, ep_[v]));
+    side_stamp_[v] = face_stamp_;
+  }
+  return side_[v];
+}
+
+void EdgeFaceScan::prepare_face(FaceScan& face) {
+  if (face.exact) return;
+  const auto& loop = faces_of_.poly.faces()[face.f];
+  face.exact.emplace(faces_of_, ev_, face.f);
+  std::fill(have_value_.begin(), have_value_.end(), 0);
+  m_iv_.clear();
+  v_iv_.clear();
+  CGAL::Protect_FPU_rounding<true> guard;
+  face.n = faces_of_.face_normal<IV>(face.f);
+  face.v0 = lift<IV>(fv_[loop[0]]);
+  for (std::size_t k = 0; k < loop.size(); ++k) {
+    const IV3 vk = lift<IV>(fv_[loop[k]]);
+    v_iv_.push_back(vk);
+    m_iv_.push_back(cross(face.n, minus(lift<IV>(fv_[loop[(k + 1) % loop.size()]]), vk)));
+  }
+}
+
+const IV& EdgeFaceScan::interval_value(int v, const FaceScan& face) {
+  if (!have_value_[v]) {
+    value_[v] = dot(face.n, minus(lift<IV>(ev_[v]), face.v0));  // caller holds the rounding guard
+    have_value_[v] = 1;
+  }
+  return value_[v];
+}
+
+void EdgeFaceScan::edge_meets_face(std::size_t e, FaceScan& face) {
+  const int i0 = edges_[e][0];
+  const int i1 = edges_[e][1];
+  const int s0 = plane_side(face, i0);
+  const int s1 = plane_side(face, i1);
+  if (s0 * s1 > 0) return;
+  prepare_face(face);
+  if (s0 == 0 && s1 == 0) {
+    coplanar_edge_points(*face.exact, faces_of_, ev_[i0], ev_[i1], kind_, static_cast<int>(e),
+                         face.f, out_);
+    return;
+  }
+  // The crossing point as N / D: an end point on the plane, or the proper crossing.
+  const bool at_end = s0 == 0 || s1 == 0;
+  const int end = s0 == 0 ? i0 : i1;
+  if (!maybe_inside(face, i0, i1, s0, at_end, end)) return;
+  ExactPoint x = crossing_point(face, i0, i1, s0, at_end, end);
+  if (!inside_exactly(face, x)) return;
+  out_.add(std::move(x), kind_, static_cast<int>(e), face.f);
+}
+
+bool EdgeFaceScan::maybe_inside(FaceScan& face, int i0, int i1, int s0, bool at_end, int end) {
+  undecided_.clear();
+  CGAL::Protect_FPU_rounding<true> guard;
+  IV3 num;
+  IV den(1);
+  if (at_end) {
+    num = lift<IV>(ev_[end]);
+  } else {
+    const IV3 p = lift<IV>(ev_[i0]);
+    const IV3 q = lift<IV>(ev_[i1]);
+    const IV& sp = interval_value(i0, face);
+    const IV& sq = interval_value(i1, face);
+    for (int k = 0; k < 3; ++k) num[k] = sp * q[k] - sq * p[k];
+    den = sp - sq;
+  }
+  const int sd = at_end ? 1 : s0;  // sign(D) = sign(s_p - s_q) = s_p
+  const std::size_t loop_size = faces_of_.poly.faces()[face.f].size();
+  for (std::size_t k = 0; k < loop_size; ++k) {
+    const IV3 rel{num[0] - den * v_iv_[k][0], num[1] - den * v_iv_[k][1],
+                  num[2] - den * v_iv_[k][2]};
+    const Certain c = sign_of(dot(m_iv_[k], rel));
+    if (c == Certain::kUnknown) {
+      undecided_.push_back(k);
+    } else if (certain_int(c) * sd < 0) {
+      return false;  // -1: certainly outside
     }
   }
+  return true;
+}
+
+ExactPoint EdgeFaceScan::crossing_point(FaceScan& face, int i0, int i1, int s0, bool at_end,
+                                        int end) const {
+  const auto& loop = faces_of_.poly.faces()[face.f];
+  if (at_end) return exact_vertex(ev_[end]);
+  ExactPoint x;
+  if (undecided_.empty()) {
+    if (const auto rounded = crossing_rounded_by_error_bound(ev_[i0], ev_[i1], fv_[loop[0]],
+                                                             fv_[loop[1]], fv_[loop[2]])) {
+      // proof: proofs/interference.md#crossing-by-error-bound
+      x.rounded = *rounded;
+      x.exact_known = false;
+      x.crossing = {ev_[i0], ev_[i1], fv_[loop[0]], fv_[loop[1]], fv_[loop[2]]};
+      return x;
+    }
+  }
+  const Fast& sp = face.exact->side(i0);
+  const Fast& sq = face.exact->side(i1);
+  const Fast3 p = lift<Fast>(ev_[i0]);
+  const Fast3 q = lift<Fast>(ev_[i1]);
+  for (int k = 0; k < 3; ++k) x.num[k] = sp * q[k] - sq * p[k];
+  x.den = sp - sq;
+  if (s0 < 0) {  // keep den > 0
+    for (auto& c : x.num) c = -c;
+    x.den = -x.den;
+  }
+  return x;
+}
+
+bool EdgeFaceScan::inside_exactly(FaceScan& face, const ExactPoint& x) const {
+  const auto& loop = faces_of_.poly.faces()[face.f];
+  for (std::size_t k : undecided_) {
+    const Fast3 vk = lift<Fast>(fv_[loop[k]]);
+    const Fast3 rel{x.num[0] - x.den * vk[0], x.num[1] - x.den * vk[1], x.num[2] - x.den * vk[2]};
+    if (exact_sign(dot(face.exact->edge_normal(k), rel)) < 0) return false;
+  }
+  return true;
+}
+
+void edge_face_points(const Hull& edges_of, const Hull& faces_of, InterferenceKind kind,
+                      PointCollector& out) {
+  EdgeFaceScan(edges_of, faces_of, kind, out).run();
 }
 
 /// Vertices of `of` inside closed `in`, exactly (all face planes n.x <= c).

@@ -1,4 +1,4 @@
-#include "grpvss/geometry/certified_query.hpp"
+#include "grpvss/exact/certified_query.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 
 #include <Eigen/Geometry>
 
-#include "grpvss/geometry/convex_polytope.hpp"
+#include "grpvss/exact/convex_polytope.hpp"
 #include "grpvss/geometry/directed_rounding.hpp"
 
 namespace grpvss::geometry {

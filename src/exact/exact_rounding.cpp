@@ -2,8 +2,8 @@
 /// \brief Rounding the exact core's rational points to doubles (exact_rounding.hpp).
 /// Only CGAL's Mpzf and Interval_nt are used here: no kernel.
 
-#include "grpvss/geometry/exact_rounding.hpp"
-#include "grpvss/geometry/extended_precision.hpp"
+#include "exact_rounding.hpp"
+#include "extended_precision.hpp"
 
 #include <CGAL/Gmpq.h>
 #include <CGAL/Interval_nt.h>

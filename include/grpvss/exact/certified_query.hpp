@@ -18,7 +18,7 @@
 
 #include <Eigen/Core>
 
-#include "grpvss/geometry/exact_contact.hpp"
+#include "grpvss/exact/exact_contact.hpp"
 #include "grpvss/geometry/gjk.hpp"
 #include "grpvss/geometry/separation_witness.hpp"
 

@@ -12,7 +12,7 @@
 
 #include <Eigen/Core>
 
-#include "grpvss/geometry/convex_polytope.hpp"
+#include "grpvss/exact/convex_polytope.hpp"
 #include "grpvss/model/robot_model.hpp"
 
 namespace grpvss::geometry {

@@ -1,5 +1,5 @@
 // Measures tolerance expansions against the exact ball-sum containment test.
-#include "grpvss/geometry/expansion_audit.hpp"
+#include "grpvss/exact/expansion_audit.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 
 #include <Eigen/Geometry>
 
-#include "grpvss/geometry/minkowski_offset.hpp"
+#include "grpvss/exact/minkowski_offset.hpp"
 #include "grpvss/geometry/thesis_expansion.hpp"
 
 namespace grpvss::geometry {
