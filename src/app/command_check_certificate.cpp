@@ -1,6 +1,8 @@
-// `grpvss check-certificate`: re-verifies a certificate from the input files alone (a separate
-// code path from the verifier, every inequality decided exactly). Exit 0 accepted, 1 rejected,
-// 2 input error.
+// `grpvss check-certificate`: re-verifies a certificate from the input files alone (the checker
+// stage: a separate code path from the verifier, every inequality decided exactly). The command
+// prints the checker's decision; it does not decide anything itself. Options that would change
+// the motion the certificate was made for are refused when they contradict it. Exit 0 accepted,
+// 1 rejected, 2 input error.
 #include <memory>
 #include <optional>
 #include <string>
@@ -10,11 +12,12 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
-#include "grpvss/certify/certificate_checker.hpp"
-#include "grpvss/certify/certificate_file.hpp"
+#include "grpvss/checker/certificate_checker.hpp"
 #include "grpvss/common/input_error.hpp"
+#include "grpvss/evidence/certificate_file.hpp"
 #include "grpvss/io/environment_file.hpp"
 #include "grpvss/io/path_file.hpp"
+#include "grpvss/io/profile_table_file.hpp"
 #include "grpvss/io/robot_file.hpp"
 #include "grpvss/motion/kinematics_adapter.hpp"
 #include "grpvss/motion/profile_table.hpp"
@@ -25,35 +28,94 @@
 namespace grpvss::app {
 namespace {
 
-// A recorded digest, or "" when the field is missing or not a string (then it cannot match).
-std::string digest_field(const nlohmann::json& inputs, const char* key) {
-  const auto found = inputs.find(key);
-  return found != inputs.end() && found->is_string() ? found->get<std::string>() : std::string();
-}
-
 struct CheckArguments {
-  VerifyArguments inputs;
+  std::string robot_file;
+  std::string environment_file;
+  std::string path_file;
+  std::optional<std::string> timing;  ///< unset: the certificate's
+  std::optional<std::string> ik;      ///< unset: "auto"
+  std::string timing_text;            ///< what CLI11 parsed into `timing`
+  std::string ik_text;                ///< what CLI11 parsed into `ik`
+  std::string profile_table;
   std::string certificate_file;
   bool json = false;
   bool quiet = false;
 };
 
-int run_check(const CheckArguments& args) {
-  const VerifyArguments& in = args.inputs;
-  const RobotModel robot = io::read_robot_file(in.robot_file);
-  const Environment environment = io::read_environment_file(in.environment_file);
-  const PathProgram program = io::read_path_file(in.path_file, robot);
-  certify::CheckOptions options;
-  if (!in.profile_table.empty()) {
-    options.profile_table = std::make_shared<const motion::ProfileTable>(
-        motion::ProfileTable::read(in.profile_table));
+// --timing names the motion the caller expects; a certificate made for another is refused
+// rather than checked against a motion it does not describe.
+void refuse_other_timing(const CheckArguments& args, const certify::Certificate& header) {
+  if (!args.timing || *args.timing == motion::to_string(header.timing)) return;
+  throw InputError("--timing", 0,
+                   fmt::format("the timing the certificate was made with ({}); it certifies "
+                               "nothing about {} timing",
+                               motion::to_string(header.timing), *args.timing),
+                   *args.timing);
+}
+
+// The IK decides the CP configurations: it must be the one the certificate names.
+void refuse_other_ik(const CheckArguments& args, const certify::Certificate& header,
+                     const std::string& ik_name) {
+  const auto named = header.inputs.find("ik");
+  if (named == header.inputs.end() || named->second == ik_name) return;
+  throw InputError("--ik", 0,
+                   fmt::format("the IK the certificate was made with ('{}')", named->second),
+                   fmt::format("'{}' ({})", args.ik.value_or("auto"), ik_name));
+}
+
+void print_text(const certify::CheckReport& report) {
+  fmt::print("{}: claim {} ({} inequalities decided exactly)\n",
+             report.accepted ? "ACCEPTED" : "REJECTED", to_string(report.claim),
+             report.inequalities_checked);
+  for (const auto& failure : report.failures) fmt::print("  - {}\n", failure);
+  fmt::print("  motion model checked: {} PTP timing, CP speed {} per s, IK {}\n",
+             motion::to_string(report.timing), report.cp_speed,
+             report.ik.empty() ? "(not named)" : report.ik);
+  // What the accepted certificate proves beyond its claim (the base, link 0, never moves).
+  for (const auto& link : report.motion_clearances) {
+    if (link.link == 0) continue;
+    fmt::print("  link {}: stays farther than {} from every obstacle along the motion "
+               "(smallest at steps {}-{})\n",
+               link.link, report::format_lower_bound(link.lower_bound, 4), link.step - 1,
+               link.step);
   }
-  const auto ik = motion::select_ik(in.ik, robot, in.robot_file);
+}
+
+void print_json(const certify::CheckReport& report) {
+  nlohmann::json clearances = nlohmann::json::array();
+  for (const auto& link : report.motion_clearances) {
+    clearances.push_back({{"link", link.link}, {"lower_bound", link.lower_bound}, {"step", link.step}});
+  }
+  fmt::print("{}\n", nlohmann::json{{"accepted", report.accepted},
+                                    {"claim", to_string(report.claim)},
+                                    {"motion_model", {{"timing", motion::to_string(report.timing)},
+                                                      {"cp_speed", report.cp_speed},
+                                                      {"ik", report.ik}}},
+                                    {"inequalities_checked", report.inequalities_checked},
+                                    {"failures", report.failures},
+                                    {"motion_clearances", clearances}}
+                         .dump(2));
+}
+
+int run_check(const CheckArguments& args) {
+  const RobotModel robot = io::read_robot_file(args.robot_file);
+  const Environment environment = io::read_environment_file(args.environment_file);
+  const PathProgram program = io::read_path_file(args.path_file, robot);
+  certify::CheckOptions options;
+  if (!args.profile_table.empty()) {
+    options.profile_table = std::make_shared<const motion::ProfileTable>(
+        io::read_profile_table_file(args.profile_table));
+  }
+  const auto ik = motion::select_ik(parse_ik_choice(args.ik.value_or("auto")), robot, args.robot_file);
   const motion::KinematicsAccess kinematics = motion::make_kinematics_access(robot, ik);
+  const report::InputDigests digests =
+      report::digest_input_files(args.robot_file, args.environment_file, args.path_file);
+  options.input_digests = {{"robot", digests.robot.sha256},
+                           {"environment", digests.environment.sha256},
+                           {"path", digests.path.sha256}};
 
   // Read and checked one segment at a time: memory independent of the number of steps
   // (docs/reliability.md#resource-bounds).
-  std::vector<std::string> digest_failures;
   std::optional<certify::CertificateCheck> check;
   std::size_t announced = 0;
   std::size_t delivered = 0;
@@ -63,15 +125,8 @@ int run_check(const CheckArguments& args) {
   certify::read_certificate_file(
       args.certificate_file,
       [&](const certify::CertificateFileHeader& header) {
-        const nlohmann::json& document = header.document;
-        if (document.contains("inputs") && document["inputs"].is_object()) {
-          const report::InputDigests digests =
-              report::digest_input_files(in.robot_file, in.environment_file, in.path_file);
-          const auto& inputs = document["inputs"];
-          if (digest_field(inputs, "robot") != digests.robot.sha256) digest_failures.push_back("the robot file differs from the one certified");
-          if (digest_field(inputs, "environment") != digests.environment.sha256) digest_failures.push_back("the environment file differs from the one certified");
-          if (digest_field(inputs, "path") != digests.path.sha256) digest_failures.push_back("the path file differs from the one certified");
-        }
+        refuse_other_timing(args, header.certificate);
+        refuse_other_ik(args, header.certificate, ik->name());
         announced = header.segment_count;
         check.emplace(robot, environment, program, kinematics, header.certificate, announced,
                       options);
@@ -81,37 +136,9 @@ int run_check(const CheckArguments& args) {
         check->add_segment(segment);
       });
   if (!check || delivered != announced) throw changed();
-  certify::CheckReport report = check->finish();
-  for (const auto& failure : digest_failures) report.failures.insert(report.failures.begin(), failure);
-  report.accepted = report.failures.empty();
-  if (!report.accepted) report.motion_clearances.clear();  // a rejected certificate proves nothing
-  if (args.quiet) {
-    // Nothing printed: the exit code tells.
-  } else if (args.json) {
-    nlohmann::json clearances = nlohmann::json::array();
-    for (const auto& link : report.motion_clearances) {
-      clearances.push_back({{"link", link.link}, {"lower_bound", link.lower_bound}, {"step", link.step}});
-    }
-    fmt::print("{}\n", nlohmann::json{{"accepted", report.accepted},
-                                      {"claim", report.claim},
-                                      {"inequalities_checked", report.inequalities_checked},
-                                      {"failures", report.failures},
-                                      {"motion_clearances", clearances}}
-                           .dump(2));
-  } else {
-    fmt::print("{}: claim {} ({} inequalities decided exactly)\n",
-               report.accepted ? "ACCEPTED" : "REJECTED", report.claim,
-               report.inequalities_checked);
-    for (const auto& failure : report.failures) fmt::print("  - {}\n", failure);
-    // What the accepted certificate proves beyond its claim (the base, link 0, never moves).
-    for (const auto& link : report.motion_clearances) {
-      if (link.link == 0) continue;
-      fmt::print("  link {}: stays farther than {} from every obstacle along the motion "
-                 "(smallest at steps {}-{})\n",
-                 link.link, report::format_lower_bound(link.lower_bound, 4), link.step - 1,
-                 link.step);
-    }
-  }
+  const certify::CheckReport report = check->finish();
+  if (args.json && !args.quiet) print_json(report);
+  if (!args.json && !args.quiet) print_text(report);
   return report.accepted ? kExitOk : kExitFinding;
 }
 
@@ -121,11 +148,25 @@ void register_check_certificate_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<CheckArguments>();
   auto* command = app.add_subcommand(
       "check-certificate", "Re-verify a certificate exactly from the input files alone");
-  add_input_options(*command, args->inputs);
+  command->add_option("--robot", args->robot_file, "Robot file (thesis A.1.1.1)")->required();
+  command->add_option("--env", args->environment_file, "Environment file (thesis A.1.1.2)")->required();
+  command->add_option("--path", args->path_file, "Path file (thesis A.1.3)")->required();
+  CLI::Option* timing = command->add_option(
+      "--timing", args->timing_text,
+      "PTP joint timing expected (default: the certificate's; another is refused)");
+  timing->check(CLI::IsMember({"independent", "synchronized"}));
+  command->add_option("--profile-table", args->profile_table,
+                      "Motion-time table the certificate was made with (docs/trajectories.md)");
+  CLI::Option* ik = command->add_option(
+      "--ik", args->ik_text, "IK: auto, ibm7545, numeric or plugin:PATH.so (must be the certificate's)");
   command->add_option("CERT", args->certificate_file, "Certificate written by verify")->required();
   command->add_flag("--json", args->json, "Print the result as JSON");
   command->add_flag("--quiet", args->quiet, "Print nothing; the exit code tells the result");
-  command->callback([args, &exit_code] { exit_code = run_check(*args); });
+  command->callback([args, timing, ik, &exit_code] {
+    if (timing->count() > 0) args->timing = args->timing_text;
+    if (ik->count() > 0) args->ik = args->ik_text;
+    exit_code = run_check(*args);
+  });
 }
 
 }  // namespace grpvss::app

@@ -1,6 +1,7 @@
 // `grpvss check-certificate` reads the file one segment at a time (certificate_file.hpp): an
 // untouched certificate is accepted, a tampered radius or a removed step is rejected, a
-// truncated file is an input error.
+// truncated file is an input error. It prints the checker's decision and the motion model it
+// checked, and refuses options that contradict the certificate.
 #include <sys/wait.h>
 
 #include <cstdlib>
@@ -23,6 +24,13 @@ int run(const std::string& arguments) {
   const int status =
       std::system((std::string(GRPVSS_CLI) + " " + arguments + " > /dev/null 2>&1").c_str());
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+// Exit code and everything printed (stdout and stderr), through a file.
+std::pair<int, std::string> run_capturing(const std::string& arguments, const std::string& log) {
+  const int status =
+      std::system((std::string(GRPVSS_CLI) + " " + arguments + " > " + log + " 2>&1").c_str());
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, grpvss::test::read_text_file(log)};
 }
 
 class CheckCertificateCli : public ::testing::Test {
@@ -63,6 +71,62 @@ TEST_F(CheckCertificateCli, ATruncatedFileIsAnInputError) {
   const std::string text = grpvss::test::read_text_file(path("c.json"));
   std::ofstream(path("t.json")) << text.substr(0, text.size() / 2);
   EXPECT_EQ(run("check-certificate " + kInputs + " " + path("t.json")), 2);
+}
+
+TEST_F(CheckCertificateCli, PrintsTheMotionModelItChecked) {
+  const auto [code, text] = run_capturing("check-certificate " + kInputs + " " + path("c.json"),
+                                          path("log.txt"));
+  EXPECT_EQ(code, 0);
+  EXPECT_NE(text.find("ACCEPTED: claim COLLISION"), std::string::npos) << text;
+  EXPECT_NE(text.find("  motion model checked: independent PTP timing, CP speed 1 per s, IK IBM "
+                      "7545 closed form\n"),
+            std::string::npos)
+      << text;
+  const auto [json_code, json_text] = run_capturing(
+      "check-certificate " + kInputs + " " + path("c.json") + " --json", path("log.json"));
+  EXPECT_EQ(json_code, 0);
+  const auto report = nlohmann::json::parse(json_text);
+  EXPECT_EQ(report["motion_model"], (nlohmann::json{{"timing", "independent"},
+                                                     {"cp_speed", 1.0},
+                                                     {"ik", "IBM 7545 closed form"}}));
+}
+
+// An auditor who asks for synchronized timing must not get ACCEPTED for a certificate made
+// with independent timing (it would be checked against a motion it does not describe).
+TEST_F(CheckCertificateCli, RefusesATimingThatContradictsTheCertificate) {
+  const auto [code, text] = run_capturing(
+      "check-certificate " + kInputs + " --timing synchronized " + path("c.json"), path("log.txt"));
+  EXPECT_EQ(code, 2);
+  EXPECT_EQ(text,
+            "grpvss: error: --timing:0: expected the timing the certificate was made with "
+            "(independent); it certifies nothing about synchronized timing, found synchronized\n");
+  EXPECT_EQ(run("check-certificate " + kInputs + " --timing independent " + path("c.json")), 0);
+}
+
+TEST_F(CheckCertificateCli, RefusesAnIkThatIsNotTheCertificates) {
+  const auto [code, text] = run_capturing(
+      "check-certificate " + kInputs + " --ik numeric " + path("c.json"), path("log.txt"));
+  EXPECT_EQ(code, 2);
+  EXPECT_EQ(text,
+            "grpvss: error: --ik:0: expected the IK the certificate was made with ('IBM 7545 "
+            "closed form'), found 'numeric' (damped least squares)\n");
+}
+
+// The checker decides, the command only prints: a certificate claiming more segments than the
+// path has is rejected by the checker itself (the command used to re-decide "accepted" from an
+// empty failure list and accepted it).
+TEST_F(CheckCertificateCli, RejectsMoreSegmentsThanThePathHas) {
+  const std::size_t planned = document_["segments"].size();
+  document_["segments"].push_back(document_["segments"].back());
+  std::ofstream(path("more.json")) << document_.dump(1) << "\n";
+  const auto [more_code, more_text] =
+      run_capturing("check-certificate " + kInputs + " " + path("more.json"), path("log2.txt"));
+  EXPECT_EQ(more_code, 1);
+  EXPECT_NE(more_text.find("REJECTED"), std::string::npos) << more_text;
+  EXPECT_NE(more_text.find("the certificate has " + std::to_string(planned + 1) +
+                           " segments, the path's trajectory " + std::to_string(planned)),
+            std::string::npos)
+      << more_text;
 }
 
 }  // namespace

@@ -1,0 +1,109 @@
+#include "checked_cell.hpp"
+
+#include <algorithm>
+#include <string>
+
+#include "exact_axis_radius.hpp"
+#include "grpvss/exact/convex_polytope.hpp"
+#include "grpvss/exact/minkowski_offset.hpp"
+#include "grpvss/geometry/directed_rounding.hpp"
+#include "grpvss/kinematics/fk_error_bound.hpp"
+
+namespace grpvss::certify {
+namespace {
+
+// x > y + m for doubles x, y, m (m >= 0), decided exactly without big numbers: RD(y + m) and
+// RU(y + m) are the doubles around the exact sum (equal when it is a double), so x exceeds it
+// iff x > RU, or x == RU with RU != RD (proofs/fast-path.md#directed-rounding, TwoSum).
+bool exceeds_sum(double x, double y, double m) {
+  const double up = geometry::rounding::nearest_mode_add_up(y, m);
+  const double down = geometry::rounding::nearest_mode_add_down(y, m);
+  return x > up || (x == up && up != down);
+}
+
+double largest_abs_coordinate(const std::vector<Eigen::Vector3d>& points) {
+  double largest = 0.0;
+  for (const auto& p : points) largest = std::max(largest, p.cwiseAbs().maxCoeff());
+  return largest;
+}
+
+}  // namespace
+
+Box box_of(const std::vector<Eigen::Vector3d>& points) {
+  Box box{points.front(), points.front()};
+  for (const auto& p : points) {
+    box.lo = box.lo.cwiseMin(p);
+    box.hi = box.hi.cwiseMax(p);
+  }
+  return box;
+}
+
+bool boxes_farther_than(const Box& a, const Box& b, double margin) {
+  for (int axis = 0; axis < 3; ++axis) {
+    if (exceeds_sum(b.lo[axis], a.hi[axis], margin)) return true;
+    if (exceeds_sum(a.lo[axis], b.hi[axis], margin)) return true;
+  }
+  return false;
+}
+
+CheckedCell::CheckedCell(const RobotModel& robot)
+    : robot_(&robot), chain_(kinematics::make_chain(robot)) {}
+
+std::optional<CheckedCell> CheckedCell::build(const RobotModel& robot,
+                                              const Environment& environment,
+                                              const Certificate& header, CheckLedger& ledger) {
+  CheckedCell cell(robot);
+  double largest_coordinate = 0.0;
+  if (!cell.build_hulls(header, ledger, largest_coordinate)) return std::nullopt;
+  // proof: proofs/fk-rounding.md#fk-rounding (the verifier doubles the bound: strictness)
+  const double bound = kinematics::forward_kinematics_error_bound(cell.chain_, largest_coordinate);
+  ledger.decided();
+  if (!(exact(header.placement_error) >= 2 * exact(bound))) {
+    ledger.fail("placement_error is smaller than twice the forward-kinematics rounding bound");
+    return std::nullopt;
+  }
+  cell.build_obstacles(environment);
+  return cell;
+}
+
+// Every hull's offset is rebuilt from the header's expansion radius and shape and verified to
+// contain the ball sum. proof: proofs/offset-containment.md#rounded-placement
+bool CheckedCell::build_hulls(const Certificate& header, CheckLedger& ledger,
+                              double& largest_coordinate) {
+  const RobotModel& robot = *robot_;
+  for (int link = 0; link < static_cast<int>(robot.links.size()); ++link) {
+    for (int hull = 0; hull < static_cast<int>(robot.links[link].hulls.size()); ++hull) {
+      const HullPoints& points = robot.links[link].hulls[hull];
+      const geometry::ConvexPolytope raw = geometry::ConvexPolytope::from_points(points.points);
+      const geometry::ConvexPolytope expanded =
+          geometry::minkowski_offset(raw, header.expansion_radius, header.offset_shape);
+      ledger.decided();
+      if (!geometry::contains_ball_sum_exactly(expanded, raw, header.expansion_radius)) {
+        ledger.fail("link " + std::to_string(link) + " hull " + std::to_string(hull) +
+                    ": the offset does not contain the ball sum");
+        return false;
+      }
+      CheckedHull checked;
+      checked.link = link;
+      checked.hull = hull;
+      checked.raw_L = raw.vertices();
+      checked.expanded_L = expanded.vertices();
+      for (int joint = 1; joint <= link; ++joint) {
+        checked.axis_radius.push_back(exact_axis_radius(robot, link, points, joint));
+      }
+      largest_coordinate = std::max({largest_coordinate, largest_abs_coordinate(checked.raw_L),
+                                     largest_abs_coordinate(checked.expanded_L)});
+      hulls_.push_back(std::move(checked));
+    }
+  }
+  return true;
+}
+
+void CheckedCell::build_obstacles(const Environment& environment) {
+  for (const HullPoints& obstacle : environment.obstacles) {
+    obstacles_.push_back(geometry::ConvexPolytope::from_points(obstacle.points).vertices());
+    obstacle_boxes_.push_back(box_of(obstacles_.back()));
+  }
+}
+
+}  // namespace grpvss::certify

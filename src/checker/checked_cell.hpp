@@ -1,0 +1,68 @@
+#pragma once
+// The checker's own model of the cell, rebuilt from the inputs and the certificate's header
+// alone: every hull's offset (verified to contain the ball sum), the exact axis radii, the
+// obstacles' exact hulls and boxes, and the check that the recorded placement error covers the
+// forward-kinematics rounding bound.
+
+#include <optional>
+#include <vector>
+
+#include <Eigen/Core>
+#include <gmpxx.h>
+
+#include "check_ledger.hpp"
+#include "grpvss/evidence/certificate.hpp"
+#include "grpvss/kinematics/kinematic_chain.hpp"
+#include "grpvss/model/environment.hpp"
+#include "grpvss/model/robot_model.hpp"
+
+namespace grpvss::certify {
+
+using Rational = mpq_class;
+
+inline Rational exact(double value) { return Rational(value); }
+
+/// One link hull as the checker rebuilds it.
+struct CheckedHull {
+  int link = 0;
+  int hull = 0;
+  std::vector<Eigen::Vector3d> raw_L;
+  std::vector<Eigen::Vector3d> expanded_L;  ///< the offset, verified to contain the ball sum
+  std::vector<Rational> axis_radius;        ///< R_{jh} for joints 1..link, exact
+};
+
+/// Axis-aligned box of a point set (min/max of doubles: exact).
+struct Box {
+  Eigen::Vector3d lo, hi;
+};
+Box box_of(const std::vector<Eigen::Vector3d>& points);
+/// Exact box separation: some axis has a gap > margin between the two boxes.
+bool boxes_farther_than(const Box& a, const Box& b, double margin);
+
+class CheckedCell {
+ public:
+  /// The cell of `robot` and `environment` for the certificate's tolerance, offset shape,
+  /// expansion radius and placement error; nullopt (and the reason in `ledger`) when the
+  /// header's numbers cannot be trusted.
+  static std::optional<CheckedCell> build(const RobotModel& robot, const Environment& environment,
+                                          const Certificate& header, CheckLedger& ledger);
+
+  const RobotModel& robot() const { return *robot_; }
+  const kinematics::KinematicChain& chain() const { return chain_; }
+  const std::vector<CheckedHull>& hulls() const { return hulls_; }
+  const std::vector<std::vector<Eigen::Vector3d>>& obstacles() const { return obstacles_; }
+  const std::vector<Box>& obstacle_boxes() const { return obstacle_boxes_; }
+
+ private:
+  explicit CheckedCell(const RobotModel& robot);
+  bool build_hulls(const Certificate& header, CheckLedger& ledger, double& largest_coordinate);
+  void build_obstacles(const Environment& environment);
+
+  const RobotModel* robot_;
+  kinematics::KinematicChain chain_;
+  std::vector<CheckedHull> hulls_;
+  std::vector<std::vector<Eigen::Vector3d>> obstacles_;
+  std::vector<Box> obstacle_boxes_;
+};
+
+}  // namespace grpvss::certify

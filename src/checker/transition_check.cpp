@@ -1,0 +1,126 @@
+#include "transition_check.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace grpvss::certify {
+
+TransitionCheck::TransitionCheck(const CheckedCell& cell, const Certificate& header,
+                                 CheckLedger& ledger, ClaimFacts& facts,
+                                 MotionClearances& clearances)
+    : cell_(cell), header_(header), ledger_(ledger), facts_(facts), clearances_(clearances) {}
+
+void TransitionCheck::check(const StepCertificate& from, const StepCertificate& to,
+                            const std::vector<Rational>& radius_from,
+                            const std::vector<Rational>& radius_to,
+                            const std::vector<std::vector<Eigen::Vector3d>>& placed_from,
+                            const std::vector<std::vector<Eigen::Vector3d>>& placed_to,
+                            bool joint_linear, const std::string& where) {
+  const TransitionRecord& claimed = from.to_next;
+  const std::vector<CheckedHull>& hulls = cell_.hulls();
+  // A step with the wrong joint count was already rejected by the step check; reading its q
+  // here would run past the vector (found reviewing for the checker fuzz target).
+  const int joints = cell_.robot().joint_count();
+  if (from.q.size() != joints || to.q.size() != joints) {
+    facts_.all_transitions_certified = false;
+    return;
+  }
+  if (claimed.hull_motion_bounds.size() != hulls.size() ||
+      claimed.hull_allowances.size() != hulls.size() || claimed.governing.size() != hulls.size()) {
+    ledger_.fail(where + ": the transition record is incomplete");
+    facts_.all_transitions_certified = false;
+    return;
+  }
+  bool certified = true;
+  for (std::size_t i = 0; i < hulls.size(); ++i) {
+    const CheckedHull& hull = hulls[i];
+    const std::string hull_where = where + " hull " + std::to_string(i);
+    Rational bound = joint_sum_bound(hull, from, to);
+    const Rational allowance = radius_from[i] + radius_to[i];
+    ledger_.decided(3);
+    const Rational recorded = exact(claimed.hull_motion_bounds[i]);
+    if (!(recorded >= bound)) {
+      // proof: proofs/motion-bound.md#lemma-joint-linear-chord
+      ledger_.decided();
+      if (joint_linear && placed_from[i].size() == hull.raw_L.size() &&
+          placed_to[i].size() == hull.raw_L.size() &&
+          chord_bound_holds(hull, from, to, placed_from[i], placed_to[i],
+                            claimed.hull_motion_bounds[i])) {
+        bound = recorded;  // proven >= every point's path length
+      } else {
+        ledger_.fail(hull_where + (joint_linear ? ": the recorded motion bound is below both the "
+                                                  "exact bound and the chord bound"
+                                                : ": the recorded motion bound is below the exact bound"));
+        certified = false;
+      }
+    }
+    if (!(exact(claimed.hull_allowances[i]) <= allowance)) {
+      ledger_.fail(hull_where + ": the recorded allowance exceeds r_k + r_k+1");
+      certified = false;
+    }
+    if (!(bound <= allowance)) {
+      if (claimed.certified) ledger_.fail(hull_where + ": motion bound exceeds the allowance");
+      certified = false;
+    }
+    keep_motion_clearance(hull, radius_from[i], radius_to[i], bound, to.step);
+  }
+  if (!certified) facts_.all_transitions_certified = false;
+}
+
+// proof: proofs/motion-bound.md#lemma-motion-bound
+Rational TransitionCheck::joint_sum_bound(const CheckedHull& hull, const StepCertificate& from,
+                                          const StepCertificate& to) const {
+  Rational bound = 0;
+  for (int joint = 1; joint <= hull.link; ++joint) {
+    const Rational increment = abs(exact(to.q[joint - 1]) - exact(from.q[joint - 1]));
+    bound += cell_.robot().joints[joint - 1].type == JointType::kRevolute
+                 ? increment * hull.axis_radius[joint - 1]
+                 : increment;
+  }
+  return bound;
+}
+
+bool TransitionCheck::chord_bound_holds(const CheckedHull& hull, const StepCertificate& from,
+                                        const StepCertificate& to,
+                                        const std::vector<Eigen::Vector3d>& placed_from,
+                                        const std::vector<Eigen::Vector3d>& placed_to,
+                                        double claimed) const {
+  if (!std::isfinite(claimed)) return false;
+  // P_h exactly: sum_m w_m |dq_m| ([m rev] |dq_m| + 2 sum_{j<m rev} |dq_j|).
+  Rational curvature = 0;
+  Rational revolute_before = 0;
+  for (int m = 1; m <= hull.link; ++m) {
+    const Rational increment = abs(exact(to.q[m - 1]) - exact(from.q[m - 1]));
+    const bool revolute = cell_.robot().joints[m - 1].type == JointType::kRevolute;
+    const Rational weight = revolute ? hull.axis_radius[m - 1] : Rational(1);
+    curvature += weight * increment * (2 * revolute_before + (revolute ? increment : Rational(0)));
+    if (revolute) revolute_before += increment;
+  }
+  // Each placed point is within placement_error of its exact place (proofs/fk-rounding.md).
+  const Rational chord_allowed =
+      exact(claimed) - 2 * exact(header_.placement_error) - curvature / 3;
+  if (chord_allowed < 0) return false;
+  const Rational chord_allowed_squared = chord_allowed * chord_allowed;
+  for (std::size_t v = 0; v < placed_from.size(); ++v) {
+    Rational square = 0;
+    for (int k = 0; k < 3; ++k) {
+      const Rational d = exact(placed_to[v][k]) - exact(placed_from[v][k]);
+      square += d * d;
+    }
+    if (square > chord_allowed_squared) return false;
+  }
+  return true;
+}
+
+// proof: proofs/two-ball-cover.md#corollary-motion-clearance
+void TransitionCheck::keep_motion_clearance(const CheckedHull& hull, const Rational& radius_from,
+                                            const Rational& radius_to, const Rational& bound,
+                                            int to_step) {
+  const Rational balanced = (radius_from + radius_to - bound) / 2;
+  const Rational one_sided = std::max(radius_from, radius_to) - bound;
+  const Rational kept = std::max(Rational(0), std::max(balanced, one_sided));
+  auto& smallest = clearances_[static_cast<std::size_t>(hull.link)];
+  if (!smallest || kept < smallest->first) smallest = std::make_pair(kept, to_step);
+}
+
+}  // namespace grpvss::certify

@@ -1,0 +1,55 @@
+#pragma once
+// One certificate transition: every hull's recorded motion bound must be at least the exact
+// joint-sum bound (or, on a CP step, the chord bound), its allowance at most r_k + r_{k+1}, and
+// a certified transition's bound within its allowance. Also the motion clearance each link
+// provably keeps. proof: proofs/motion-bound.md#lemma-motion-bound,
+// proofs/two-ball-cover.md#corollary-step, proofs/two-ball-cover.md#corollary-motion-clearance
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "check_ledger.hpp"
+#include "checked_cell.hpp"
+#include "claim_facts.hpp"
+#include "grpvss/evidence/certificate.hpp"
+
+namespace grpvss::certify {
+
+/// Per link: the smallest exact clearance g over the transitions so far, and the step ending it.
+using MotionClearances = std::vector<std::optional<std::pair<Rational, int>>>;
+
+class TransitionCheck {
+ public:
+  TransitionCheck(const CheckedCell& cell, const Certificate& header, CheckLedger& ledger,
+                  ClaimFacts& facts, MotionClearances& clearances);
+
+  /// `joint_linear`: a CP step, where the chord bound may stand in for the joint-sum bound.
+  void check(const StepCertificate& from, const StepCertificate& to,
+             const std::vector<Rational>& radius_from, const std::vector<Rational>& radius_to,
+             const std::vector<std::vector<Eigen::Vector3d>>& placed_from,
+             const std::vector<std::vector<Eigen::Vector3d>>& placed_to, bool joint_linear,
+             const std::string& where);
+
+ private:
+  /// The exact joint-sum bound M_h of the hull over the transition.
+  Rational joint_sum_bound(const CheckedHull& hull, const StepCertificate& from,
+                           const StepCertificate& to) const;
+  /// claimed >= max_v |placed_to[v] - placed_from[v]| + 2 placement_error + P_h / 3, exactly
+  /// (proofs/motion-bound.md#lemma-joint-linear-chord).
+  bool chord_bound_holds(const CheckedHull& hull, const StepCertificate& from,
+                         const StepCertificate& to, const std::vector<Eigen::Vector3d>& placed_from,
+                         const std::vector<Eigen::Vector3d>& placed_to, double claimed) const;
+  /// Records the clearance g the hull keeps throughout the transition.
+  void keep_motion_clearance(const CheckedHull& hull, const Rational& radius_from,
+                             const Rational& radius_to, const Rational& bound, int to_step);
+
+  const CheckedCell& cell_;
+  const Certificate& header_;
+  CheckLedger& ledger_;
+  ClaimFacts& facts_;
+  MotionClearances& clearances_;
+};
+
+}  // namespace grpvss::certify
