@@ -8,8 +8,8 @@
 #include <nlohmann/json.hpp>
 
 #include "fuzz_input.hpp"
-#include "grpvss/certify/certificate.hpp"
-#include "grpvss/certify/certificate_checker.hpp"
+#include "grpvss/evidence/certificate.hpp"
+#include "grpvss/checker/certificate_checker.hpp"
 #include "grpvss/common/input_error.hpp"
 #include "grpvss/io/environment_file.hpp"
 #include "grpvss/io/path_file.hpp"
@@ -32,7 +32,7 @@ const Cell& cell() {
     c.robot = grpvss::io::read_robot_file(root + "/data/ibm7545/robot.txt");
     c.environment = grpvss::io::read_environment_file(root + "/data/ibm7545/environment.txt");
     c.program = grpvss::io::read_path_file(root + "/fuzz/inputs/tiny-path.txt", c.robot);
-    const auto ik = grpvss::motion::select_ik("auto", c.robot, "robot.txt");
+    const auto ik = grpvss::motion::select_ik({}, c.robot, "robot.txt");
     c.kinematics = grpvss::motion::make_kinematics_access(c.robot, ik);
     return c;
   }();

@@ -5,7 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "fuzz_input.hpp"
-#include "grpvss/certify/certificate.hpp"
+#include "grpvss/evidence/certificate.hpp"
 #include "grpvss/common/input_error.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -10,7 +10,7 @@
 
 #include "commands.hpp"
 #include "grpvss/common/input_error.hpp"
-#include "grpvss/geometry/expansion_audit.hpp"
+#include "grpvss/exact/expansion_audit.hpp"
 #include "grpvss/io/robot_file.hpp"
 
 namespace grpvss::app {

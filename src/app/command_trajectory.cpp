@@ -12,8 +12,10 @@
 #include "commands.hpp"
 #include "grpvss/common/input_error.hpp"
 #include "grpvss/io/path_file.hpp"
+#include "grpvss/io/profile_table_file.hpp"
 #include "grpvss/io/robot_file.hpp"
 #include "grpvss/motion/kinematics_adapter.hpp"
+#include "grpvss/motion/profile_table.hpp"
 #include "grpvss/motion/trajectory.hpp"
 #include "grpvss/report/trajectory_report.hpp"
 #include "verify_arguments.hpp"
@@ -53,26 +55,22 @@ std::vector<double> requested_times(const TrajectoryArguments& args, double tota
 int run_trajectory(const TrajectoryArguments& args) {
   const RobotModel robot = io::read_robot_file(args.robot_file);
   const PathProgram program = io::read_path_file(args.path_file, robot);
-  motion::TrajectoryOptions options;
-  options.timing = args.timing == "synchronized" ? motion::PtpTiming::kSynchronized
-                                                 : motion::PtpTiming::kIndependent;
+  motion::MotionModel options;
+  options.timing =
+      motion::ptp_timing_from_string(args.timing).value_or(motion::PtpTiming::kIndependent);
   if (!args.profile_table.empty())
     options.table = std::make_shared<const motion::ProfileTable>(
-        motion::ProfileTable::read(args.profile_table));
+        io::read_profile_table_file(args.profile_table));
   options.cp_speed = args.cp_speed;
   options.cp_spacing = args.cp_spacing;
-  const auto ik = motion::select_ik(args.ik, robot, args.robot_file);
+  const auto ik = motion::select_ik(parse_ik_choice(args.ik), robot, args.robot_file);
   const motion::Trajectory trajectory =
       motion::Trajectory::plan(robot, program, motion::make_kinematics_access(robot, ik), options);
 
   report::TrajectoryReportSettings settings;
   settings.robot_file = args.robot_file;
   settings.path_file = args.path_file;
-  settings.timing = args.timing;
-  settings.profile_table = args.profile_table;
   settings.ik_name = ik->name();
-  settings.cp_speed = args.cp_speed;
-  settings.cp_spacing = args.cp_spacing;
   settings.times = requested_times(args, trajectory.duration());
   if (args.json)
     fmt::print("{}\n", report::trajectory_json(robot, trajectory, settings).dump(2));

@@ -13,6 +13,7 @@
 
 #include "commands.hpp"
 #include "grpvss/certify/verifier.hpp"
+#include "grpvss/common/input_error.hpp"
 #include "grpvss/io/environment_file.hpp"
 #include "grpvss/io/path_file.hpp"
 #include "grpvss/io/robot_file.hpp"
@@ -52,10 +53,11 @@ int run_verify(const VerifyArguments& args) {
   const PathProgram program = io::read_path_file(args.path_file, robot);
   const report::InputDigests digests =
       report::digest_input_files(args.robot_file, args.environment_file, args.path_file);
-  certify::VerifyOptions options = make_verify_options(args, robot);
-  options.path_label = file_label(args.path_file);
-  const auto ik = motion::select_ik(args.ik, robot, args.robot_file);
-  if (!args.certificate.empty() && options.mode != certify::ResolutionMode::kCertified) {
+  certify::SetupRequest request = make_setup_request(args);
+  request.path_label = file_label(args.path_file);
+  const certify::VerificationSetup setup = certify::resolve_setup(request);
+  const auto ik = motion::select_ik(parse_ik_choice(args.ik), robot, args.robot_file);
+  if (!args.certificate.empty() && setup.run.mode != certify::ResolutionMode::kCertified) {
     throw InputError("--certificate", 0, "--mode certified (thesis mode proves nothing)");
   }
   // Refused before a long run rather than after it; the publication itself still never
@@ -70,12 +72,14 @@ int run_verify(const VerifyArguments& args) {
 
   // The outputs are written while the verification runs, in memory independent of the number
   // of steps (docs/reliability.md#resource-bounds); each is published only at its finish().
+  certify::RunHooks hooks;
+  hooks.keep_steps = false;
   std::optional<report::ThesisOutputStream> thesis_output;
   std::optional<report::JsonReportStream> json_report;
   std::optional<report::CertificateStream> certificate;
   if (!args.out.empty()) {
     thesis_output.emplace(args.out, args.force, report::joint_types_of(robot));
-    options.observers.push_back(&*thesis_output);
+    hooks.observers.push_back(&*thesis_output);
   }
   if (!args.json.empty() || !args.html.empty()) {
     if (!args.html.empty()) require_viewer_bundle(args.html);
@@ -85,27 +89,25 @@ int run_verify(const VerifyArguments& args) {
     outputs.scratch_path = args.json.empty() ? args.html : args.json;
     outputs.force = args.force;
     json_report.emplace(robot, std::move(outputs));
-    options.observers.push_back(&*json_report);
+    hooks.observers.push_back(&*json_report);
   }
   if (!args.certificate.empty()) {
     certificate.emplace(args.certificate, args.force);
-    options.observers.push_back(&*certificate);
+    hooks.observers.push_back(&*certificate);
   }
-  options.keep_steps = false;
 
+  const certify::RobotCell cell(robot, environment, setup.cell);
   certify::VerificationRun run;
   {
     ProgressBar bar("verifying", !args.quiet && stderr_is_terminal());
-    options.progress = bar.callback();
-    run = certify::verify(robot, environment, program, motion::make_kinematics_access(robot, ik),
-                          options);
+    hooks.progress = bar.callback();
+    run = certify::verify(cell, program, motion::make_kinematics_access(robot, ik), setup.run,
+                          hooks);
   }
 
-  const geometry::OffsetShape offset_shape =
-      options.offset_shape.value_or(report::default_offset_shape(run.result.mode));
   const std::string generated_at = report::utc_timestamp_now();
   if (thesis_output) thesis_output->finish(run.result);
-  if (json_report) json_report->finish(run.result, environment, offset_shape, digests, generated_at);
+  if (json_report) json_report->finish(run.result, cell, digests, generated_at);
   if (!args.html.empty()) {
     write_viewer_html(args.html, args.force, robot.name, [&](report::AtomicOutputFile& output) {
       json_report->write_script_safe_report(output);

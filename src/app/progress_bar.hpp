@@ -11,7 +11,7 @@ class ProgressBar {
   /// `enabled` false: every call does nothing (--quiet, or stderr is not a terminal).
   ProgressBar(std::string label, bool enabled);
   ~ProgressBar();  ///< erases the bar line
-  /// The callback for certify::VerifyOptions::progress (empty when disabled).
+  /// The callback for certify::RunHooks::progress (empty when disabled).
   std::function<void(double)> callback();
   void update(double fraction);
 

@@ -4,6 +4,8 @@
 #include <memory>
 #include <string>
 
+#include "grpvss/io/profile_table_file.hpp"
+#include "grpvss/common/input_error.hpp"
 #include "grpvss/motion/profile_table.hpp"
 
 namespace grpvss::app {
@@ -55,23 +57,31 @@ void add_verify_options(CLI::App& command, VerifyArguments& args) {
       ->capture_default_str();
 }
 
-certify::VerifyOptions make_verify_options(const VerifyArguments& args, const RobotModel&) {
-  certify::VerifyOptions options;
-  options.tolerance = args.tolerance;
-  options.mode = args.mode == "thesis" ? certify::ResolutionMode::kThesis
+certify::SetupRequest make_setup_request(const VerifyArguments& args) {
+  certify::SetupRequest request;
+  request.tolerance = args.tolerance;
+  request.mode = args.mode == "thesis" ? certify::ResolutionMode::kThesis
                                        : certify::ResolutionMode::kCertified;
-  if (args.offset == "cube") options.offset_shape = geometry::OffsetShape::kCube;
-  if (args.offset == "rhombicuboctahedron") {
-    options.offset_shape = geometry::OffsetShape::kRhombicuboctahedron;
-  }
-  options.trajectory.timing = args.timing == "synchronized" ? motion::PtpTiming::kSynchronized
-                                                            : motion::PtpTiming::kIndependent;
-  options.trajectory.cp_speed = args.cp_speed;
+  request.offset_shape = geometry::offset_shape_from_string(args.offset);  // "auto": unset
+  request.motion.timing =
+      motion::ptp_timing_from_string(args.timing).value_or(motion::PtpTiming::kIndependent);
+  request.motion.cp_speed = args.cp_speed;
   if (!args.profile_table.empty()) {
-    options.trajectory.table = std::make_shared<const motion::ProfileTable>(
-        motion::ProfileTable::read(args.profile_table));
+    request.motion.table = std::make_shared<const motion::ProfileTable>(
+        io::read_profile_table_file(args.profile_table));
   }
-  return options;
+  return request;
+}
+
+kinematics::IkChoice parse_ik_choice(const std::string& text) {
+  const std::string plugin_prefix = "plugin:";
+  if (text == "auto") return {kinematics::IkMethod::kAuto, {}};
+  if (text == "numeric") return {kinematics::IkMethod::kNumeric, {}};
+  if (text == "ibm7545") return {kinematics::IkMethod::kIbm7545, {}};
+  if (text.rfind(plugin_prefix, 0) == 0 && text.size() > plugin_prefix.size()) {
+    return {kinematics::IkMethod::kPlugin, text.substr(plugin_prefix.size())};
+  }
+  throw InputError("--ik", 0, "auto, ibm7545, numeric or plugin:PATH.so", "'" + text + "'");
 }
 
 }  // namespace grpvss::app

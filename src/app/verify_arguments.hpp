@@ -5,8 +5,8 @@
 
 #include <CLI/CLI.hpp>
 
-#include "grpvss/certify/verifier.hpp"
-#include "grpvss/model/robot_model.hpp"
+#include "grpvss/evidence/setup.hpp"
+#include "grpvss/kinematics/inverse_kinematics.hpp"
 
 namespace grpvss::app {
 
@@ -36,6 +36,10 @@ CLI::Validator positive_number();
 /// --robot --env --path --tolerance --mode --offset --timing --profile-table --ik --cp-speed
 void add_verify_options(CLI::App& command, VerifyArguments& args);
 void add_input_options(CLI::App& command, VerifyArguments& args);
-certify::VerifyOptions make_verify_options(const VerifyArguments& args, const RobotModel& robot);
+
+/// The CLI's words turned into the typed request, once (reads the profile table file).
+certify::SetupRequest make_setup_request(const VerifyArguments& args);
+/// `--ik`: auto, ibm7545, numeric or plugin:PATH.so. \throws InputError ("--ik", line 0).
+kinematics::IkChoice parse_ik_choice(const std::string& text);
 
 }  // namespace grpvss::app

@@ -1,4 +1,4 @@
-#include "grpvss/certify/cell_probe.hpp"
+#include "cell_probe.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,9 +6,9 @@
 #include <limits>
 #include <tuple>
 
-#include "grpvss/geometry/certified_query.hpp"
+#include "grpvss/exact/certified_query.hpp"
 #include "grpvss/geometry/directed_rounding.hpp"
-#include "grpvss/geometry/exact_contact.hpp"
+#include "grpvss/exact/exact_contact.hpp"
 
 namespace grpvss::certify {
 namespace {
@@ -54,12 +54,6 @@ double placed_sphere_radius(double radius_L, double placement_error) {
 }
 
 }  // namespace
-
-void place_points(const Eigen::Isometry3d& X_WL, const std::vector<Eigen::Vector3d>& points_L,
-                  std::vector<Eigen::Vector3d>& points_W) {
-  points_W.resize(points_L.size());
-  for (std::size_t i = 0; i < points_L.size(); ++i) points_W[i] = X_WL * points_L[i];
-}
 
 double ProbeResult::link_radius(const RobotCell& cell, int link) const {
   double smallest = kInfinity;
@@ -126,7 +120,7 @@ void CellProbe::add_interference_points(ProbeResult& probed) {
   for (int i = 0; i < static_cast<int>(cell.hulls().size()); ++i) {
     if (!probed.hulls[static_cast<std::size_t>(i)].expanded_interferes) continue;
     const LinkHull& hull = cell.hulls()[static_cast<std::size_t>(i)];
-    place_points(workspace_.X_WL[hull.link], hull.expanded_L, placed_expanded_);
+    kinematics::place_points(workspace_.X_WL[hull.link], hull.expanded_L, placed_expanded_);
     expanded_polytope_.reset();
     for (const PairEvidence& evidence : probed.evidence) {
       if (evidence.hull_index == i && evidence.expanded && !evidence.separated) {
@@ -156,7 +150,7 @@ void CellProbe::append_points(int hull_index, int obstacle, ProbeResult& out) {
   // rounding; the points are report content, no claim rests on them
   // (docs/verification.md#interference-points).
   const Eigen::Isometry3d& X_WL = workspace_.X_WL[hull.link];
-  place_points(X_WL.inverse(), cell.obstacles_W()[static_cast<std::size_t>(obstacle)],
+  kinematics::place_points(X_WL.inverse(), cell.obstacles_W()[static_cast<std::size_t>(obstacle)],
                placed_obstacle_L_);
   const geometry::ConvexPolytope obstacle_L = geometry::ConvexPolytope::from_points_like(
       placed_obstacle_L_, cell.obstacle_polytopes_W()[static_cast<std::size_t>(obstacle)]);
@@ -182,85 +176,20 @@ void CellProbe::append_points(int hull_index, int obstacle, ProbeResult& out) {
 
 void CellProbe::probe_hull(int hull_index, bool with_points, ProbeResult& out) {
   const RobotCell& cell = *cell_;
-  const LinkHull& hull = cell.hulls()[hull_index];
-  const Eigen::Isometry3d& X_WL = workspace_.X_WL[hull.link];
-  const double eps = cell.placement_error();
-  const double delta = cell.tolerance();
-  const int obstacle_count = static_cast<int>(cell.obstacles_W().size());
-  if (reuse_unmoved_hull(hull_index, X_WL, out)) return;
+  const LinkHull& link_hull = cell.hulls()[hull_index];
+  HullProbe hull{hull_index, link_hull, workspace_.X_WL[link_hull.link]};
+  if (reuse_unmoved_hull(hull_index, hull.X_WL, out)) return;
   const std::size_t evidence_before = out.evidence.size();
   HullState& state = out.hulls[hull_index];
-
-  const Eigen::Vector3d center_W = X_WL * hull.expanded_sphere_L.center;
-  const double radius_W = placed_sphere_radius(hull.expanded_sphere_L.radius_upper, eps);
-
-  // Candidate obstacles: all of them in small cells, the broadphase's otherwise.
-  candidates_.clear();
-  state.broadphase_margin = kInfinity;
-  if (obstacle_count <= kBroadphaseThreshold) {
-    for (int o = 0; o < obstacle_count; ++o) candidates_.push_back(o);
-  } else {
-    place_points(X_WL, hull.expanded_L, placed_expanded_);
-    state.broadphase_margin = 0.25 * cell.radii().radius(cell.radii().link_count() - 1, 0, 1);
-    cell.obstacle_index().candidates(geometry::Aabb::of_points(placed_expanded_),
-                                     state.broadphase_margin, candidates_);
-  }
-  // proof: proofs/two-ball-cover.md#corollary-step (obstacles beyond the margin are farther
-  // than Delta + margin from every true point of the hull)
-  state.radius = add_down(delta, state.broadphase_margin);
-  state.radius_beside_collisions = state.radius;
-
-  // Nearest first: a sphere slab is enough for every obstacle whose sphere gap is not below
-  // the smallest proven clearance so far; only the others need the pair query.
-  ordered_candidates_.clear();
-  for (int o : candidates_) {
-    const geometry::CertifiedSphere& sphere = cell.obstacle_spheres_W()[o];
-    const double gap = (sphere.center - center_W).norm() - radius_W - sphere.radius_upper;
-    ordered_candidates_.emplace_back(gap, o);
-  }
-  std::sort(ordered_candidates_.begin(), ordered_candidates_.end());
-
-  bool expanded_placed = obstacle_count > kBroadphaseThreshold;
-  expanded_polytope_.reset();
-  bool raw_placed = false;
-  double smallest_clearance = kInfinity;
+  collect_candidates(hull, state);
+  order_candidates(hull);
   for (const auto& [gap_estimate, o] : ordered_candidates_) {
     PairEvidence evidence;
     evidence.hull_index = hull_index;
     evidence.obstacle = o;
-    const geometry::CertifiedSphere& sphere = cell.obstacle_spheres_W()[o];
-    if (gap_estimate > 0.0 && gap_estimate >= smallest_clearance &&
-        sphere_witness(center_W, radius_W, sphere.center, sphere.radius_upper, evidence.witness,
-                       evidence.lower_bound)) {
-      evidence.separated = true;
-    } else {
-      if (!expanded_placed) {
-        place_points(X_WL, hull.expanded_L, placed_expanded_);
-        expanded_placed = true;
-      }
-      const std::size_t warm_slot = static_cast<std::size_t>(hull_index) * obstacle_count + o;
-      const geometry::CertifiedPairResult result = geometry::certified_pair_query(
-          placed_expanded_, cell.obstacles_W()[o],
-          has_warm_normal_[warm_slot] ? &warm_normals_[warm_slot] : nullptr,
-          &cell.expanded_skeleton(static_cast<std::size_t>(hull_index)), &climb_hints_[warm_slot]);
-      if (result.contact == geometry::Contact::kSeparated && result.witness) {
-        evidence.separated = true;
-        evidence.witness = *result.witness;
-        evidence.lower_bound = result.clearance_lower_bound;
-        warm_normals_[warm_slot] = result.witness->normal;
-        has_warm_normal_[warm_slot] = 1;
-      }
-    }
+    decide_expanded(hull, o, gap_estimate, evidence);
     if (evidence.separated) {
-      smallest_clearance = std::min(smallest_clearance, evidence.lower_bound);
-      // proof: proofs/offset-containment.md#clearance-through-offset
-      const double radius = add_down(delta, evidence.lower_bound);
-      if (radius < state.radius) {
-        state.radius = radius;
-        state.nearest_obstacle = o;
-      }
-      state.radius_beside_collisions = std::min(state.radius_beside_collisions, radius);
-      out.evidence.push_back(evidence);
+      record_clearance(hull, state, evidence, out);
       continue;
     }
     // The expanded hull interferes: record it, then decide the raw hull.
@@ -268,52 +197,144 @@ void CellProbe::probe_hull(int hull_index, bool with_points, ProbeResult& out) {
     out.any_expanded_interference = true;
     out.evidence.push_back(evidence);
     if (with_points) append_points(hull_index, o, out);
-    if (!raw_placed) {
-      place_points(X_WL, hull.raw_L, placed_raw_);
-      raw_placed = true;
-    }
-    PairEvidence raw;
-    raw.hull_index = hull_index;
-    raw.obstacle = o;
-    raw.expanded = false;
-    const geometry::CertifiedPairResult raw_result =
-        geometry::certified_pair_query(placed_raw_, cell.obstacles_W()[o], nullptr);
-    if (raw_result.contact == geometry::Contact::kSeparated) {
-      // proof: proofs/two-ball-cover.md#corollary-step (raw radius: lb - eps < true distance)
-      // A gap too small for any double witness (~1e-16) proves nothing usable: radius 0.
-      double radius = 0.0;
-      if (raw_result.witness) {
-        raw.separated = true;
-        raw.witness = *raw_result.witness;
-        raw.lower_bound = raw_result.clearance_lower_bound;
-        radius = std::max(0.0, sub_down(raw.lower_bound, eps));
-        out.evidence.push_back(raw);
-      }
-      if (radius < state.radius) {
-        state.radius = radius;
-        state.nearest_obstacle = o;
-      }
-      state.radius_beside_collisions = std::min(state.radius_beside_collisions, radius);
-    } else {
-      state.raw_collides = true;
-      out.any_collision = true;
-      state.radius = 0.0;
-      state.nearest_obstacle = o;
-      out.evidence.push_back(raw);
-    }
+    decide_raw(hull, o, state, out);
   }
   // A hull with no obstacle in reach has an unbounded radius; it is capped so that every
   // number in the certificate is finite (a smaller radius is always still a valid one).
   state.radius = std::min(state.radius, kUnboundedRadius);
   state.radius_beside_collisions = std::min(state.radius_beside_collisions, kUnboundedRadius);
-  UnmovedHull& kept = unmoved_hulls_[static_cast<std::size_t>(hull_index)];
-  kept.valid = !state.expanded_interferes;  // no points, no raw query to replay
-  if (kept.valid) {
-    kept.X_WL = X_WL;
-    kept.state = state;
-    kept.evidence.assign(out.evidence.begin() + static_cast<std::ptrdiff_t>(evidence_before),
-                         out.evidence.end());
+  keep_unmoved_hull(hull, state, evidence_before, out);
+}
+
+// Candidate obstacles: all of them in small cells, the broadphase's otherwise.
+void CellProbe::collect_candidates(HullProbe& hull, HullState& state) {
+  const RobotCell& cell = *cell_;
+  const int obstacle_count = static_cast<int>(cell.obstacles_W().size());
+  candidates_.clear();
+  state.broadphase_margin = kInfinity;
+  hull.expanded_placed = obstacle_count > kBroadphaseThreshold;
+  if (obstacle_count <= kBroadphaseThreshold) {
+    for (int o = 0; o < obstacle_count; ++o) candidates_.push_back(o);
+  } else {
+    kinematics::place_points(hull.X_WL, hull.hull.expanded_L, placed_expanded_);
+    state.broadphase_margin = 0.25 * cell.radii().radius(cell.radii().link_count() - 1, 0, 1);
+    cell.obstacle_index().candidates(geometry::Aabb::of_points(placed_expanded_),
+                                     state.broadphase_margin, candidates_);
   }
+  // proof: proofs/two-ball-cover.md#corollary-step (obstacles beyond the margin are farther
+  // than Delta + margin from every true point of the hull)
+  state.radius = add_down(cell.tolerance(), state.broadphase_margin);
+  state.radius_beside_collisions = state.radius;
+}
+
+// Nearest first: a sphere slab is enough for every obstacle whose sphere gap is not below the
+// smallest proven clearance so far; only the others need the pair query.
+void CellProbe::order_candidates(HullProbe& hull) {
+  const RobotCell& cell = *cell_;
+  hull.center_W = hull.X_WL * hull.hull.expanded_sphere_L.center;
+  hull.radius_W = placed_sphere_radius(hull.hull.expanded_sphere_L.radius_upper,
+                                       cell.placement_error());
+  ordered_candidates_.clear();
+  for (int o : candidates_) {
+    const geometry::CertifiedSphere& sphere = cell.obstacle_spheres_W()[o];
+    const double gap = (sphere.center - hull.center_W).norm() - hull.radius_W - sphere.radius_upper;
+    ordered_candidates_.emplace_back(gap, o);
+  }
+  std::sort(ordered_candidates_.begin(), ordered_candidates_.end());
+  expanded_polytope_.reset();
+}
+
+// A separation witness for the placed offset and obstacle o, or none when they interfere.
+void CellProbe::decide_expanded(HullProbe& hull, int o, double gap_estimate,
+                                PairEvidence& evidence) {
+  const RobotCell& cell = *cell_;
+  const geometry::CertifiedSphere& sphere = cell.obstacle_spheres_W()[o];
+  if (gap_estimate > 0.0 && gap_estimate >= hull.smallest_clearance &&
+      sphere_witness(hull.center_W, hull.radius_W, sphere.center, sphere.radius_upper,
+                     evidence.witness, evidence.lower_bound)) {
+    evidence.separated = true;
+    return;
+  }
+  if (!hull.expanded_placed) {
+    kinematics::place_points(hull.X_WL, hull.hull.expanded_L, placed_expanded_);
+    hull.expanded_placed = true;
+  }
+  const int obstacle_count = static_cast<int>(cell.obstacles_W().size());
+  const std::size_t warm_slot = static_cast<std::size_t>(hull.index) * obstacle_count + o;
+  const geometry::CertifiedPairResult result = geometry::certified_pair_query(
+      placed_expanded_, cell.obstacles_W()[o],
+      has_warm_normal_[warm_slot] ? &warm_normals_[warm_slot] : nullptr,
+      &cell.expanded_skeleton(static_cast<std::size_t>(hull.index)), &climb_hints_[warm_slot]);
+  if (result.contact == geometry::Contact::kSeparated && result.witness) {
+    evidence.separated = true;
+    evidence.witness = *result.witness;
+    evidence.lower_bound = result.clearance_lower_bound;
+    warm_normals_[warm_slot] = result.witness->normal;
+    has_warm_normal_[warm_slot] = 1;
+  }
+}
+
+void CellProbe::record_clearance(HullProbe& hull, HullState& state, const PairEvidence& evidence,
+                                 ProbeResult& out) {
+  hull.smallest_clearance = std::min(hull.smallest_clearance, evidence.lower_bound);
+  // proof: proofs/offset-containment.md#clearance-through-offset
+  const double radius = add_down(cell_->tolerance(), evidence.lower_bound);
+  if (radius < state.radius) {
+    state.radius = radius;
+    state.nearest_obstacle = evidence.obstacle;
+  }
+  state.radius_beside_collisions = std::min(state.radius_beside_collisions, radius);
+  out.evidence.push_back(evidence);
+}
+
+// The expanded hull interferes with obstacle o: the raw hull either keeps a proven clearance
+// from it or collides.
+void CellProbe::decide_raw(HullProbe& hull, int o, HullState& state, ProbeResult& out) {
+  const RobotCell& cell = *cell_;
+  if (!hull.raw_placed) {
+    kinematics::place_points(hull.X_WL, hull.hull.raw_L, placed_raw_);
+    hull.raw_placed = true;
+  }
+  PairEvidence raw;
+  raw.hull_index = hull.index;
+  raw.obstacle = o;
+  raw.expanded = false;
+  const geometry::CertifiedPairResult raw_result =
+      geometry::certified_pair_query(placed_raw_, cell.obstacles_W()[o], nullptr);
+  if (raw_result.contact != geometry::Contact::kSeparated) {
+    state.raw_collides = true;
+    out.any_collision = true;
+    state.radius = 0.0;
+    state.nearest_obstacle = o;
+    out.evidence.push_back(raw);
+    return;
+  }
+  // proof: proofs/two-ball-cover.md#corollary-step (raw radius: lb - eps < true distance)
+  // A gap too small for any double witness (~1e-16) proves nothing usable: radius 0.
+  double radius = 0.0;
+  if (raw_result.witness) {
+    raw.separated = true;
+    raw.witness = *raw_result.witness;
+    raw.lower_bound = raw_result.clearance_lower_bound;
+    radius = std::max(0.0, sub_down(raw.lower_bound, cell.placement_error()));
+    out.evidence.push_back(raw);
+  }
+  if (radius < state.radius) {
+    state.radius = radius;
+    state.nearest_obstacle = o;
+  }
+  state.radius_beside_collisions = std::min(state.radius_beside_collisions, radius);
+}
+
+void CellProbe::keep_unmoved_hull(const HullProbe& hull, const HullState& state,
+                                  std::size_t evidence_before, const ProbeResult& out) {
+  UnmovedHull& kept = unmoved_hulls_[static_cast<std::size_t>(hull.index)];
+  kept.valid = !state.expanded_interferes;  // no points, no raw query to replay
+  if (!kept.valid) return;
+  kept.X_WL = hull.X_WL;
+  kept.state = state;
+  kept.evidence.assign(out.evidence.begin() + static_cast<std::ptrdiff_t>(evidence_before),
+                       out.evidence.end());
 }
 
 }  // namespace grpvss::certify

@@ -1,4 +1,4 @@
-#include "grpvss/certify/interference_episodes.hpp"
+#include "interference_episodes.hpp"
 
 #include <algorithm>
 

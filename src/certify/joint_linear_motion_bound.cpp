@@ -1,9 +1,9 @@
-#include "grpvss/certify/joint_linear_motion_bound.hpp"
+#include "joint_linear_motion_bound.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "grpvss/certify/cell_probe.hpp"  // place_points: the expression the FK bound covers
+#include "grpvss/kinematics/forward_kinematics.hpp"  // place_points: the expression the FK bound covers
 #include "grpvss/geometry/directed_rounding.hpp"
 
 namespace grpvss::certify {
@@ -42,8 +42,8 @@ double vertex_chord_bound(const std::vector<Eigen::Vector3d>& raw_L,
   // proof: proofs/motion-bound.md#lemma-joint-linear-chord (floating point)
   // Placed in round-to-nearest, exactly as the FK rounding bound assumes.
   thread_local std::vector<Eigen::Vector3d> from_W, to_W;
-  place_points(X_WL_from, raw_L, from_W);
-  place_points(X_WL_to, raw_L, to_W);
+  kinematics::place_points(X_WL_from, raw_L, from_W);
+  kinematics::place_points(X_WL_to, raw_L, to_W);
   r::UpwardRoundingScope upward;
   double largest_square = 0.0;
   for (std::size_t v = 0; v < raw_L.size(); ++v) {

@@ -5,7 +5,7 @@
 #include <limits>
 #include <stdexcept>
 
-#include "grpvss/certify/exact_axis_radius.hpp"
+#include "grpvss/geometry/rounded_bounds.hpp"
 #include "grpvss/geometry/directed_rounding.hpp"
 
 
@@ -31,12 +31,12 @@ std::vector<double> axis_radii_up(const RobotModel& robot, int link, const HullP
   namespace r = geometry::rounding;
   const int joint_count = robot.joint_count();
   std::vector<double> per_joint(joint_count, 0.0);
-  const double radial = radial_extent_upper(hull);
+  const double radial = geometry::radial_extent_upper(hull);
   // libm in the default rounding mode, before the upward scope.
   std::vector<double> sin_upper(joint_count), cos_upper(joint_count);
   for (int j = 0; j < joint_count; ++j) {
-    sin_upper[j] = trig_magnitude_upper(std::sin(robot.joints[j].dh.alpha));
-    cos_upper[j] = trig_magnitude_upper(std::cos(robot.joints[j].dh.alpha));
+    sin_upper[j] = geometry::trig_magnitude_upper(std::sin(robot.joints[j].dh.alpha));
+    cos_upper[j] = geometry::trig_magnitude_upper(std::cos(robot.joints[j].dh.alpha));
   }
   r::UpwardRoundingScope upward;
   double norm = 0.0;
@@ -118,14 +118,6 @@ double HullRadiusTable::hull_motion_bound(int link, int hull, const Eigen::Vecto
     ++terms;
   }
   return terms == 0 ? 0.0 : round_sum_upward(bound, terms);
-}
-
-double HullRadiusTable::link_motion_bound(int link, const Eigen::VectorXd& dq) const {
-  double largest = 0.0;
-  for (int hull = 0; hull < hull_count(link); ++hull) {
-    largest = std::max(largest, hull_motion_bound(link, hull, dq));
-  }
-  return largest;
 }
 
 }  // namespace grpvss::certify

@@ -1,4 +1,4 @@
-#include "grpvss/certify/motion_clearance.hpp"
+#include "motion_clearance.hpp"
 
 #include <algorithm>
 #include <limits>

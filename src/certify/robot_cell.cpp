@@ -4,7 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "grpvss/geometry/convex_polytope.hpp"
+#include "grpvss/exact/convex_polytope.hpp"
+#include "grpvss/exact/polytope_skeleton.hpp"
 #include "grpvss/geometry/directed_rounding.hpp"
 #include "grpvss/kinematics/fk_error_bound.hpp"
 
@@ -30,12 +31,13 @@ double largest_link_coordinate(const std::vector<LinkHull>& hulls) {
 }
 
 RobotCell::RobotCell(const RobotModel& robot, const Environment& environment,
-                     const CellOptions& options)
+                     const CellSettings& settings)
     : robot_(&robot),
-      options_(options),
+      environment_(&environment),
+      settings_(settings),
       chain_(kinematics::make_chain(robot)),
       radii_(robot) {
-  if (!(options.tolerance > 0.0) || !std::isfinite(options.tolerance)) {
+  if (!(settings.tolerance > 0.0) || !std::isfinite(settings.tolerance)) {
     throw std::invalid_argument("RobotCell: tolerance must be finite and > 0");
   }
   // The offsets are built in the link frame, so the placement error bound must cover their
@@ -57,7 +59,7 @@ RobotCell::RobotCell(const RobotModel& robot, const Environment& environment,
   // for both shapes (cube: r, rhombicuboctahedron: r); 2x covers the retry inflation.
   double raw_extent = 0.0;
   for (const LinkHull& hull : hulls_) raw_extent = std::max(raw_extent, max_abs_coordinate(hull.raw_L));
-  const double coordinate_bound = raw_extent + 2.0 * options.tolerance + 1.0;
+  const double coordinate_bound = raw_extent + 2.0 * settings.tolerance + 1.0;
   // proof: proofs/fk-rounding.md#fk-rounding (the bound is strict: the lemma's bound is
   // doubled so that every use below may treat it as a strict inequality).
   placement_error_ = 2.0 * kinematics::forward_kinematics_error_bound(chain_, coordinate_bound);
@@ -67,11 +69,11 @@ RobotCell::RobotCell(const RobotModel& robot, const Environment& environment,
   {
     namespace r = geometry::rounding;
     r::UpwardRoundingScope upward;
-    expansion_radius_ = r::add_up(options.tolerance, r::mul_up(2.0, placement_error_));
+    expansion_radius_ = r::add_up(settings.tolerance, r::mul_up(2.0, placement_error_));
   }
   for (std::size_t i = 0; i < hulls_.size(); ++i) {
     const geometry::ConvexPolytope expanded =
-        geometry::minkowski_offset(raw_polytopes[i], expansion_radius_, options.offset_shape);
+        geometry::minkowski_offset(raw_polytopes[i], expansion_radius_, settings.offset_shape);
     hulls_[i].expanded_L = expanded.vertices();
     expanded_polytopes_L_.push_back(geometry::ConvexPolytope::from_points(hulls_[i].expanded_L));
     expanded_skeletons_.push_back(geometry::hull_skeleton(

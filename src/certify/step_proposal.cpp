@@ -1,4 +1,4 @@
-#include "grpvss/certify/step_proposal.hpp"
+#include "step_proposal.hpp"
 
 #include <algorithm>
 #include <cmath>

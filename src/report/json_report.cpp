@@ -11,7 +11,7 @@
 
 #include "grpvss/report/file_units.hpp"
 #include "grpvss/report/program_version.hpp"
-#include "grpvss/report/thesis_error_text.hpp"
+#include "thesis_error_text.hpp"
 #include "grpvss/report/thesis_output.hpp"
 
 namespace grpvss::report {

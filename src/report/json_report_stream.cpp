@@ -142,11 +142,11 @@ void JsonReportStream::on_step(const certify::StepRecord& step) {
 }
 
 void JsonReportStream::finish(const certify::VerificationResult& result,
-                              const Environment& environment, geometry::OffsetShape offset_shape,
-                              const InputDigests& digests, const std::string& generated_at) {
+                              const certify::RobotCell& cell, const InputDigests& digests,
+                              const std::string& generated_at) {
   const certify::VerificationResult head = head_of(result);
   nlohmann::json document = report_to_json(head, robot_, digests, generated_at);
-  document["scene"] = scene_to_json(head, robot_, environment, offset_shape);
+  document["scene"] = scene_to_json(head, cell);
   // What report_to_json() derives from the steps, from the steps seen here.
   document["collisions_detected"] = collisions_ || result.collision_step.has_value();
   document["total_steps"] = last_index_;

@@ -12,7 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "grpvss/certify/robot_cell.hpp"
-#include "grpvss/geometry/convex_polytope.hpp"
+#include "grpvss/exact/convex_polytope.hpp"
 #include "grpvss/kinematics/forward_kinematics.hpp"
 #include "grpvss/kinematics/kinematic_chain.hpp"
 
@@ -89,15 +89,11 @@ json link_poses(const kinematics::KinematicChain& chain, const Eigen::VectorXd& 
 
 }  // namespace
 
-geometry::OffsetShape default_offset_shape(certify::ResolutionMode mode) {
-  return mode == certify::ResolutionMode::kThesis ? geometry::OffsetShape::kCube
-                                                  : geometry::OffsetShape::kRhombicuboctahedron;
-}
-
-nlohmann::json scene_to_json(const certify::VerificationResult& result, const RobotModel& robot,
-                             const Environment& environment, geometry::OffsetShape offset_shape) {
-  // The same cell the verifier builds: the expanded hulls drawn are the ones it tested.
-  const certify::RobotCell cell(robot, environment, {result.tolerance, offset_shape});
+nlohmann::json scene_to_json(const certify::VerificationResult& result,
+                             const certify::RobotCell& cell) {
+  // The cell the run used: the expanded hulls drawn are the ones it tested.
+  const RobotModel& robot = cell.robot();
+  const Environment& environment = cell.environment();
   json links = json::array();
   for (std::size_t link = 0; link < robot.links.size(); ++link) {
     links.push_back({{"link", static_cast<int>(link)}, {"hulls", json::array()}});
@@ -125,7 +121,7 @@ nlohmann::json scene_to_json(const certify::VerificationResult& result, const Ro
   }
   return {{"expansion",
            {{"radius", finite(cell.expansion_radius(), "expansion radius")},
-            {"shape", offset_shape == geometry::OffsetShape::kCube ? "cube" : "rhombicuboctahedron"}}},
+            {"shape", geometry::to_string(cell.offset_shape())}}},
           {"links", links},
           {"obstacles", obstacles},
           {"start", start},

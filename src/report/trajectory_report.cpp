@@ -1,5 +1,7 @@
 #include "grpvss/report/trajectory_report.hpp"
 
+#include "grpvss/motion/profile_table.hpp"
+
 #include <cmath>
 
 #include <fmt/core.h>
@@ -48,16 +50,16 @@ std::vector<double> display_joints(const RobotModel& robot, const Eigen::VectorX
 
 std::string trajectory_text(const RobotModel& robot, const motion::Trajectory& trajectory,
                             const TrajectoryReportSettings& settings) {
+  const motion::MotionModel& model = trajectory.motion_model();
   std::string out;
   out += fmt::format("GRPVSS TRAJECTORY OF PATH {} FOR ROBOT {}\n", settings.path_file,
                      settings.robot_file);
   out += fmt::format("PTP TIMING: {}   PROFILES: {}   IK: {}\n",
-                     settings.timing == "synchronized" ? "SYNCHRONIZED" : "INDEPENDENT",
-                     settings.profile_table.empty() ? "IDEAL TRAPEZOIDS"
-                                                    : "TABLE " + settings.profile_table,
+                     model.timing == motion::PtpTiming::kSynchronized ? "SYNCHRONIZED" : "INDEPENDENT",
+                     model.table ? "TABLE " + model.table->file_name() : "IDEAL TRAPEZOIDS",
                      settings.ik_name);
   out += fmt::format("CP SEGMENTS: NOMINAL SPEED {} PER S, SAMPLE SPACING {}\n",
-                     fixed2(settings.cp_speed), fixed2(settings.cp_spacing));
+                     fixed2(model.cp_speed), fixed2(model.cp_spacing));
   out += "JOINT VALUES IN DEGREES (REVOLUTE) AND LENGTH UNITS (PRISMATIC)\n";
   out += fmt::format("\nHOME JOINT VALUES {}\n", joint_row(robot, trajectory.home()));
   for (const motion::SegmentTrajectory& piece : trajectory.segments()) {
@@ -99,12 +101,13 @@ nlohmann::json trajectory_json(const RobotModel& robot, const motion::Trajectory
   doc["version"] = 1;
   doc["robot_file"] = settings.robot_file;
   doc["path_file"] = settings.path_file;
-  doc["timing"] = settings.timing;
-  doc["profile_table"] = settings.profile_table.empty() ? nlohmann::json(nullptr)
-                                                         : nlohmann::json(settings.profile_table);
+  const motion::MotionModel& model = trajectory.motion_model();
+  doc["timing"] = motion::to_string(model.timing);
+  doc["profile_table"] =
+      model.table ? nlohmann::json(model.table->file_name()) : nlohmann::json(nullptr);
   doc["ik"] = settings.ik_name;
-  doc["cp_speed"] = settings.cp_speed;
-  doc["cp_spacing"] = settings.cp_spacing;
+  doc["cp_speed"] = model.cp_speed;
+  doc["cp_spacing"] = model.cp_spacing;
   nlohmann::json units = nlohmann::json::array();
   for (const Joint& joint : robot.joints)
     units.push_back(joint.type == JointType::kRevolute ? "deg" : "length");

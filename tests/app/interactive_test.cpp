@@ -110,12 +110,12 @@ std::string independent_thesis_output(const std::string& path_file, double toler
   const RobotModel robot = io::read_robot_file(kSample + "robot.txt");
   const Environment environment = io::read_environment_file(kSample + "environment.txt");
   const PathProgram program = io::read_path_file(path_file, robot);
-  certify::VerifyOptions options;
+  certify::SetupRequest options;
   options.tolerance = tolerance;
   options.path_label = label;
-  const auto ik = motion::select_ik("auto", robot, kSample + "robot.txt");
+  const auto ik = motion::select_ik({}, robot, kSample + "robot.txt");
   const certify::VerificationRun run = certify::verify(
-      robot, environment, program, motion::make_kinematics_access(robot, ik), options);
+      robot, environment, program, motion::make_kinematics_access(robot, ik), certify::resolve_setup(options));
   *verdict = run.result.verdict;
   return report::render_thesis_output(run.result, robot);
 }

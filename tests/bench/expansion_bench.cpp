@@ -4,8 +4,8 @@
 
 #include <benchmark/benchmark.h>
 
-#include "grpvss/geometry/convex_polytope.hpp"
-#include "grpvss/geometry/minkowski_offset.hpp"
+#include "grpvss/exact/convex_polytope.hpp"
+#include "grpvss/exact/minkowski_offset.hpp"
 #include "grpvss/geometry/thesis_expansion.hpp"
 #include "grpvss/io/robot_file.hpp"
 

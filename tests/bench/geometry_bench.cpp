@@ -15,10 +15,10 @@
 
 #include "grpvss/geometry/broadphase.hpp"
 #include "grpvss/geometry/centroid_cull.hpp"
-#include "grpvss/geometry/certified_query.hpp"
-#include "grpvss/geometry/convex_polytope.hpp"
-#include "grpvss/geometry/exact_contact.hpp"
-#include "grpvss/geometry/minkowski_offset.hpp"
+#include "grpvss/exact/certified_query.hpp"
+#include "grpvss/exact/convex_polytope.hpp"
+#include "grpvss/exact/exact_contact.hpp"
+#include "grpvss/exact/minkowski_offset.hpp"
 #include "grpvss/geometry/separation_witness.hpp"
 #include "support/random_shapes.hpp"
 

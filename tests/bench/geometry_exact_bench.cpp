@@ -11,9 +11,9 @@
 
 #include <Eigen/Geometry>
 
-#include "grpvss/geometry/convex_polytope.hpp"
-#include "grpvss/geometry/exact_contact.hpp"
-#include "grpvss/geometry/minkowski_offset.hpp"
+#include "grpvss/exact/convex_polytope.hpp"
+#include "grpvss/exact/exact_contact.hpp"
+#include "grpvss/exact/minkowski_offset.hpp"
 #include "grpvss/geometry/separation_witness.hpp"
 
 namespace {

@@ -6,7 +6,7 @@
 
 #include <benchmark/benchmark.h>
 
-#include "grpvss/io/affine_dimension.hpp"
+#include "io/affine_dimension.hpp"
 #include "grpvss/io/environment_file.hpp"
 #include "grpvss/io/robot_file.hpp"
 

@@ -17,8 +17,8 @@ void BM_PlanOutputSamplePath(benchmark::State& state) {
   const grpvss::PathProgram program =
       grpvss::io::read_path_file(kData + "path-output-sample.txt", robot);
   const auto access = grpvss::motion::make_kinematics_access(
-      robot, grpvss::motion::select_ik("auto", robot, "robot.txt"));
-  grpvss::motion::TrajectoryOptions options;
+      robot, grpvss::motion::select_ik({}, robot, "robot.txt"));
+  grpvss::motion::MotionModel options;
   options.cp_spacing = 0.5;
   for (auto _ : state) {
     auto trajectory = grpvss::motion::Trajectory::plan(robot, program, access, options);

@@ -19,7 +19,7 @@
 
 #include <benchmark/benchmark.h>
 
-#include "grpvss/certify/cell_probe.hpp"
+#include "certify/cell_probe.hpp"
 #include "grpvss/certify/robot_cell.hpp"
 #include "grpvss/certify/verifier.hpp"
 #include "grpvss/io/environment_file.hpp"
@@ -44,7 +44,7 @@ struct Operation {
 
 grpvss::motion::KinematicsAccess ibm_access(const grpvss::RobotModel& robot) {
   return grpvss::motion::make_kinematics_access(
-      robot, grpvss::motion::select_ik("auto", robot, "robot.txt"));
+      robot, grpvss::motion::select_ik({}, robot, "robot.txt"));
 }
 
 const Operation& ptp_operation() {
@@ -84,11 +84,11 @@ const Operation& cp_operation() {
   return operation;
 }
 
-grpvss::certify::VerifyOptions options_for(ResolutionMode mode) {
-  grpvss::certify::VerifyOptions options;
-  options.tolerance = kTolerance;
-  options.mode = mode;
-  return options;
+grpvss::certify::VerificationSetup setup_for(ResolutionMode mode) {
+  grpvss::certify::SetupRequest request;
+  request.tolerance = kTolerance;
+  request.mode = mode;
+  return grpvss::certify::resolve_setup(request);
 }
 
 // The operation alone: the cell (offsets, obstacle hulls, broadphase) is built once per
@@ -96,8 +96,7 @@ grpvss::certify::VerifyOptions options_for(ResolutionMode mode) {
 // BM_RobotCellSetup measures it.
 grpvss::certify::VerificationRun run(const Operation& op, const grpvss::certify::RobotCell& cell,
                                      ResolutionMode mode) {
-  return grpvss::certify::verify(cell, op.environment, op.program, op.kinematics,
-                                 options_for(mode));
+  return grpvss::certify::verify(cell, op.program, op.kinematics, setup_for(mode).run);
 }
 
 void report(benchmark::State& state, const grpvss::certify::VerificationRun& last) {
@@ -117,7 +116,7 @@ ResolutionMode mode_of(const benchmark::State& state) {
 // The timed loop of every operation benchmark: the cell once, then verify() per iteration.
 void measure(benchmark::State& state, const Operation& op, ResolutionMode mode) {
   const grpvss::certify::RobotCell cell(op.robot, op.environment,
-                                        grpvss::certify::make_cell_options(options_for(mode)));
+                                        setup_for(mode).cell);
   grpvss::certify::VerificationRun last;
   for (auto _ : state) {
     last = run(op, cell, mode);
@@ -166,7 +165,7 @@ BENCHMARK(BM_VerifyCpOperationThroughAPost)->Arg(0)->Arg(1)->Unit(benchmark::kMi
 // Arg 0: rhombicuboctahedron offsets (certified), 1: cube offsets (thesis).
 void BM_RobotCellSetup(benchmark::State& state) {
   const Operation& op = ptp_operation();
-  grpvss::certify::CellOptions options;
+  grpvss::certify::CellSettings options;
   options.tolerance = kTolerance;
   options.offset_shape = state.range(0) == 0 ? grpvss::geometry::OffsetShape::kRhombicuboctahedron
                                              : grpvss::geometry::OffsetShape::kCube;
@@ -186,7 +185,7 @@ void BM_ProbeOperationSteps(benchmark::State& state) {
   const bool points = state.range(0) != 2;
   const grpvss::certify::RobotCell cell(
       op.robot, op.environment,
-      grpvss::certify::make_cell_options(options_for(ResolutionMode::kCertified)));
+      setup_for(ResolutionMode::kCertified).cell);
   const grpvss::certify::VerificationRun reference = run(op, cell, ResolutionMode::kCertified);
   grpvss::certify::CellProbe probe(cell);
   grpvss::certify::ProbeResult out;
@@ -214,7 +213,7 @@ void BM_InterferencePointsOfOperation(benchmark::State& state) {
   }
   const grpvss::certify::RobotCell cell(
       op.robot, op.environment,
-      grpvss::certify::make_cell_options(options_for(ResolutionMode::kCertified)));
+      setup_for(ResolutionMode::kCertified).cell);
   const grpvss::certify::VerificationRun reference = run(op, cell, ResolutionMode::kCertified);
   grpvss::certify::CellProbe probe(cell);
   std::vector<grpvss::certify::ProbeResult> interfering;

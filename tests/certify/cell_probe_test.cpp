@@ -1,6 +1,6 @@
 // CellProbe::add_interference_points, which the verifier uses for accepted steps, adds exactly
 // the points a probe with points finds: same pairs, same exact points, same order.
-#include "grpvss/certify/cell_probe.hpp"
+#include "certify/cell_probe.hpp"
 
 #include <algorithm>
 #include <random>
@@ -8,8 +8,8 @@
 
 #include <gtest/gtest.h>
 
-#include "grpvss/geometry/convex_polytope.hpp"
-#include "grpvss/geometry/exact_contact.hpp"
+#include "grpvss/exact/convex_polytope.hpp"
+#include "grpvss/exact/exact_contact.hpp"
 #include "grpvss/geometry/gjk.hpp"
 #include "grpvss/io/environment_file.hpp"
 #include "grpvss/kinematics/forward_kinematics.hpp"
@@ -43,7 +43,7 @@ void for_random_configurations(std::uint64_t seed, Visit visit) {
   std::mt19937_64 rng(seed);
   for (const char* environment_file : {"environment.txt", "bench-environment.txt"}) {
     const Environment environment = io::read_environment_file(data(environment_file));
-    CellOptions options;
+    CellSettings options;
     options.tolerance = 0.5;
     const RobotCell cell(robot, environment, options);
     for (int k = 0; k < 300; ++k) visit(cell, test::random_configuration(robot, rng), k);
@@ -96,7 +96,7 @@ TEST(CellProbe, LinkFramePointsAreTheWorldFramePlacedOffsetsPoints) {
     for (const PairEvidence& evidence : result.evidence) {
       if (!evidence.expanded || evidence.separated) continue;
       const LinkHull& hull = cell.hulls()[static_cast<std::size_t>(evidence.hull_index)];
-      place_points(workspace.X_WL[hull.link], hull.expanded_L, placed_W);
+      kinematics::place_points(workspace.X_WL[hull.link], hull.expanded_L, placed_W);
       std::vector<std::pair<std::string, Eigen::Vector3d>> reference, found;
       for (const auto& point : geometry::interference_points(
                geometry::ConvexPolytope::from_points(placed_W),
@@ -203,7 +203,7 @@ TEST(CellProbe, AHullWhoseLinkDidNotMoveKeepsItsProofAndAMovedOneIsDecidedAgain)
 // the vertical edge through it: the joints turn about z).
 TEST(CellProbe, APairTouchingOnlyInTheWorldFrameStillHasItsPoint) {
   const RobotModel robot = io::read_robot_file(data("robot.txt"));
-  const CellOptions options{0.5, geometry::OffsetShape::kCube};
+  const CellSettings options{0.5, geometry::OffsetShape::kCube};
   const std::size_t quill = 10;  // link 4 hull 0, the last of the IBM 7545's 11 hulls
   std::mt19937_64 rng(7545);
   int touching = 0;
@@ -215,7 +215,7 @@ TEST(CellProbe, APairTouchingOnlyInTheWorldFrameStillHasItsPoint) {
     kinematics::Workspace workspace(robot);
     kinematics::forward_kinematics(free_cell.chain(), q, workspace);
     std::vector<Eigen::Vector3d> placed_W;
-    place_points(workspace.X_WL[4], free_cell.hulls()[quill].expanded_L, placed_W);
+    kinematics::place_points(workspace.X_WL[4], free_cell.hulls()[quill].expanded_L, placed_W);
     const Eigen::Vector3d v = *std::max_element(
         placed_W.begin(), placed_W.end(),
         [](const Eigen::Vector3d& a, const Eigen::Vector3d& b) { return a.x() < b.x(); });

@@ -8,8 +8,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "grpvss/certify/certificate.hpp"
-#include "grpvss/certify/certificate_checker.hpp"
+#include "grpvss/evidence/certificate.hpp"
+#include "grpvss/checker/certificate_checker.hpp"
 #include "grpvss/io/environment_file.hpp"
 #include "grpvss/io/path_file.hpp"
 #include "grpvss/io/robot_file.hpp"
@@ -27,7 +27,7 @@ grpvss::certify::CheckReport check(const std::string& reproducer) {
   const grpvss::PathProgram program =
       grpvss::io::read_path_file(kRoot + "/fuzz/inputs/tiny-path.txt", robot);
   const auto kinematics = grpvss::motion::make_kinematics_access(
-      robot, grpvss::motion::select_ik("auto", robot, "robot.txt"));
+      robot, grpvss::motion::select_ik({}, robot, "robot.txt"));
   const auto certificate = grpvss::certify::certificate_from_json(
       nlohmann::json::parse(grpvss::test::read_text_file(
           kRoot + "/tests/regressions/certificate_checker/" + reproducer)),
@@ -54,7 +54,7 @@ TEST(CertificateCheckerFuzzRegression, CollisionClaimAtAnEmptyJointVectorIsRejec
   // Step 1's q is empty and the claim names it as the collision.
   const auto report = check("collision-claim-at-empty-joint-vector.json");
   EXPECT_FALSE(report.accepted);
-  EXPECT_EQ(report.claim, "COLLISION");
+  EXPECT_EQ(report.claim, grpvss::certify::Verdict::kCollision);
   EXPECT_TRUE(has_failure(report, "segment 1 step 1: wrong joint count"));
   EXPECT_TRUE(
       has_failure(report, "claim COLLISION, but the robot at the named step touches no obstacle"));

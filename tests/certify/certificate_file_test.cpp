@@ -1,7 +1,7 @@
 // read_certificate_file (two callback passes, one segment built at a time) against
 // certificate_from_json of the whole document: the same certificate from a real run, and the
 // same InputError message for every malformed variant and every fuzz reproducer.
-#include "grpvss/certify/certificate_file.hpp"
+#include "grpvss/evidence/certificate_file.hpp"
 
 #include <filesystem>
 #include <functional>
@@ -36,11 +36,11 @@ json sample_certificate() {
   const RobotModel robot = io::read_robot_file(data("robot.txt"));
   const Environment environment = io::read_environment_file(data("environment.txt"));
   const PathProgram program = io::read_path_file(data("path.txt"), robot);
-  VerifyOptions options;
+  SetupRequest options;
   options.tolerance = 0.5;
   const VerificationRun run = verify(
       robot, environment, program,
-      motion::make_kinematics_access(robot, motion::select_ik("auto", robot, "robot.txt")), options);
+      motion::make_kinematics_access(robot, motion::select_ik({}, robot, "robot.txt")), resolve_setup(options));
   json document = certificate_to_json(run.certificate);
   document["inputs"] = {{"robot", "r"}, {"ik", "ibm7545"}};
   return document;

@@ -9,7 +9,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "grpvss/certify/certificate.hpp"
+#include "grpvss/evidence/certificate.hpp"
 #include "grpvss/common/input_error.hpp"
 #include "support/text_files.hpp"
 

@@ -1,6 +1,6 @@
 // Interference episodes: the runs of consecutive steps at which one (link hull, obstacle) pair
 // interferes, built from hand-made steps and from the verifier's own runs.
-#include "grpvss/certify/interference_episodes.hpp"
+#include "certify/interference_episodes.hpp"
 
 #include <set>
 #include <string>
@@ -124,10 +124,10 @@ class Ibm7545Episodes : public ::testing::Test {
     environment_ = io::read_environment_file(data(environment_file));
     program_ = program;
     kinematics_ =
-        motion::make_kinematics_access(robot_, motion::select_ik("auto", robot_, "robot.txt"));
-    VerifyOptions options;
+        motion::make_kinematics_access(robot_, motion::select_ik({}, robot_, "robot.txt"));
+    SetupRequest options;
     options.tolerance = 0.5;
-    return verify(robot_, environment_, program_, kinematics_, options);
+    return verify(robot_, environment_, program_, kinematics_, resolve_setup(options));
   }
   RobotModel robot_;
   Environment environment_;
@@ -172,10 +172,11 @@ TEST_F(Ibm7545Episodes, TheSamplePathsEpisodesMatchItsStepsInBothModes) {
   }
   EXPECT_EQ(colliding, (std::set<std::tuple<int, int, int>>{{3, 0, 0}, {3, 1, 0}}));
 
-  VerifyOptions thesis;
+  SetupRequest thesis;
   thesis.tolerance = 0.5;
   thesis.mode = ResolutionMode::kThesis;
-  const VerificationRun by_thesis_rule = verify(robot_, environment_, program_, kinematics_, thesis);
+  const VerificationRun by_thesis_rule =
+      verify(robot_, environment_, program_, kinematics_, resolve_setup(thesis));
   expect_consistent(by_thesis_rule.result);
 }
 

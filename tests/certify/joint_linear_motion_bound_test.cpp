@@ -1,7 +1,7 @@
 // The chord bound of proofs/motion-bound.md#lemma-joint-linear-chord as implemented
 // (src/certify/joint_linear_motion_bound.cpp) and as the checker decides it: hand numbers,
 // the CP certificates that rely on it, and the tampering the checker must reject.
-#include "grpvss/certify/joint_linear_motion_bound.hpp"
+#include "certify/joint_linear_motion_bound.hpp"
 
 #include <cmath>
 #include <string>
@@ -9,8 +9,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "grpvss/certify/certificate.hpp"
-#include "grpvss/certify/certificate_checker.hpp"
+#include "grpvss/evidence/certificate.hpp"
+#include "grpvss/checker/certificate_checker.hpp"
 #include "grpvss/certify/robot_cell.hpp"
 #include "grpvss/kinematics/forward_kinematics.hpp"
 #include "support/ibm7545_run.hpp"
@@ -69,7 +69,7 @@ class CpLineCertificate : public ::testing::Test {
     run_ = test::verify_ibm7545("bench-environment-near-miss.txt", kCpLinePath);
     ASSERT_EQ(run_.run.result.verdict, Verdict::kClear);
     document_ = certificate_to_json(run_.run.certificate);
-    cell_.emplace(run_.robot, run_.environment, make_cell_options(run_.options));
+    cell_.emplace(run_.robot, run_.environment, run_.setup.cell);
   }
   CheckReport check(const nlohmann::json& document) const {
     return check_certificate(run_.robot, run_.environment, run_.program, run_.kinematics,

@@ -1,6 +1,6 @@
 #include "grpvss/certify/motion_bound.hpp"
 
-#include "grpvss/certify/exact_axis_radius.hpp"
+#include "checker/exact_axis_radius.hpp"
 
 #include <cmath>
 #include <random>

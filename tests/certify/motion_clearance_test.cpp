@@ -1,6 +1,6 @@
 // The clearance along the motion (proofs/two-ball-cover.md#corollary-motion-clearance): its
 // rounded evaluation, and the verifier's numbers against exact distances of the motion.
-#include "grpvss/certify/motion_clearance.hpp"
+#include "certify/motion_clearance.hpp"
 
 #include <cmath>
 #include <random>
@@ -9,7 +9,7 @@
 #include <boost/multiprecision/cpp_int.hpp>
 #include <gtest/gtest.h>
 
-#include "grpvss/certify/certificate_checker.hpp"
+#include "grpvss/checker/certificate_checker.hpp"
 #include "grpvss/certify/verifier.hpp"
 #include "grpvss/motion/kinematics_adapter.hpp"
 #include "grpvss/motion/trajectory.hpp"
@@ -74,7 +74,7 @@ TEST(MotionClearance, TheVerifiersBoundsHoldAlongTheNearMissMotion) {
     const VerificationRun& run = cell.run;
     ASSERT_EQ(run.result.verdict, Verdict::kClear) << environment_file;
     const motion::Trajectory trajectory = motion::Trajectory::plan(
-        robot, cell.program, cell.kinematics, cell.options.trajectory);
+        robot, cell.program, cell.kinematics, cell.setup.run.motion);
     const motion::PtpMotion& ptp = *trajectory.segments().at(0).ptp;
     double previous_time = 0.0;
     int checked = 0;
@@ -162,12 +162,13 @@ TEST(MotionClearance, TheVerifiersBoundsHoldOnTheOracleCells) {
     const test::OracleCase c = test::random_ptp_case(seed);
     const motion::KinematicsAccess kinematics =
         motion::make_kinematics_access(c.robot, motion::select_ik(c.ik, c.robot, "random"));
-    VerifyOptions options;
+    SetupRequest options;
     options.tolerance = c.tolerance;
-    options.max_probes = 20000;
-    const VerificationRun run = verify(c.robot, c.environment, c.program, kinematics, options);
+    options.limits.max_probes = 20000;
+    const VerificationRun run =
+        verify(c.robot, c.environment, c.program, kinematics, resolve_setup(options));
     const motion::Trajectory trajectory =
-        motion::Trajectory::plan(c.robot, c.program, kinematics, options.trajectory);
+        motion::Trajectory::plan(c.robot, c.program, kinematics, options.motion);
     const StepRecord* previous = &*run.result.start;
     for (const StepRecord& step : run.result.steps) {
       const motion::SegmentTrajectory& segment = trajectory.segments().at(step.segment - 1);

@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-#include "grpvss/certify/certificate_checker.hpp"
+#include "grpvss/checker/certificate_checker.hpp"
 #include "grpvss/certify/verifier.hpp"
 #include "grpvss/motion/cp_line.hpp"
 #include "grpvss/motion/kinematics_adapter.hpp"
@@ -34,9 +34,10 @@ CaseRun verify_case(test::OracleCase c) {
   CaseRun result{std::move(c), {}, {}};
   result.kinematics = motion::make_kinematics_access(
       result.c.robot, motion::select_ik(result.c.ik, result.c.robot, "random"));
-  VerifyOptions options;
+  SetupRequest options;
   options.tolerance = result.c.tolerance;
-  result.run = verify(result.c.robot, result.c.environment, result.c.program, result.kinematics, options);
+  result.run = verify(result.c.robot, result.c.environment, result.c.program, result.kinematics,
+                      resolve_setup(options));
   return result;
 }
 
@@ -55,7 +56,7 @@ TEST(OracleFindings, CpSegmentStoppedAtItsFirstStepStillGivesAnAcceptedCertifica
   EXPECT_EQ(run.result.errors.front().code, kErrorCpJointJump);
   EXPECT_EQ(run.result.errors.front().segment, 3);
   const CheckReport report = verified.check();
-  EXPECT_EQ(report.claim, "ERROR");
+  EXPECT_EQ(report.claim, Verdict::kError);
   EXPECT_TRUE(report.accepted) << (report.failures.empty() ? "" : report.failures.front());
 }
 
@@ -74,7 +75,7 @@ TEST(OracleFindings, ZeroMotionPtpSegmentStillGivesAnAcceptedCertificate) {
   const VerificationRun& run = verified.run;
   EXPECT_EQ(run.result.verdict, Verdict::kCollision);
   const CheckReport report = verified.check();
-  EXPECT_EQ(report.claim, "COLLISION");
+  EXPECT_EQ(report.claim, Verdict::kCollision);
   EXPECT_TRUE(report.accepted) << (report.failures.empty() ? "" : report.failures.front());
 }
 
@@ -95,7 +96,7 @@ TEST(OracleFindings, CollisionAtTheStartBeforeAnErrorGivesAnAcceptedCertificate)
   ASSERT_EQ(run.result.errors.size(), 1u);
   EXPECT_EQ(run.result.errors.front().code, 5);
   const CheckReport report = verified.check();
-  EXPECT_EQ(report.claim, "COLLISION");
+  EXPECT_EQ(report.claim, Verdict::kCollision);
   EXPECT_TRUE(report.accepted) << (report.failures.empty() ? "" : report.failures.front());
 }
 
@@ -131,7 +132,7 @@ TEST(OracleFindings, AnUnreachableStretchNextToAJointLimitIsErrorFive) {
   }
   EXPECT_TRUE(motion::solve_within_limits(c.robot, verified.kinematics, line.cp->pose_at(0.24), line.q_start));
   const CheckReport report = verified.check();
-  EXPECT_EQ(report.claim, "ERROR");
+  EXPECT_EQ(report.claim, Verdict::kError);
   EXPECT_TRUE(report.accepted) << (report.failures.empty() ? "" : report.failures.front());
 }
 

@@ -9,7 +9,7 @@
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
-#include "grpvss/geometry/exact_contact.hpp"
+#include "grpvss/exact/exact_contact.hpp"
 #include "support/exact_hull_lp.hpp"
 #include "support/kinematics_reference.hpp"
 #include "support/motion_oracle.hpp"

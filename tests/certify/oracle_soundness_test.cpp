@@ -27,7 +27,7 @@
 #include <fmt/core.h>
 #include <gtest/gtest.h>
 
-#include "grpvss/certify/certificate_checker.hpp"
+#include "grpvss/checker/certificate_checker.hpp"
 #include "grpvss/certify/verifier.hpp"
 #include "grpvss/io/environment_file.hpp"
 #include "grpvss/io/path_file.hpp"
@@ -62,12 +62,12 @@ int cases_per_shard() {
 
 VerificationRun run_mode(const test::OracleCase& c, const motion::KinematicsAccess& kinematics,
                          ResolutionMode mode) {
-  VerifyOptions options;
+  SetupRequest options;
   options.tolerance = c.tolerance;
   options.mode = mode;
   // Bounded time: near-touching steps can shrink without end (ERROR 9, never CLEAR).
-  options.max_probes = 20000;
-  return verify(c.robot, c.environment, c.program, kinematics, options);
+  options.limits.max_probes = 20000;
+  return verify(c.robot, c.environment, c.program, kinematics, resolve_setup(options));
 }
 
 // Oracle clearance / Delta bins of the cases without oracle contact.
@@ -217,7 +217,7 @@ void run_case(const test::OracleCase& c, const std::string& label, Statistics& s
   const CheckReport report =
       check_certificate(c.robot, c.environment, c.program, kinematics, certified.certificate);
   stats.seconds[3] += std::chrono::duration<double>(Clock::now() - t4).count();
-  EXPECT_EQ(report.claim, to_string(verdict));
+  EXPECT_EQ(report.claim, verdict);
   EXPECT_TRUE(report.accepted) << fmt::format("{} failure(s), first: {}", report.failures.size(),
                                               report.failures.empty() ? "" : report.failures.front());
   for (const std::string& failure : report.failures) std::cout << "[oracle-rejected] " << failure << "\n";
@@ -337,7 +337,7 @@ HULL 8
   c.environment = io::parse_environment_file(environment_text, "environment.txt");
   c.program = io::parse_path_file("1\n1\n120.,30.\n", "path.txt", c.robot);
   c.tolerance = 0.1;
-  const auto kinematics = motion::make_kinematics_access(c.robot, motion::select_ik("numeric", c.robot, "robot.txt"));
+  const auto kinematics = motion::make_kinematics_access(c.robot, motion::select_ik({kinematics::IkMethod::kNumeric, {}}, c.robot, "robot.txt"));
   const test::MotionOracle oracle(c.robot, c.environment);
   const test::OraclePathResult truth =
       oracle.sample_path(c.program, kOracleSpacingFraction * c.tolerance, kinematics);

@@ -1,6 +1,6 @@
 // The certified march's proposals (include/grpvss/certify/step_proposal.hpp): slack ratios and
 // the PTP proposal from motion bounds, on hand-made numbers.
-#include "grpvss/certify/step_proposal.hpp"
+#include "certify/step_proposal.hpp"
 
 #include <cmath>
 #include <limits>

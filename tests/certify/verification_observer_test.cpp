@@ -1,7 +1,7 @@
-// VerifyOptions::observers and keep_steps on the IBM 7545 sample: the observer sees exactly the
+// RunHooks::observers and keep_steps on the IBM 7545 sample: the observer sees exactly the
 // steps and certificate steps a kept run holds, in order, and a run that keeps nothing has the
 // same verdict, segments, errors and per-link clearance summaries.
-#include "grpvss/certify/verification_observer.hpp"
+#include "grpvss/evidence/verification_observer.hpp"
 
 #include <algorithm>
 #include <string>
@@ -52,15 +52,16 @@ class Observed : public ::testing::Test {
     robot_ = io::read_robot_file(data("robot.txt"));
     environment_ = io::read_environment_file(data("environment.txt"));
     kinematics_ = motion::make_kinematics_access(
-        robot_, motion::select_ik("auto", robot_, "robot.txt"));
+        robot_, motion::select_ik({}, robot_, "robot.txt"));
   }
   VerificationRun run(const std::string& path_file, Recorder* recorder, bool keep_steps) {
     const PathProgram program = io::read_path_file(data(path_file), robot_);
-    VerifyOptions options;
+    SetupRequest options;
     options.tolerance = 0.5;
-    if (recorder != nullptr) options.observers.push_back(recorder);
-    options.keep_steps = keep_steps;
-    return verify(robot_, environment_, program, kinematics_, options);
+    RunHooks hooks;
+    if (recorder != nullptr) hooks.observers.push_back(recorder);
+    hooks.keep_steps = keep_steps;
+    return verify(robot_, environment_, program, kinematics_, resolve_setup(options), hooks);
   }
   RobotModel robot_;
   Environment environment_;

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "grpvss/certify/certificate_checker.hpp"
+#include "grpvss/checker/certificate_checker.hpp"
 #include "grpvss/certify/verifier.hpp"
 #include "grpvss/io/environment_file.hpp"
 #include "grpvss/io/path_file.hpp"
@@ -22,13 +22,13 @@ class Ibm7545Sample : public ::testing::Test {
     robot_ = io::read_robot_file(data("robot.txt"));
     environment_ = io::read_environment_file(data("environment.txt"));
     program_ = io::read_path_file(data(path_file), robot_);
-    kinematics_ = motion::make_kinematics_access(robot_, motion::select_ik("auto", robot_, "robot.txt"));
+    kinematics_ = motion::make_kinematics_access(robot_, motion::select_ik({}, robot_, "robot.txt"));
   }
   VerificationRun run(ResolutionMode mode, double tolerance = 0.5) {
-    VerifyOptions options;
+    SetupRequest options;
     options.tolerance = tolerance;
     options.mode = mode;
-    return verify(robot_, environment_, program_, kinematics_, options);
+    return verify(robot_, environment_, program_, kinematics_, resolve_setup(options));
   }
   RobotModel robot_;
   Environment environment_;

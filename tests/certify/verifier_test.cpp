@@ -10,7 +10,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "grpvss/certify/certificate_checker.hpp"
+#include "grpvss/checker/certificate_checker.hpp"
 #include "grpvss/io/environment_file.hpp"
 #include "grpvss/io/path_file.hpp"
 #include "grpvss/io/robot_file.hpp"
@@ -73,15 +73,16 @@ Cell make_cell(const std::string& robot_text, const std::string& environment_tex
   cell.environment = io::parse_environment_file(environment_text, "environment.txt");
   cell.program = io::parse_path_file(path_text, "path.txt", cell.robot);
   cell.kinematics = motion::make_kinematics_access(
-      cell.robot, motion::select_ik("numeric", cell.robot, "robot.txt"));
+      cell.robot, motion::select_ik({kinematics::IkMethod::kNumeric, {}}, cell.robot, "robot.txt"));
   return cell;
 }
 
 VerificationRun run(const Cell& cell, double tolerance, ResolutionMode mode) {
-  VerifyOptions options;
+  SetupRequest options;
   options.tolerance = tolerance;
   options.mode = mode;
-  return verify(cell.robot, cell.environment, cell.program, cell.kinematics, options);
+  return verify(cell.robot, cell.environment, cell.program, cell.kinematics,
+                resolve_setup(options));
 }
 
 CheckReport check(const Cell& cell, const Certificate& certificate) {
@@ -102,7 +103,7 @@ TEST(Verifier, ObstacleOnTheSweepIsACollisionWithTheCollidingConfiguration) {
   EXPECT_FALSE(colliding.interference_points.empty());
   const CheckReport report = check(cell, result.certificate);
   EXPECT_TRUE(report.accepted) << (report.failures.empty() ? "" : report.failures.front());
-  EXPECT_EQ(report.claim, "COLLISION");
+  EXPECT_EQ(report.claim, Verdict::kCollision);
 }
 
 TEST(Verifier, ThesisRuleStepsOverAThinPlateThatCertifiedModeCatches) {

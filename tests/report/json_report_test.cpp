@@ -14,7 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "grpvss/report/program_version.hpp"
-#include "grpvss/report/thesis_error_text.hpp"
+#include "report/thesis_error_text.hpp"
 #include "grpvss/report/thesis_output.hpp"
 #include "support/json_structure_check.hpp"
 #include "support/text_files.hpp"

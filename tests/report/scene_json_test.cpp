@@ -47,13 +47,18 @@ certify::VerificationResult result_with_steps(const RobotModel& robot) {
   return result;
 }
 
+// The run's cell (result_with_steps() has tolerance 0.5).
+certify::RobotCell cell_of(const Ibm7545& cell, geometry::OffsetShape shape) {
+  return certify::RobotCell(cell.robot, cell.environment, {0.5, shape});
+}
+
 Eigen::Vector3d vec(const json& v) { return {v[0].get<double>(), v[1].get<double>(), v[2].get<double>()}; }
 
 TEST(SceneJson, HoldsEveryHullObstacleAndStepOfTheIbm7545) {
   const Ibm7545 cell;
   const auto result = result_with_steps(cell.robot);
   const json scene =
-      scene_to_json(result, cell.robot, cell.environment, geometry::OffsetShape::kRhombicuboctahedron);
+      scene_to_json(result, cell_of(cell, geometry::OffsetShape::kRhombicuboctahedron));
   ASSERT_EQ(scene["links"].size(), cell.robot.links.size());
   std::size_t hulls = 0;
   for (std::size_t link = 0; link < cell.robot.links.size(); ++link) {
@@ -71,8 +76,7 @@ TEST(SceneJson, HoldsEveryHullObstacleAndStepOfTheIbm7545) {
 
 TEST(SceneJson, HullVerticesAreInputPointsAndFacesAreClosedSurfaces) {
   const Ibm7545 cell;
-  const json scene = scene_to_json(result_with_steps(cell.robot), cell.robot, cell.environment,
-                                   geometry::OffsetShape::kCube);
+  const json scene = scene_to_json(result_with_steps(cell.robot), cell_of(cell, geometry::OffsetShape::kCube));
   EXPECT_EQ(scene["expansion"]["shape"], "cube");
   const auto check_polytope = [](const json& polytope, const char* key,
                                  const std::vector<Eigen::Vector3d>& input) {
@@ -111,8 +115,7 @@ TEST(SceneJson, HullVerticesAreInputPointsAndFacesAreClosedSurfaces) {
 
 TEST(SceneJson, ExpandedHullContainsEveryRawVertexPushedOutByTheRadius) {
   const Ibm7545 cell;
-  const json scene = scene_to_json(result_with_steps(cell.robot), cell.robot, cell.environment,
-                                   geometry::OffsetShape::kRhombicuboctahedron);
+  const json scene = scene_to_json(result_with_steps(cell.robot), cell_of(cell, geometry::OffsetShape::kRhombicuboctahedron));
   const double radius = scene["expansion"]["radius"].get<double>();
   std::mt19937 random(7);
   std::normal_distribution<double> normal;
@@ -141,7 +144,7 @@ TEST(SceneJson, StepPosesAreRowMajorForwardKinematicsOfTheStepJointValues) {
   const Ibm7545 cell;
   const auto result = result_with_steps(cell.robot);
   const json scene =
-      scene_to_json(result, cell.robot, cell.environment, geometry::OffsetShape::kCube);
+      scene_to_json(result, cell_of(cell, geometry::OffsetShape::kCube));
   const auto expect_poses = [&](const json& poses, const Eigen::VectorXd& q) {
     ASSERT_EQ(poses.size(), cell.robot.links.size());
     for (std::size_t link = 0; link < poses.size(); ++link) {
@@ -168,7 +171,7 @@ TEST(SceneJson, IsDeterministicAndRejectsWrongJointCounts) {
   const Ibm7545 cell;
   auto result = result_with_steps(cell.robot);
   const auto render = [&] {
-    return scene_to_json(result, cell.robot, cell.environment, geometry::OffsetShape::kCube).dump();
+    return scene_to_json(result, cell_of(cell, geometry::OffsetShape::kCube)).dump();
   };
   EXPECT_EQ(render(), render());
   result.steps[1].q.resize(2);

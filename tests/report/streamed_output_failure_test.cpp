@@ -2,6 +2,7 @@
 // and no temporary, an existing output is refused and left byte-identical, pieces written to an
 // AtomicOutputFile appear only at commit().
 #include <filesystem>
+#include <optional>
 #include <fstream>
 #include <stdexcept>
 #include <string>
@@ -48,9 +49,12 @@ class StreamFailure : public ::testing::Test {
     environment_ = io::read_environment_file(data("environment.txt"));
     program_ = io::read_path_file(data("path.txt"), robot_);
     kinematics_ = motion::make_kinematics_access(
-        robot_, motion::select_ik("auto", robot_, "robot.txt"));
-    options_.tolerance = 0.5;
-    options_.keep_steps = false;
+        robot_, motion::select_ik({}, robot_, "robot.txt"));
+    certify::SetupRequest request;
+    request.tolerance = 0.5;
+    setup_ = certify::resolve_setup(request);
+    cell_.emplace(robot_, environment_, setup_.cell);
+    hooks_.keep_steps = false;
     directory_ = test::make_temporary_directory("stream-failure");
   }
   void TearDown() override { std::filesystem::remove_all(directory_); }
@@ -59,7 +63,9 @@ class StreamFailure : public ::testing::Test {
   Environment environment_;
   PathProgram program_;
   motion::KinematicsAccess kinematics_;
-  certify::VerifyOptions options_;
+  certify::VerificationSetup setup_;
+  std::optional<certify::RobotCell> cell_;
+  certify::RunHooks hooks_;
   std::string directory_;
 };
 
@@ -70,8 +76,8 @@ TEST_F(StreamFailure, ARunThatThrowsHalfWayLeavesNoFileAndNoTemporary) {
     JsonReportStream json(robot_, {directory_ + "/report.json", false, directory_ + "/report.json", false});
     CertificateStream certificate(directory_ + "/certificate.json", false);
     // The failing observer comes last: the others have already written steps.
-    options_.observers = {&thesis, &json, &certificate, &failing};
-    EXPECT_THROW(certify::verify(robot_, environment_, program_, kinematics_, options_),
+    hooks_.observers = {&thesis, &json, &certificate, &failing};
+    EXPECT_THROW(certify::verify(*cell_, program_, kinematics_, setup_.run, hooks_),
                  std::runtime_error);
   }
   EXPECT_TRUE(test::directory_entries(directory_).empty());
@@ -84,13 +90,11 @@ TEST_F(StreamFailure, AnExistingOutputIsRefusedAtFinishAndLeftUntouched) {
   ThesisOutputStream thesis(directory_ + "/out.txt", false, joint_types_of(robot_));
   JsonReportStream json(robot_, {directory_ + "/report.json", false, directory_ + "/report.json", false});
   CertificateStream certificate(directory_ + "/certificate.json", false);
-  options_.observers = {&thesis, &json, &certificate};
+  hooks_.observers = {&thesis, &json, &certificate};
   const certify::VerificationRun run =
-      certify::verify(robot_, environment_, program_, kinematics_, options_);
+      certify::verify(*cell_, program_, kinematics_, setup_.run, hooks_);
   EXPECT_THROW(thesis.finish(run.result), OutputExistsError);
-  EXPECT_THROW(json.finish(run.result, environment_, geometry::OffsetShape::kRhombicuboctahedron,
-                           {}, "now"),
-               OutputExistsError);
+  EXPECT_THROW(json.finish(run.result, *cell_, {}, "now"), OutputExistsError);
   EXPECT_THROW(certificate.finish(run.certificate, nlohmann::json::object()), OutputExistsError);
   for (const char* name : {"out.txt", "report.json", "certificate.json"}) {
     EXPECT_EQ(test::read_text_file(directory_ + "/" + name), "the user's file\n") << name;

@@ -48,39 +48,41 @@ class StreamedOutputs : public ::testing::TestWithParam<Case> {
     environment_ = io::read_environment_file(data("environment.txt"));
     program_ = io::read_path_file(data(GetParam().path_file), robot_);
     kinematics_ = motion::make_kinematics_access(
-        robot_, motion::select_ik("auto", robot_, "robot.txt"));
-    options_.tolerance = GetParam().tolerance;
-    options_.mode = GetParam().mode;
+        robot_, motion::select_ik({}, robot_, "robot.txt"));
+    certify::SetupRequest request;
+    request.tolerance = GetParam().tolerance;
+    request.mode = GetParam().mode;
+    setup_ = certify::resolve_setup(request);
+    cell_.emplace(robot_, environment_, setup_.cell);
     directory_ = test::make_temporary_directory("streamed");
   }
   void TearDown() override { std::filesystem::remove_all(directory_); }
 
   bool certified() const { return GetParam().mode == certify::ResolutionMode::kCertified; }
-  geometry::OffsetShape shape() const { return default_offset_shape(GetParam().mode); }
 
   RobotModel robot_;
   Environment environment_;
   PathProgram program_;
   motion::KinematicsAccess kinematics_;
-  certify::VerifyOptions options_;
+  certify::VerificationSetup setup_;
+  std::optional<certify::RobotCell> cell_;
   std::string directory_;
 };
 
 TEST_P(StreamedOutputs, AreByteIdenticalToTheWholeDocumentWriters) {
   // Reference: every step kept, each document built whole.
-  const certify::VerificationRun kept =
-      certify::verify(robot_, environment_, program_, kinematics_, options_);
+  const certify::VerificationRun kept = certify::verify(*cell_, program_, kinematics_, setup_.run);
   ASSERT_FALSE(kept.result.steps.empty());
   const std::string thesis_expected = render_thesis_output(kept.result, robot_);
   nlohmann::json report = report_to_json(kept.result, robot_, kDigests, kGeneratedAt);
-  report["scene"] = scene_to_json(kept.result, robot_, environment_, shape());
+  report["scene"] = scene_to_json(kept.result, *cell_);
   const std::string report_expected = render_json_report(report);
 
   // Streamed: nothing kept.
   ThesisOutputStream thesis(directory_ + "/out.txt", false, joint_types_of(robot_));
   JsonReportStream json(robot_, {directory_ + "/report.json", false, directory_ + "/report.json", false});
   std::optional<CertificateStream> certificate;
-  certify::VerifyOptions streaming = options_;
+  certify::RunHooks streaming;
   streaming.keep_steps = false;
   streaming.observers = {&thesis, &json};
   if (certified()) {
@@ -88,7 +90,7 @@ TEST_P(StreamedOutputs, AreByteIdenticalToTheWholeDocumentWriters) {
     streaming.observers.push_back(&*certificate);
   }
   const certify::VerificationRun run =
-      certify::verify(robot_, environment_, program_, kinematics_, streaming);
+      certify::verify(*cell_, program_, kinematics_, setup_.run, streaming);
   EXPECT_TRUE(run.result.steps.empty());
   for (const auto& segment : run.certificate.segments) EXPECT_TRUE(segment.steps.empty());
   EXPECT_EQ(run.result.verdict, kept.result.verdict);
@@ -96,7 +98,7 @@ TEST_P(StreamedOutputs, AreByteIdenticalToTheWholeDocumentWriters) {
   EXPECT_EQ(run.result.segments.size(), kept.result.segments.size());
 
   thesis.finish(run.result);
-  json.finish(run.result, environment_, shape(), kDigests, kGeneratedAt);
+  json.finish(run.result, *cell_, kDigests, kGeneratedAt);
   EXPECT_EQ(test::read_text_file(directory_ + "/out.txt"), thesis_expected);
   EXPECT_EQ(test::read_text_file(directory_ + "/report.json"), report_expected);
   if (certified()) {

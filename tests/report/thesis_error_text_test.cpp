@@ -1,4 +1,4 @@
-#include "grpvss/report/thesis_error_text.hpp"
+#include "report/thesis_error_text.hpp"
 
 #include <regex>
 #include <stdexcept>

@@ -11,7 +11,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
-#include "grpvss/geometry/exact_contact.hpp"
+#include "grpvss/exact/exact_contact.hpp"
 
 namespace grpvss::testing {
 

@@ -14,10 +14,12 @@ std::string data(const std::string& name) {
 
 Ibm7545Run run(Ibm7545Run inputs) {
   inputs.kinematics = motion::make_kinematics_access(
-      inputs.robot, motion::select_ik("auto", inputs.robot, "robot.txt"));
-  inputs.options.tolerance = kIbm7545Tolerance;
+      inputs.robot, motion::select_ik({}, inputs.robot, "robot.txt"));
+  certify::SetupRequest request;
+  request.tolerance = kIbm7545Tolerance;
+  inputs.setup = certify::resolve_setup(request);
   inputs.run = certify::verify(inputs.robot, inputs.environment, inputs.program,
-                               inputs.kinematics, inputs.options);
+                               inputs.kinematics, inputs.setup);
   return inputs;
 }
 

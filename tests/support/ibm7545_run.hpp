@@ -19,7 +19,7 @@ struct Ibm7545Run {
   Environment environment;
   PathProgram program;
   motion::KinematicsAccess kinematics;
-  certify::VerifyOptions options;
+  certify::VerificationSetup setup;  ///< certified, tolerance kIbm7545Tolerance
   certify::VerificationRun run;
 };
 

@@ -235,7 +235,7 @@ OracleCase random_ptp_case(std::uint64_t seed) {
 OracleCase random_scara_cp_case(std::uint64_t seed) {
   std::mt19937_64 rng(seed);
   OracleCase c;
-  c.ik = "ibm7545";
+  c.ik = {kinematics::IkMethod::kIbm7545, {}};
   RobotModel& robot = c.robot;
   robot.name = "random SCARA";
   auto revolute = [&](double alpha, double a, double d, double lo, double hi) {

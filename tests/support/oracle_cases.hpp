@@ -19,6 +19,7 @@
 #include <cstdint>
 #include <string>
 
+#include "grpvss/kinematics/inverse_kinematics.hpp"
 #include "grpvss/model/environment.hpp"
 #include "grpvss/model/path_program.hpp"
 #include "grpvss/model/robot_model.hpp"
@@ -30,7 +31,7 @@ struct OracleCase {
   Environment environment;
   PathProgram program;
   double tolerance = 0.5;
-  std::string ik = "numeric";  ///< name for motion::select_ik
+  kinematics::IkChoice ik{kinematics::IkMethod::kNumeric, {}};  ///< for motion::select_ik
 };
 
 OracleCase random_ptp_case(std::uint64_t seed);

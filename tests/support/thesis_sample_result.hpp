@@ -2,7 +2,7 @@
 // A VerificationResult built by hand to mirror every step the thesis prints in its output
 // sample (Appendix A.3), in library units (radians for revolute joints).
 
-#include "grpvss/certify/verification_result.hpp"
+#include "grpvss/evidence/verification_result.hpp"
 #include "grpvss/model/robot_model.hpp"
 
 namespace grpvss::test {

@@ -37,9 +37,6 @@ class HullRadiusTable {
   /// prismatic one, 0 for joints after the link (joint 1-based).
   double motion_bound_weight(int link, int hull, int joint) const;
 
-  /// Max over the link's hulls of hull_motion_bound.
-  double link_motion_bound(int link, const Eigen::VectorXd& dq) const;
-
   /// The type of joint `joint` (1-based).
   JointType joint_type(int joint) const { return joint_types_.at(joint - 1); }
 

@@ -10,21 +10,17 @@
 #include <Eigen/Core>
 
 #include "grpvss/certify/motion_bound.hpp"
+#include "grpvss/evidence/setup.hpp"
 #include "grpvss/geometry/broadphase.hpp"
 #include "grpvss/geometry/centroid_cull.hpp"
-#include "grpvss/geometry/convex_polytope.hpp"
+#include "grpvss/exact/convex_polytope.hpp"
 #include "grpvss/geometry/hull_skeleton.hpp"
-#include "grpvss/geometry/minkowski_offset.hpp"
+#include "grpvss/exact/minkowski_offset.hpp"
 #include "grpvss/kinematics/kinematic_chain.hpp"
 #include "grpvss/model/environment.hpp"
 #include "grpvss/model/robot_model.hpp"
 
 namespace grpvss::certify {
-
-struct CellOptions {
-  double tolerance = 0.0;  ///< Delta > 0
-  geometry::OffsetShape offset_shape = geometry::OffsetShape::kRhombicuboctahedron;
-};
 
 /// \brief One link hull, in its link frame L.
 struct LinkHull {
@@ -36,14 +32,18 @@ struct LinkHull {
   geometry::CertifiedSphere expanded_sphere_L;
 };
 
-/// \brief The immutable verification context (model side of the model/workspace split).
+/// \brief The immutable verification context (model side of the model/workspace split). It
+/// refers to the robot and the environment it was built from: both must outlive it.
 class RobotCell {
  public:
   /// \throws InputError-free: inputs are already validated; throws geometry::DegenerateHullError
   ///         only for hulls the readers let through (never for valid files).
-  RobotCell(const RobotModel& robot, const Environment& environment, const CellOptions& options);
+  RobotCell(const RobotModel& robot, const Environment& environment, const CellSettings& settings);
 
   const RobotModel& robot() const { return *robot_; }
+  const Environment& environment() const { return *environment_; }
+  /// What the cell was built for: the run reads the tolerance and offset shape here only.
+  const CellSettings& settings() const { return settings_; }
   const kinematics::KinematicChain& chain() const { return chain_; }
   const std::vector<LinkHull>& hulls() const { return hulls_; }
   /// Exact hull of hull i's expanded_L (its input indices are positions in expanded_L):
@@ -68,8 +68,8 @@ class RobotCell {
   }
   const geometry::StaticObstacleIndex& obstacle_index() const { return obstacle_index_; }
   const HullRadiusTable& radii() const { return radii_; }
-  double tolerance() const { return options_.tolerance; }
-  geometry::OffsetShape offset_shape() const { return options_.offset_shape; }
+  double tolerance() const { return settings_.tolerance; }
+  geometry::OffsetShape offset_shape() const { return settings_.offset_shape; }
   /// Strict upper bound on |computed placed point - exact placed point| for every point the
   /// verifier places (hull and offset vertices, sphere centres).
   /// proof: proofs/fk-rounding.md#fk-rounding
@@ -80,7 +80,8 @@ class RobotCell {
 
  private:
   const RobotModel* robot_;
-  CellOptions options_;
+  const Environment* environment_;
+  CellSettings settings_;
   kinematics::KinematicChain chain_;
   HullRadiusTable radii_;
   double placement_error_ = 0.0;

@@ -10,8 +10,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "grpvss/certify/certificate.hpp"
-#include "grpvss/certify/verification_observer.hpp"
+#include "grpvss/evidence/certificate.hpp"
+#include "grpvss/evidence/verification_observer.hpp"
 #include "grpvss/report/spill_file.hpp"
 #include "grpvss/report/streamed_json.hpp"
 

@@ -16,7 +16,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 
-#include "grpvss/certify/verification_result.hpp"
+#include "grpvss/evidence/verification_result.hpp"
 #include "grpvss/model/robot_model.hpp"
 #include "grpvss/report/input_digests.hpp"
 

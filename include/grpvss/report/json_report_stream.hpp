@@ -16,9 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "grpvss/certify/verification_observer.hpp"
-#include "grpvss/geometry/minkowski_offset.hpp"
-#include "grpvss/model/environment.hpp"
+#include "grpvss/evidence/verification_observer.hpp"
 #include "grpvss/model/robot_model.hpp"
 #include "grpvss/report/input_digests.hpp"
 #include "grpvss/report/scene_json.hpp"
@@ -45,12 +43,11 @@ class JsonReportStream : public certify::VerificationObserver {
   void on_step(const certify::StepRecord& step) override;
 
   /// Completes the report of the finished run `result` (its `steps` are not read) with its
-  /// scene (`environment`, `offset_shape` as for scene_to_json()); writes and publishes the
-  /// report file when there is one.
+  /// scene (drawn from `cell`, the cell the run used, as scene_to_json() does); writes and
+  /// publishes the report file when there is one.
   /// \throws OutputExistsError, InputError as write_file_atomically().
-  void finish(const certify::VerificationResult& result, const Environment& environment,
-              geometry::OffsetShape offset_shape, const InputDigests& digests,
-              const std::string& generated_at);
+  void finish(const certify::VerificationResult& result, const certify::RobotCell& cell,
+              const InputDigests& digests, const std::string& generated_at);
 
   /// After finish() (whose `result` must still exist), with Outputs::script_safe: appends the
   /// report to `output` as the viewer page embeds it (compact dump, invalid UTF-8 replaced,

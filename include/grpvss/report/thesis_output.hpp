@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "grpvss/certify/verification_observer.hpp"
-#include "grpvss/certify/verification_result.hpp"
+#include "grpvss/evidence/verification_observer.hpp"
+#include "grpvss/evidence/verification_result.hpp"
 #include "grpvss/model/robot_model.hpp"
 #include "grpvss/report/spill_file.hpp"
 

@@ -14,15 +14,11 @@
 
 namespace grpvss::report {
 
-/// \brief What the report shows besides the trajectory itself.
+/// \brief What the report shows besides the trajectory and its motion model.
 struct TrajectoryReportSettings {
   std::string robot_file;
   std::string path_file;
-  std::string timing;         ///< "independent" or "synchronized"
-  std::string profile_table;  ///< empty: ideal trapezoids
   std::string ik_name;
-  double cp_speed = 1.0;
-  double cp_spacing = 0.5;
   std::vector<double> times;  ///< path times at which to print the joints
 };
 

@@ -52,10 +52,9 @@ report::SvgView svg_view(const ViewSettings& view) {
 
 AnimationFiles write_animation(const AnimationRequest& request, const std::string& base,
                                const HtmlRenderer& render_html) {
-  nlohmann::json report = report::report_to_json(request.result, request.robot, request.digests);
-  // The session verifies with the default offset shape of the run's mode.
-  report["scene"] = report::scene_to_json(request.result, request.robot, request.environment,
-                                          report::default_offset_shape(request.result.mode));
+  nlohmann::json report =
+      report::report_to_json(request.result, request.cell.robot(), request.digests);
+  report["scene"] = report::scene_to_json(request.result, request.cell);
   const std::string name = free_base(base);
   AnimationFiles files;
   files.json = name + ".json";

@@ -13,9 +13,8 @@
 
 #include <nlohmann/json_fwd.hpp>
 
-#include "grpvss/certify/verification_result.hpp"
-#include "grpvss/model/environment.hpp"
-#include "grpvss/model/robot_model.hpp"
+#include "grpvss/certify/robot_cell.hpp"
+#include "grpvss/evidence/verification_result.hpp"
 #include "grpvss/report/input_digests.hpp"
 #include "interactive/view_settings.hpp"
 
@@ -28,8 +27,7 @@ using HtmlRenderer = std::function<std::string(const nlohmann::json& report,
 
 struct AnimationRequest {
   const certify::VerificationResult& result;
-  const RobotModel& robot;
-  const Environment& environment;
+  const certify::RobotCell& cell;  ///< the cell the run used
   const report::InputDigests& digests;
   const ViewSettings& view;
 };

@@ -9,6 +9,7 @@
 #include "grpvss/common/input_error.hpp"
 #include "grpvss/io/environment_file.hpp"
 #include "grpvss/io/path_file.hpp"
+#include "grpvss/io/profile_table_file.hpp"
 #include "grpvss/io/robot_file.hpp"
 #include "grpvss/io/units.hpp"
 #include "grpvss/motion/kinematics_adapter.hpp"
@@ -119,8 +120,9 @@ void Session::choose_robot() {
     }
     try {
       RobotModel robot = io::read_robot_file(file);
-      ik_ = motion::select_ik("auto", robot, file);
+      ik_ = motion::select_ik({}, robot, file);
       robot_ = std::move(robot);
+      cell_.reset();
       kinematics_ = motion::make_kinematics_access(*robot_, ik_);
       robot_file_ = file;
       out_ << fmt::format("ROBOT FILE {}: {} JOINTS, IK {}\n", file, robot_->joint_count(),
@@ -149,7 +151,7 @@ void Session::choose_trajectory_way() {
     }
     const std::string file = prompter_.ask_name({"ENTER THE FILE NAME OF THE MOTION-TIME TABLE"});
     try {
-      auto table = std::make_shared<const motion::ProfileTable>(motion::ProfileTable::read(file));
+      auto table = std::make_shared<const motion::ProfileTable>(io::read_profile_table_file(file));
       if (table->joint_count() != robot_->joint_count()) {
         throw InputError(file, table->header_line(),
                          fmt::format("joints {} (the robot's joint count)", robot_->joint_count()),
@@ -179,6 +181,7 @@ void Session::choose_environment() {
     }
     try {
       environment_ = io::read_environment_file(file);
+      cell_.reset();
       environment_file_ = file;
       out_ << fmt::format("ENVIRONMENT FILE {}: {} OBSTACLES\n", file,
                           environment_->obstacles.size());
@@ -206,7 +209,19 @@ void Session::choose_tolerance() {
         }
         return (*numbers)[0];
       });
+  if (cell_ && cell_->cell.tolerance() != tolerance_) cell_.reset();
   out_ << fmt::format("THE TOLERANCE VALUE = {:.2f}\n", tolerance_);
+}
+
+std::shared_ptr<const SessionCell> Session::current_cell() {
+  if (!cell_) {
+    // The session always verifies in certified mode with its default offset shape.
+    certify::SetupRequest request;
+    request.tolerance = tolerance_;
+    cell_ = std::make_shared<const SessionCell>(*robot_, *environment_,
+                                                certify::resolve_setup(request).cell);
+  }
+  return cell_;
 }
 
 void Session::show_configuration() {
@@ -262,13 +277,14 @@ void Session::perform_motion() {
   const std::string results_file = choose_results_file();
 
   out_ << "PROCESSING\n" << std::flush;
-  certify::VerifyOptions options;
-  options.tolerance = tolerance_;
-  options.trajectory.table = profile_table_;
-  options.path_label = label;
+  certify::SetupRequest request;
+  request.tolerance = tolerance_;
+  request.motion.table = profile_table_;
+  request.path_label = label;
+  const certify::RunSettings settings = certify::resolve_setup(request).run;
   try {
-    certify::VerificationRun run =
-        certify::verify(*robot_, *environment_, program, kinematics_, options);
+    const std::shared_ptr<const SessionCell> cell = current_cell();
+    certify::VerificationRun run = certify::verify(cell->cell, program, kinematics_, settings);
     ++motions_processed_;
     out_ << (report::thesis_reports_collision(run.result) ? "COLLISIONS DETECTED IN THIS PATH\n"
                                                           : "NO COLLISION DETECTED IN THIS PATH\n");
@@ -289,7 +305,7 @@ void Session::perform_motion() {
         }
       }
     }
-    last_motion_ = ProcessedMotion{std::move(run.result), results_file, ""};
+    last_motion_ = ProcessedMotion{std::move(run.result), cell, results_file, ""};
     last_animation_base_ =
         !results_file.empty()
             ? results_file
@@ -411,7 +427,7 @@ bool Session::type_world_target(TypedSegment& segment, const std::vector<TypedSe
   if (segment.kind == 2) candidate.back().velocities.assign(robot_->joint_count(), 1.0);
   const int number = static_cast<int>(candidate.size());
   try {
-    motion::TrajectoryOptions options;
+    motion::MotionModel options;
     options.table = profile_table_;
     const motion::Trajectory plan =
         motion::Trajectory::plan(*robot_, typed_program(candidate, *robot_), kinematics_, options);
@@ -489,7 +505,7 @@ void Session::animate() {
                                            "IF CONTINUOUS, ENTER ANY CHARACTER OTHER THAN 1"});
   view_.stepping = image == "1" || image == "1," || image == "1.";
   prompter_.accept();
-  const AnimationRequest request{last_motion_->result, *robot_, *environment_, last_digests_,
+  const AnimationRequest request{last_motion_->result, last_motion_->cell->cell, last_digests_,
                                  view_};
   try {
     const AnimationFiles files =

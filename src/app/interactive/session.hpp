@@ -16,7 +16,8 @@
 #include <string>
 #include <vector>
 
-#include "grpvss/certify/verification_result.hpp"
+#include "grpvss/certify/robot_cell.hpp"
+#include "grpvss/evidence/verification_result.hpp"
 #include "grpvss/kinematics/inverse_kinematics.hpp"
 #include "grpvss/model/environment.hpp"
 #include "grpvss/model/path_program.hpp"
@@ -52,9 +53,23 @@ enum class SessionEnd {
 /// 0 for kExitChosen and kEndOfInput, 2 for kTooManyInvalidAnswers.
 int exit_code(SessionEnd end);
 
-/// What the last processed motion produced (for the caller and the tests).
+/// The cell motions are verified in, with the robot and environment it refers to (a later
+/// choice of robot or environment builds a new one; a processed motion keeps its own).
+struct SessionCell {
+  SessionCell(RobotModel robot_model, Environment cell_environment,
+              const certify::CellSettings& settings)
+      : robot(std::move(robot_model)),
+        environment(std::move(cell_environment)),
+        cell(robot, environment, settings) {}
+  RobotModel robot;
+  Environment environment;
+  certify::RobotCell cell;
+};
+
+/// What the last processed motion produced.
 struct ProcessedMotion {
   certify::VerificationResult result;
+  std::shared_ptr<const SessionCell> cell;  ///< the cell it was verified in
   std::string results_file;    ///< the thesis output file, empty when not stored
   std::string animation_file;  ///< the HTML animation, else the JSON report, last written
 };
@@ -67,7 +82,6 @@ class Session {
   SessionEnd run();
 
   const ViewSettings& view() const { return view_; }
-  const std::optional<ProcessedMotion>& last_motion() const { return last_motion_; }
   int motions_processed() const { return motions_processed_; }
 
  private:
@@ -82,6 +96,8 @@ class Session {
   void show_configuration();
   void change_view();
   void perform_motion();
+  /// The cell for the current robot, environment and tolerance (built once for all of them).
+  std::shared_ptr<const SessionCell> current_cell();
   bool choose_path(PathProgram& program, std::string& label, report::InputFileDigest& digest,
                    std::string& typed_text);
   std::vector<TypedSegment> type_path();
@@ -105,6 +121,7 @@ class Session {
   std::optional<Environment> environment_;
   std::string environment_file_;
   double tolerance_ = 0.0;
+  std::shared_ptr<const SessionCell> cell_;  ///< reset whenever one of its inputs changes
   ViewSettings view_;
 
   std::optional<ProcessedMotion> last_motion_;

@@ -9,7 +9,7 @@
 namespace grpvss::app {
 namespace {
 
-// Also without the steps (VerifyOptions::keep_steps false): each segment records its last one.
+// Also without the steps (RunHooks::keep_steps false): each segment records its last one.
 int last_step_index(const certify::VerificationResult& result) {
   if (!result.steps.empty()) return result.steps.back().index;
   int last = 0;

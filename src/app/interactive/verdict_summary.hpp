@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "grpvss/certify/verification_result.hpp"
+#include "grpvss/evidence/verification_result.hpp"
 
 namespace grpvss::app {
 

@@ -1,4 +1,4 @@
-#include "grpvss/certify/certificate_file.hpp"
+#include "grpvss/evidence/certificate_file.hpp"
 
 #include <fstream>
 #include <vector>

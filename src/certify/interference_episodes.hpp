@@ -6,9 +6,9 @@
 #include <tuple>
 #include <vector>
 
-#include "grpvss/certify/cell_probe.hpp"
+#include "cell_probe.hpp"
 #include "grpvss/certify/robot_cell.hpp"
-#include "grpvss/certify/verification_result.hpp"
+#include "grpvss/evidence/verification_result.hpp"
 
 namespace grpvss::certify {
 

@@ -5,22 +5,20 @@
 /// a radius r_h such that the open ball of radius r_h around every point of the TRUE
 /// (exactly placed) hull is free of obstacles. Every proof is kept as evidence.
 
+#include <limits>
 #include <optional>
 #include <vector>
 
 #include <Eigen/Core>
 
 #include "grpvss/certify/robot_cell.hpp"
-#include "grpvss/geometry/convex_polytope.hpp"
-#include "grpvss/certify/verification_result.hpp"
+#include "grpvss/exact/convex_polytope.hpp"
+#include "grpvss/evidence/certificate.hpp"
+#include "grpvss/evidence/verification_result.hpp"
 #include "grpvss/geometry/separation_witness.hpp"
 #include "grpvss/kinematics/forward_kinematics.hpp"
 
 namespace grpvss::certify {
-
-/// The largest radius the probe reports (obstacle-free surroundings). The checker accepts it
-/// without evidence only when the environment has no obstacle at all.
-constexpr double kUnboundedRadius = 1e9;
 
 /// \brief The proof about one (link hull, obstacle) pair at one configuration.
 struct PairEvidence {
@@ -82,7 +80,26 @@ class CellProbe {
   static constexpr int kBroadphaseThreshold = 16;
 
  private:
+  /// One hull's probe in progress.
+  struct HullProbe {
+    int index = 0;
+    const LinkHull& hull;
+    const Eigen::Isometry3d& X_WL;
+    Eigen::Vector3d center_W = Eigen::Vector3d::Zero();  ///< of the placed offset's sphere
+    double radius_W = 0.0;
+    bool expanded_placed = false;  ///< placed_expanded_ holds this hull's placed offset
+    bool raw_placed = false;       ///< placed_raw_ holds this hull's placed raw hull
+    double smallest_clearance = std::numeric_limits<double>::infinity();
+  };
   void probe_hull(int hull_index, bool with_points, ProbeResult& out);
+  void collect_candidates(HullProbe& hull, HullState& state);
+  void order_candidates(HullProbe& hull);
+  void decide_expanded(HullProbe& hull, int obstacle, double gap_estimate, PairEvidence& evidence);
+  void record_clearance(HullProbe& hull, HullState& state, const PairEvidence& evidence,
+                        ProbeResult& out);
+  void decide_raw(HullProbe& hull, int obstacle, HullState& state, ProbeResult& out);
+  void keep_unmoved_hull(const HullProbe& hull, const HullState& state,
+                         std::size_t evidence_before, const ProbeResult& out);
   /// Appends the points of the offset of hull `hull_index` with obstacle `obstacle`, computed
   /// in the link frame (the offset's exact hull is prebuilt there; the obstacle is placed) and
   /// mapped to the world frame; the world-frame placed offset (placed_expanded_, hulled once
@@ -116,10 +133,5 @@ class CellProbe {
   std::vector<int> climb_hints_;  ///< [hull * obstacles + obstacle]: GJK's last support of A
   std::vector<UnmovedHull> unmoved_hulls_;  ///< [hull]
 };
-
-/// Places link-frame points with the pose X_WL exactly as forward kinematics places hull
-/// vertices (the FK rounding bound covers this expression).
-void place_points(const Eigen::Isometry3d& X_WL, const std::vector<Eigen::Vector3d>& points_L,
-                  std::vector<Eigen::Vector3d>& points_W);
 
 }  // namespace grpvss::certify

@@ -15,7 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "grpvss/certify/certificate.hpp"
+#include "grpvss/evidence/certificate.hpp"
 
 namespace grpvss::certify {
 

@@ -6,6 +6,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <Eigen/Core>
@@ -160,6 +161,8 @@ struct VerificationResult {
 
 const char* to_string(ResolutionMode mode);
 const char* to_string(Verdict verdict);
+std::optional<ResolutionMode> resolution_mode_from_string(std::string_view text);
+std::optional<Verdict> verdict_from_string(std::string_view text);
 const char* to_string(GoverningTerm term);
 
 }  // namespace grpvss::certify

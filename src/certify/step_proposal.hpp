@@ -9,7 +9,7 @@
 
 #include <Eigen/Core>
 
-#include "grpvss/certify/certificate.hpp"
+#include "grpvss/evidence/certificate.hpp"
 
 namespace grpvss::certify {
 

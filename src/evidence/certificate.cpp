@@ -1,4 +1,4 @@
-#include "grpvss/certify/certificate.hpp"
+#include "grpvss/evidence/certificate.hpp"
 
 #include <cmath>
 #include <cstdint>
@@ -57,6 +57,29 @@ T field(const json& object, const char* key, const std::string& where, const std
   } catch (const json::exception&) {
     throw InputError(file, 0, "field '" + std::string(key) + "' in " + where + " of the right type");
   }
+}
+
+// A field whose text names an enumerator: `parse` returns nullopt for an unknown name.
+template <typename Parse>
+auto named_field(const json& object, const char* key, Parse parse, const char* expected,
+                 const std::string& file) {
+  const auto text = field<std::string>(object, key, "the certificate", file);
+  const auto value = parse(text);
+  if (!value) throw InputError(file, 0, std::string(key) + " " + expected, "'" + text + "'");
+  return *value;
+}
+
+// The "inputs" object: name -> text. A value that is not a string is kept as "" (it then
+// matches no digest, and the checker names the file that differs).
+std::map<std::string, std::string> input_names(const json& document, const std::string& file) {
+  std::map<std::string, std::string> inputs;
+  if (!document.contains("inputs")) return inputs;
+  const json& object = document.at("inputs");
+  if (!object.is_object()) throw InputError(file, 0, "an object for 'inputs'");
+  for (const auto& [name, value] : object.items()) {
+    inputs[name] = value.is_string() ? value.get<std::string>() : std::string();
+  }
+  return inputs;
 }
 
 double margin_field(const json& object, const std::string& where, const std::string& file) {
@@ -119,7 +142,7 @@ json certificate_segment_to_json(const SegmentCertificate& segment) {
   json steps = json::array();
   for (const StepCertificate& step : segment.steps) steps.push_back(certificate_step_to_json(step));
   return {{"number", segment.number},
-          {"kind", segment.kind},
+          {"kind", motion::to_string(segment.kind)},
           {"parameter_end", segment.parameter_end},
           {"steps", steps}};
 }
@@ -128,15 +151,15 @@ json certificate_to_json(const Certificate& certificate) {
   json document;
   document["format"] = "grpvss-certificate";
   document["version"] = 1;
-  document["mode"] = certificate.mode;
+  document["mode"] = to_string(certificate.mode);
   document["tolerance"] = certificate.tolerance;
-  document["offset_shape"] = certificate.offset_shape;
-  document["timing"] = certificate.timing;
+  document["offset_shape"] = geometry::to_string(certificate.offset_shape);
+  document["timing"] = motion::to_string(certificate.timing);
   document["cp_speed"] = certificate.cp_speed;
   document["cp_deviation_fraction"] = certificate.cp_deviation_fraction;
   document["placement_error"] = certificate.placement_error;
   document["expansion_radius"] = certificate.expansion_radius;
-  document["claim"] = certificate.claim;
+  document["claim"] = to_string(certificate.claim);
   document["collision_step"] = certificate.collision_step;
   json errors = json::array();
   for (const PathError& error : certificate.errors) {
@@ -165,10 +188,13 @@ Certificate certificate_header_from_json(const json& document, const std::string
   }
   Certificate certificate;
   const std::string top = "the certificate";
-  certificate.mode = field<std::string>(document, "mode", top, file);
+  certificate.mode = named_field(document, "mode", resolution_mode_from_string,
+                                 "certified or thesis", file);
   certificate.tolerance = field<double>(document, "tolerance", top, file);
-  certificate.offset_shape = field<std::string>(document, "offset_shape", top, file);
-  certificate.timing = field<std::string>(document, "timing", top, file);
+  certificate.offset_shape = named_field(document, "offset_shape", geometry::offset_shape_from_string,
+                                         "cube or rhombicuboctahedron", file);
+  certificate.timing = named_field(document, "timing", motion::ptp_timing_from_string,
+                                   "independent or synchronized", file);
   certificate.cp_speed = field<double>(document, "cp_speed", top, file);
   // The checker replays the trajectory with it: found by fuzzing (a zero speed threw).
   if (!(certificate.cp_speed > 0.0) || !std::isfinite(certificate.cp_speed)) {
@@ -177,7 +203,8 @@ Certificate certificate_header_from_json(const json& document, const std::string
   certificate.cp_deviation_fraction = field<double>(document, "cp_deviation_fraction", top, file);
   certificate.placement_error = field<double>(document, "placement_error", top, file);
   certificate.expansion_radius = field<double>(document, "expansion_radius", top, file);
-  certificate.claim = field<std::string>(document, "claim", top, file);
+  certificate.claim = named_field(document, "claim", verdict_from_string,
+                                  "CLEAR, COLLISION, WITHIN_TOLERANCE, UNDECIDED or ERROR", file);
   certificate.collision_step = field<int>(document, "collision_step", top, file);
   for (const json& error : field<json>(document, "errors", top, file)) {
     certificate.errors.push_back({field<int>(error, "code", "an error", file),
@@ -185,6 +212,7 @@ Certificate certificate_header_from_json(const json& document, const std::string
                                   field<int>(error, "step", "an error", file),
                                   field<std::string>(error, "message", "an error", file)});
   }
+  certificate.inputs = input_names(document, file);
   // Present; its elements are read one by one (segment_certificate_from_json).
   if (!document.contains("segments")) throw InputError(file, 0, "field 'segments' in " + top);
   return certificate;
@@ -194,7 +222,8 @@ SegmentCertificate segment_certificate_from_json(const json& segment_json, const
   SegmentCertificate segment;
   const std::string where = "a segment";
   segment.number = field<int>(segment_json, "number", where, file);
-  segment.kind = field<std::string>(segment_json, "kind", where, file);
+  segment.kind = named_field(segment_json, "kind", motion::segment_kind_from_string,
+                             "ptp-joint, ptp-world or cp-line", file);
   segment.parameter_end = field<double>(segment_json, "parameter_end", where, file);
   for (const json& step_json : field<json>(segment_json, "steps", where, file)) {
     StepCertificate step;

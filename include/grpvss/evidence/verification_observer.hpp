@@ -15,8 +15,8 @@
 /// on_step(n + 1) (or at the segment's end). The start configuration (step 0) is not passed to
 /// on_step: it is in VerificationResult::start. Observers never change the result.
 
-#include "grpvss/certify/certificate.hpp"
-#include "grpvss/certify/verification_result.hpp"
+#include "grpvss/evidence/certificate.hpp"
+#include "grpvss/evidence/verification_result.hpp"
 
 namespace grpvss::certify {
 

@@ -1,4 +1,4 @@
-#include "grpvss/certify/verification_result.hpp"
+#include "grpvss/evidence/verification_result.hpp"
 
 namespace grpvss::certify {
 
@@ -19,6 +19,21 @@ const char* to_string(Verdict verdict) {
     case Verdict::kError: return "ERROR";
   }
   return "?";
+}
+
+std::optional<ResolutionMode> resolution_mode_from_string(std::string_view text) {
+  for (ResolutionMode mode : {ResolutionMode::kCertified, ResolutionMode::kThesis}) {
+    if (text == to_string(mode)) return mode;
+  }
+  return std::nullopt;
+}
+
+std::optional<Verdict> verdict_from_string(std::string_view text) {
+  for (Verdict verdict : {Verdict::kClear, Verdict::kCollision, Verdict::kWithinTolerance,
+                          Verdict::kUndecided, Verdict::kError}) {
+    if (text == to_string(verdict)) return verdict;
+  }
+  return std::nullopt;
 }
 
 const char* to_string(GoverningTerm term) {

@@ -6,14 +6,18 @@
 /// governed. check_certificate() re-verifies all of it exactly from the input files alone.
 /// Format: docs/certificate.md.
 
+#include <map>
 #include <string>
 #include <vector>
 
 #include <Eigen/Core>
 #include <nlohmann/json_fwd.hpp>
 
-#include "grpvss/certify/verification_result.hpp"
+#include "grpvss/evidence/verification_result.hpp"
+#include "grpvss/geometry/offset_shape.hpp"
 #include "grpvss/geometry/separation_witness.hpp"
+#include "grpvss/motion/motion_model.hpp"
+#include "grpvss/motion/trajectory.hpp"
 
 namespace grpvss::certify {
 
@@ -50,26 +54,33 @@ struct StepCertificate {
   TransitionRecord to_next;  ///< transition to the next step of the same segment
 };
 
+/// The largest radius the probe reports (obstacle-free surroundings). The checker accepts it
+/// without evidence only when the environment has no obstacle at all.
+constexpr double kUnboundedRadius = 1e9;
+
 struct SegmentCertificate {
   int number = 0;
-  std::string kind;  ///< "ptp-joint", "ptp-world", "cp-line"
+  motion::SegmentKind kind = motion::SegmentKind::kPtpJoint;
   double parameter_end = 0.0;
   std::vector<StepCertificate> steps;  ///< first at parameter 0, last at parameter_end
 };
 
 struct Certificate {
-  std::string mode;  ///< always "certified" for a certificate
+  ResolutionMode mode = ResolutionMode::kCertified;  ///< a checker accepts certified only
   double tolerance = 0.0;
-  std::string offset_shape;
-  std::string timing;
+  geometry::OffsetShape offset_shape = geometry::OffsetShape::kRhombicuboctahedron;
+  motion::PtpTiming timing = motion::PtpTiming::kIndependent;
   double cp_speed = 0.0;
   double cp_deviation_fraction = 0.0;
   double placement_error = 0.0;
   double expansion_radius = 0.0;
-  std::string claim;  ///< the verdict it supports
+  Verdict claim = Verdict::kError;  ///< the verdict it supports
   int collision_step = 0;
   std::vector<SegmentCertificate> segments;
   std::vector<PathError> errors;
+  /// What the certificate was made from (the file's "inputs": SHA-256 digests of the robot,
+  /// environment and path files, the IK's name); read from a file, written by the report stage.
+  std::map<std::string, std::string> inputs;
 };
 
 nlohmann::json certificate_to_json(const Certificate& certificate);

@@ -1,0 +1,77 @@
+#include "transition_judge.hpp"
+
+#include "joint_linear_motion_bound.hpp"
+#include "grpvss/geometry/directed_rounding.hpp"
+
+namespace grpvss::certify {
+namespace {
+
+// The hull's motion bound over the transition: the joint-sum bound M_h, or on a joint-linear
+// step the smaller chord bound when joints undo each other's sweep (a roll joint keeping the
+// tool's orientation on a CP line moves the hull far less than the sum of their sweeps).
+// proof: proofs/motion-bound.md#lemma-motion-bound, proofs/motion-bound.md#lemma-joint-linear-chord
+double hull_motion_bound(const RobotCell& cell, const LinkHull& hull, const ProbeResult& from,
+                         const ProbeResult& to, const Eigen::VectorXd& dq, bool joint_linear) {
+  double bound = cell.radii().hull_motion_bound(hull.link, hull.hull, dq);
+  if (joint_linear && bound > 0.0) {
+    bound = std::min(bound, joint_linear_motion_bound(cell.radii(), hull.link, hull.hull,
+                                                      hull.raw_L, from.q, from.X_WL[hull.link],
+                                                      to.q, to.X_WL[hull.link],
+                                                      cell.placement_error()));
+  }
+  return bound;
+}
+
+GoverningTerm governing_term(const HullState& from, const HullState& to, double allowance,
+                             double two_delta, bool cut_by_segment_end) {
+  if (from.expanded_interferes || to.expanded_interferes) return GoverningTerm::kRawClearance;
+  if (allowance <= two_delta * (1.0 + 1e-9)) return GoverningTerm::kTolerance;
+  if (cut_by_segment_end) return GoverningTerm::kSegmentEnd;
+  return GoverningTerm::kClearance;
+}
+
+}  // namespace
+
+double allowance_down(double radius_k, double radius_k1) {
+  namespace r = geometry::rounding;
+  r::UpwardRoundingScope upward;
+  return r::add_down(radius_k, radius_k1);
+}
+
+// proof: proofs/two-ball-cover.md#corollary-step
+TransitionRecord judge_transition(const RobotCell& cell, const ProbeResult& from,
+                                  const ProbeResult& to, bool cut_by_segment_end,
+                                  bool joint_linear) {
+  TransitionRecord record;
+  record.certified = true;
+  const Eigen::VectorXd dq = to.q - from.q;
+  const double two_delta = 2.0 * cell.tolerance();
+  for (std::size_t i = 0; i < cell.hulls().size(); ++i) {
+    const double bound = hull_motion_bound(cell, cell.hulls()[i], from, to, dq, joint_linear);
+    const double allowance = allowance_down(from.hulls[i].radius, to.hulls[i].radius);
+    GoverningTerm governing =
+        governing_term(from.hulls[i], to.hulls[i], allowance, two_delta, cut_by_segment_end);
+    if (!(bound <= allowance)) {
+      record.certified = false;
+      governing = GoverningTerm::kUncertified;
+    }
+    record.hull_motion_bounds.push_back(bound);
+    record.hull_allowances.push_back(allowance);
+    record.governing.push_back(governing);
+  }
+  return record;
+}
+
+TransitionRecord beside_collisions(const TransitionRecord& transition, const ProbeResult& from,
+                                   const ProbeResult& to) {
+  TransitionRecord beside = transition;
+  for (std::size_t i = 0; i < beside.hull_allowances.size(); ++i) {
+    if (from.hulls[i].raw_collides || to.hulls[i].raw_collides) {
+      beside.hull_allowances[i] = allowance_down(from.hulls[i].radius_beside_collisions,
+                                                 to.hulls[i].radius_beside_collisions);
+    }
+  }
+  return beside;
+}
+
+}  // namespace grpvss::certify

@@ -1,0 +1,30 @@
+#pragma once
+// The certified step rule's decision on one transition between two probed configurations
+// (proofs/two-ball-cover.md#corollary-step): every hull's motion bound against the allowance
+// its radii at both ends give.
+
+#include "cell_probe.hpp"
+#include "grpvss/evidence/certificate.hpp"
+#include "grpvss/certify/robot_cell.hpp"
+
+namespace grpvss::certify {
+
+/// r_k + r_{k+1} rounded down, so that "bound <= allowance" in double implies it exactly.
+double allowance_down(double radius_k, double radius_k1);
+
+/// \brief Every hull's motion bound M_h, allowance r_k + r_{k+1} and governing term, and whether
+/// every bound is within its allowance.
+/// `joint_linear`: the joints move along the straight line between the two configurations (a
+/// certified CP step, proofs/cp-joint-path.md#model), so the chord bound may be used.
+TransitionRecord judge_transition(const RobotCell& cell, const ProbeResult& from,
+                                  const ProbeResult& to, bool cut_by_segment_end,
+                                  bool joint_linear);
+
+/// \brief The transition as the step decision sees it inside a collision: a hull that collides
+/// at an end of the step is held only against the obstacles it does not collide with
+/// (radius_beside_collisions). The recorded allowances stay r_k + r_{k+1}, which the checker
+/// verifies. docs/verification.md#steps-through-a-collision
+TransitionRecord beside_collisions(const TransitionRecord& transition, const ProbeResult& from,
+                                   const ProbeResult& to);
+
+}  // namespace grpvss::certify
