@@ -1,4 +1,4 @@
-#include "grpvss/io/affine_dimension.hpp"
+#include "io/affine_dimension.hpp"
 
 #include <cmath>
 #include <random>

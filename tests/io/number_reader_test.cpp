@@ -1,4 +1,4 @@
-#include "grpvss/io/number_reader.hpp"
+#include "io/number_reader.hpp"
 
 #include <string>
 

@@ -1,0 +1,73 @@
+# The library's stages (docs/architecture.md): one static library per folder src/<stage>/,
+# its public headers in include/grpvss/<stage>/, its internal headers beside its sources.
+#
+# A stage sees only the public headers of the stages it links: each stage gets its own include
+# root (<build>/stage-include/<stage>/grpvss/<stage> -> include/grpvss/<stage>), and links its
+# dependencies' roots through target_link_libraries. A header of a later stage is simply not
+# on the compiler's path: a wrong include fails the build (tests/architecture/ shows it).
+
+# grpvss_add_stage(<stage> [DEPENDS <stage>...] [PUBLIC_LIBS ...] [PRIVATE_LIBS ...])
+# Defines the target grpvss_<stage> (alias grpvss::<stage>).
+function(grpvss_add_stage stage)
+  cmake_parse_arguments(ARG "" "" "DEPENDS;PUBLIC_LIBS;PRIVATE_LIBS" ${ARGN})
+  file(GLOB sources CONFIGURE_DEPENDS ${GRPVSS_ROOT}/src/${stage}/*.cpp)
+  set(target grpvss_${stage})
+  # A stage of plain data (headers only) is an interface library.
+  if(sources)
+    add_library(${target} STATIC ${sources})
+    set(public PUBLIC)
+  else()
+    add_library(${target} INTERFACE)
+    set(public INTERFACE)
+  endif()
+  add_library(grpvss::${stage} ALIAS ${target})
+  set_target_properties(${target} PROPERTIES EXPORT_NAME ${stage})
+  set(root ${CMAKE_BINARY_DIR}/stage-include/${stage})
+  if(EXISTS ${GRPVSS_ROOT}/include/grpvss/${stage})
+    file(MAKE_DIRECTORY ${root}/grpvss)
+    file(CREATE_LINK ${GRPVSS_ROOT}/include/grpvss/${stage} ${root}/grpvss/${stage} SYMBOLIC)
+    target_include_directories(${target} ${public} $<BUILD_INTERFACE:${root}>
+                                                   $<INSTALL_INTERFACE:include>)
+  endif()
+  set(stage_deps)
+  foreach(dependency IN LISTS ARG_DEPENDS)
+    list(APPEND stage_deps grpvss_${dependency})
+  endforeach()
+  target_link_libraries(${target} ${public} ${stage_deps} ${ARG_PUBLIC_LIBS})
+  # Exact arithmetic needs IEEE semantics: never let the compiler contract or reassociate.
+  target_compile_options(${target} ${public} -ffp-contract=off -frounding-math)
+  if(sources)
+    set_target_properties(${target} PROPERTIES POSITION_INDEPENDENT_CODE ON)
+    target_include_directories(${target} PRIVATE ${GRPVSS_ROOT}/src/${stage})
+    target_link_libraries(${target} PRIVATE ${ARG_PRIVATE_LIBS})
+    target_compile_options(${target} PRIVATE ${GRPVSS_WARNINGS})
+  endif()
+  set_property(GLOBAL APPEND PROPERTY GRPVSS_STAGES ${target})
+endfunction()
+
+# Every stage, in data-flow order; a stage may only name earlier ones in DEPENDS.
+function(grpvss_add_stages)
+  grpvss_add_stage(common PUBLIC_LIBS Eigen3::Eigen)
+  grpvss_add_stage(model DEPENDS common)
+  grpvss_add_stage(io DEPENDS model PRIVATE_LIBS fmt::fmt)
+  grpvss_add_stage(kinematics DEPENDS model PRIVATE_LIBS fmt::fmt ${CMAKE_DL_LIBS})
+  grpvss_add_stage(motion DEPENDS kinematics PRIVATE_LIBS fmt::fmt)
+  grpvss_add_stage(geometry DEPENDS model)
+  # The only stage that includes CGAL (each CGAL translation unit costs ~20 s and 1.5 GB).
+  grpvss_add_stage(exact DEPENDS geometry PRIVATE_LIBS CGAL::CGAL gmpxx gmp)
+  grpvss_add_stage(evidence DEPENDS motion geometry
+                   PUBLIC_LIBS nlohmann_json::nlohmann_json PRIVATE_LIBS fmt::fmt)
+  # The checker sees the exact predicates, the model, the motion and the certificate format:
+  # never the verifier (certify), which it re-checks.
+  grpvss_add_stage(checker DEPENDS evidence exact PRIVATE_LIBS gmpxx gmp fmt::fmt)
+  grpvss_add_stage(certify DEPENDS evidence exact PRIVATE_LIBS fmt::fmt)
+  grpvss_add_stage(report DEPENDS certify io
+                   PUBLIC_LIBS fmt::fmt PRIVATE_LIBS OpenSSL::Crypto)
+  target_compile_definitions(grpvss_report PRIVATE GRPVSS_VERSION="${PROJECT_VERSION}")
+  # Everything a user links: `find_package(grpvss)` then `target_link_libraries(x grpvss::grpvss)`.
+  add_library(grpvss_all INTERFACE)
+  add_library(grpvss::grpvss ALIAS grpvss_all)
+  set_target_properties(grpvss_all PROPERTIES EXPORT_NAME grpvss)
+  target_link_libraries(grpvss_all INTERFACE grpvss_report grpvss_checker grpvss_certify
+                                             grpvss_io)
+endfunction()
