@@ -96,7 +96,7 @@ Designator read_designator(TokenCursor& cursor, Evaluator& evaluator) {
   target.key = upper_name(name.text);
   target.spelling = std::string(name.text);
   if (cursor.peek_symbol("[")) {
-    const std::vector<long long> indices = evaluator.indices(target.unknown_index);
+    const std::vector<Index> indices = evaluator.indices(target.unknown_index);
     target.key = element_key(target.key, indices);
     target.spelling = element_key(target.spelling, indices);
   }

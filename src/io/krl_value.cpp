@@ -70,10 +70,10 @@ std::string describe(const Value& value) {
   return "a value";
 }
 
-std::string element_key(const std::string& name, const std::vector<long long>& indices) {
+std::string element_key(const std::string& name, const std::vector<Index>& indices) {
   std::string key = name + "[";
   for (std::size_t i = 0; i < indices.size(); ++i) {
-    key += (i ? "," : "") + std::to_string(indices[i]);
+    key += (i ? "," : "") + (indices[i] ? std::to_string(*indices[i]) : std::string());
   }
   return key + "]";
 }
@@ -197,15 +197,20 @@ Value Evaluator::postfix() {
   return value;
 }
 
-std::vector<long long> Evaluator::indices(std::string& unknown) {
+std::vector<Index> Evaluator::indices(std::string& unknown) {
   cursor_.expect_symbol("[", "'['");
-  std::vector<long long> result;
+  std::vector<Index> result;
   if (cursor_.accept_symbol("]")) return result;
   do {
+    if (cursor_.peek_symbol(",") || cursor_.peek_symbol("]")) {
+      result.emplace_back();  // an empty index: a whole CHAR row
+      continue;
+    }
     const int line = cursor_.line();
     const Value index = expression();
     if (index.is_unknown()) {
       if (unknown.empty()) unknown = index.text;
+      result.emplace_back();
       continue;
     }
     if (index.kind != Value::Kind::kNumber || index.number != std::floor(index.number) ||
@@ -257,7 +262,7 @@ Value Evaluator::name_value(const ProgramToken& name) {
   std::string spelling(name.text);
   if (cursor_.peek_symbol("[")) {
     std::string unknown;
-    const std::vector<long long> index = indices(unknown);
+    const std::vector<Index> index = indices(unknown);
     if (!unknown.empty()) return Value::unknown("an index that is not computed (" + unknown + ")");
     key = element_key(key, index);
     spelling = element_key(spelling, index);

@@ -3,6 +3,7 @@
 // (docs/robot-programs.md#kuka-krl).
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -42,8 +43,11 @@ std::string describe(const Value& value);
 /// Returns an unknown value (with the reason) for names the program does not define.
 using Lookup = std::function<Value(const std::string& key, const std::string& spelling, int line)>;
 
-/// \brief The key of an array element: `NAME[i]` or `NAME[i,j]` with integer indices.
-std::string element_key(const std::string& name, const std::vector<long long>& indices);
+/// An array index as written: an integer, or empty (`TOOL_NAME[1,]`, `NAME[]`: a whole CHAR row).
+using Index = std::optional<long long>;
+
+/// \brief The key of an array element: `NAME[i]`, `NAME[i,j]`, `NAME[i,]`.
+std::string element_key(const std::string& name, const std::vector<Index>& indices);
 
 /// \brief Recursive-descent evaluation at the cursor (KRL precedence: OR/EXOR, AND, NOT,
 /// comparisons, + -, * /, the geometric operator ':', unary -, postfix .component).
@@ -52,9 +56,9 @@ class Evaluator {
   Evaluator(TokenCursor& cursor, Lookup lookup) : cursor_(cursor), lookup_(std::move(lookup)) {}
 
   Value expression();
-  /// `[i]` or `[i, j]` at the cursor: integer indices (std::nullopt-like empty vector and
-  /// a reason in `unknown` when an index is not computed).
-  std::vector<long long> indices(std::string& unknown);
+  /// `[i]`, `[i, j]`, `[i,]` at the cursor; `unknown` receives the reason when an index is
+  /// not computed.
+  std::vector<Index> indices(std::string& unknown);
 
  private:
   Value logical();

@@ -1,5 +1,6 @@
 #include "grpvss/io/program_lexer.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <sstream>
@@ -187,9 +188,10 @@ class Lexer {
   void read_krl_bits() {
     const std::size_t begin = at_;
     const char base = upper(peek(1));
-    std::size_t end = at_ + 2;
+    const std::size_t digits_begin = std::min(at_ + 2, text_.size());  // a ' may end the text
+    std::size_t end = digits_begin;
     while (end < text_.size() && is_name_char(text_[end])) ++end;
-    const std::string_view digits = text_.substr(at_ + 2, end - at_ - 2);
+    const std::string_view digits = text_.substr(digits_begin, end - digits_begin);
     const bool closed = end < text_.size() && text_[end] == '\'';
     unsigned long long value = 0;
     const int radix = base == 'B' ? 2 : 16;

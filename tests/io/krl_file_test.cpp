@@ -214,6 +214,30 @@ TEST(KrlFile, InlineFormsTakeToolAndBaseFromFdat) {
   expect_warning(p.warnings[5], "t.src", 10, "external axis not read: E1 = 500");
 }
 
+TEST(KrlFile, ReadsConfigDatStyleData) {
+  const std::string config =
+      "DEFDAT  $CONFIG PUBLIC\n"                                                   // 1
+      "ENUM SW_ONOFF ON,OFF\n"                                                     // 2
+      "STRUC MY_T INT A, REAL B\n"                                                 // 3
+      "DECL CHAR TOOL_NAME[16,24]\n"
+      "TOOL_NAME[1,]=\"gripper\"\n"
+      "DECL TOOL_TYPE TOOL_TYPE[16]\n"
+      "TOOL_TYPE[1]=#NONE\n"
+      "DECL LOAD LOAD_DATA[16]\n"
+      "LOAD_DATA[1]={M 12.5,CM {X 0.0,Y 0.0,Z 80.0,A 0.0,B 0.0,C 0.0},J {X 0.1,Y 0.1,Z 0.05}}\n"
+      "DECL FRAME TOOL_DATA[16]\n"
+      "TOOL_DATA[1]={X 0.0,Y 0.0,Z 180.0,A 0.0,B 0.0,C 0.0}\n"
+      "DECL E6AXIS XHOME={A1 0.0,A2 -90.0,A3 90.0,A4 0.0,A5 0.0,A6 0.0,E1 0.0,E2 0.0}\n"
+      "ENDDAT\n";
+  const RobotProgram p = parse_krl(program("$TOOL = TOOL_DATA[1]\nPTP XHOME\n"), "t.src", {{"$config.dat", config}});
+  ASSERT_EQ(p.motions.size(), 1u);
+  EXPECT_EQ(p.motions[0].X_FT.translation(), Eigen::Vector3d(0, 0, 0.18));
+  EXPECT_EQ(joints(p.motions[0].target), vector6(0, -90 * kDegree, 90 * kDegree, 0, 0, 0));
+  ASSERT_EQ(p.warnings.size(), 2u);
+  expect_warning(p.warnings[0], "$config.dat", 2, "not read: ENUM SW_ONOFF ON, OFF");
+  expect_warning(p.warnings[1], "$config.dat", 3, "not read: STRUC MY_T INT A, REAL B");
+}
+
 TEST(KrlFile, GeometricOperatorComposesFrames) {
   const RobotProgram p = parse(program(
       "$TOOL = $NULLFRAME\n"

@@ -86,6 +86,11 @@ TEST(ProgramLexer, ReportsMalformedTokensWithFileAndLine) {
                      "f:2: expected a program character, found '\\x01'");
   expect_input_error(lex("T 'B012'\n", ProgramDialect::kKrl), "f", 1,
                      "f:1: expected a bit ('B0101') or hex ('H1F') literal of at most 31 bits, found ''B012''");
+  // Found by fuzz/krl_fuzzer: a quote as the text's last byte was read past the end.
+  expect_input_error(lex("ENDDAT'", ProgramDialect::kKrl), "f", 1,
+                     "f:1: expected a bit ('B0101') or hex ('H1F') literal of at most 31 bits, found '''");
+  expect_input_error(lex("S 'B", ProgramDialect::kKrl), "f", 1,
+                     "f:1: expected a bit ('B0101') or hex ('H1F') literal of at most 31 bits, found ''B'");
   expect_input_error(lex("\n%%%\n VERSION:1\n", ProgramDialect::kRapid), "f", 2,
                      "f:2: expected a closing %%% line for the header opened here, found end of file");
   expect_input_error(lex("x := 1e999;\n", ProgramDialect::kRapid), "f", 1,
