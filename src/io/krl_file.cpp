@@ -50,6 +50,8 @@ Eigen::Isometry3d frame_pose(const std::optional<Value>& frame) {
   return krl_frame_pose(f.x, f.y, f.z, f.a, f.b, f.c);
 }
 
+struct MotionStatement;
+
 class Interpreter {
  public:
   Interpreter(std::string_view text, std::string file, krl::Scope module, ProgramRecorder& recorder)
@@ -90,6 +92,8 @@ class Interpreter {
   void bas_frame(const std::string& command, const Value& number, const TokenCursor& statement);
   void bas_frames_from_fdat(const std::string& command, const TokenCursor& statement);
   void set_system(const std::string& key, const Value& value, const std::string& text, const TokenCursor& statement);
+  MotionStatement read_motion(TokenCursor& statement);
+  void warn_unset_frames(int line);
   void motion(TokenCursor& statement);
   MotionBlend blend(const std::vector<std::string>& approximations, MotionKind kind, const TokenCursor& statement);
   void warn(int line, const std::string& text) { recorder_.warn(file_, line, text); }
@@ -293,77 +297,101 @@ MotionBlend Interpreter::blend(const std::vector<std::string>& approximations, M
   return blend;
 }
 
-void Interpreter::motion(TokenCursor& statement) {
-  const ProgramToken& keyword = statement.next("a motion");
-  const std::string what = upper_name(keyword.text);
-  const int line = keyword.line;
-  const MotionKind kind = what == "PTP" ? MotionKind::kJoint : what == "LIN" ? MotionKind::kLinear : MotionKind::kCircular;
-  if (statement.range().end - statement.position() == 1 && is_current_position(statement.peek().text)) {
-    return warn(line, "not read: " + statement.statement_text() + " (a move to the current position, which is not known before the run)");
-  }
-  Evaluator evaluator(statement, lookup());
+/// A motion statement as written: `PTP target [C_..]`, `CIRC aux, target [, CA a] [C_..]`.
+struct MotionStatement {
+  MotionKind kind = MotionKind::kJoint;
+  std::string what;  ///< PTP, LIN, CIRC
+  int line = 0;
   std::optional<Value> via;
   std::string via_name;
-  if (kind == MotionKind::kCircular) {
+  Value target;
+  std::string target_name;
+  std::optional<double> circular_angle;  ///< rad
+  std::vector<std::string> approximations;
+};
+
+MotionStatement Interpreter::read_motion(TokenCursor& statement) {
+  MotionStatement motion;
+  const ProgramToken& keyword = statement.next("a motion");
+  motion.what = upper_name(keyword.text);
+  motion.line = keyword.line;
+  motion.kind = motion.what == "PTP" ? MotionKind::kJoint : motion.what == "LIN" ? MotionKind::kLinear : MotionKind::kCircular;
+  Evaluator evaluator(statement, lookup());
+  const auto point = [&](std::string& name) {
     const std::size_t begin = statement.position();
-    via = evaluator.expression();
-    if (statement.position() == begin + 1) via_name = std::string(tokens_[begin].text);
+    Value value = evaluator.expression();
+    if (statement.position() == begin + 1) name = std::string(tokens_[begin].text);
+    return value;
+  };
+  if (motion.kind == MotionKind::kCircular) {
+    motion.via = point(motion.via_name);
     statement.expect_symbol(",", "',' between the auxiliary point and the target of CIRC");
   }
-  const std::size_t target_begin = statement.position();
-  const Value target = evaluator.expression();
-  const std::string target_name = statement.position() == target_begin + 1 ? std::string(tokens_[target_begin].text) : "";
-  std::optional<double> circular_angle;
-  if (kind == MotionKind::kCircular && statement.accept_symbol(",")) {
+  motion.target = point(motion.target_name);
+  if (motion.kind == MotionKind::kCircular && statement.accept_symbol(",")) {
     if (!statement.accept_name("CA")) statement.fail("CA (the circular angle) after ','");
     const Value angle = evaluator.expression();
-    if (angle.kind != Value::Kind::kNumber) statement.fail_at(line, "a number for CA", krl::describe(angle));
-    circular_angle = degrees_to_radians(angle.number);
+    if (angle.kind != Value::Kind::kNumber) statement.fail_at(motion.line, "a number for CA", krl::describe(angle));
+    motion.circular_angle = degrees_to_radians(angle.number);
   }
-  std::vector<std::string> approximations;
-  while (is_one_of(statement.peek().text, {"C_PTP", "C_DIS", "C_VEL", "C_ORI"}) && statement.peek().kind == TokenKind::kName) {
-    approximations.push_back(upper_name(statement.next("an approximation").text));
+  while (statement.peek().kind == TokenKind::kName && is_one_of(statement.peek().text, {"C_PTP", "C_DIS", "C_VEL", "C_ORI"})) {
+    motion.approximations.push_back(upper_name(statement.next("an approximation").text));
   }
   if (statement.accept_name("WITH")) {
-    warn(line, "not read: the WITH clause of " + statement.statement_text());
+    warn(motion.line, "not read: the WITH clause of " + statement.statement_text());
     statement.set_position(statement.range().end);
   }
   statement.expect_end("the motion");
+  return motion;
+}
 
-  ProgramMotion motion;
-  motion.kind = kind;
-  motion.tool_name = state_.tool ? state_.tool_name : "$NULLFRAME (not set)";
-  motion.base_name = state_.base ? state_.base_name : "$NULLFRAME (not set)";
-  const krl::KrlTarget converted = krl::krl_target(target, what, previous_, motion.tool_name, motion.base_name, statement, line);
-  if (kind != MotionKind::kJoint && converted.joint) {
-    statement.fail_at(line, "a Cartesian target (POS, E6POS or FRAME) for " + what, "an AXIS");
-  }
-  if (via) {
-    const krl::KrlTarget auxiliary = krl::krl_target(*via, "the auxiliary point of CIRC", previous_, motion.tool_name,
-                                                     motion.base_name, statement, line);
-    if (auxiliary.joint) statement.fail_at(line, "a Cartesian auxiliary point (POS, E6POS or FRAME) for CIRC", "an AXIS");
-    motion.via = auxiliary.target;
-    motion.via_name = via_name;
-  }
-  for (const std::string& axis : converted.external_axes) warn(line, "external axis not read: " + axis);
-  if (!converted.joint && !state_.tool && !tool_warned_) {
+void Interpreter::warn_unset_frames(int line) {
+  if (!state_.tool && !tool_warned_) {
     tool_warned_ = true;
     warn(line, "$TOOL is not set before this motion: the flange ($NULLFRAME) is taken (the controller keeps the $TOOL it had)");
   }
-  if (!converted.joint && !state_.base && !base_warned_) {
+  if (!state_.base && !base_warned_) {
     base_warned_ = true;
     warn(line, "$BASE is not set before this motion: the robot base ($NULLFRAME, $WORLD = $ROBROOT) is taken");
   }
-  motion.target = converted.target;
-  motion.target_name = target_name;
-  motion.circular_angle = circular_angle;
+}
+
+void Interpreter::motion(TokenCursor& statement) {
+  const bool current_position = statement.range().end - statement.range().begin == 2 &&
+                                is_current_position(statement.peek(1).text);
+  if (current_position) {
+    return warn(statement.range().line, "not read: " + statement.statement_text() +
+                                            " (a move to the current position, which is not known before the run)");
+  }
+  const MotionStatement read = read_motion(statement);
+  const int line = read.line;
+  ProgramMotion motion;
+  motion.kind = read.kind;
+  motion.tool_name = state_.tool ? state_.tool_name : "$NULLFRAME (not set)";
+  motion.base_name = state_.base ? state_.base_name : "$NULLFRAME (not set)";
+  const krl::KrlTarget target = krl::krl_target(read.target, read.what, previous_, motion.tool_name, motion.base_name, statement, line);
+  if (read.kind != MotionKind::kJoint && target.joint) {
+    statement.fail_at(line, "a Cartesian target (POS, E6POS or FRAME) for " + read.what, "an AXIS");
+  }
+  if (read.via) {
+    const krl::KrlTarget via = krl::krl_target(*read.via, "the auxiliary point of CIRC", previous_, motion.tool_name,
+                                               motion.base_name, statement, line);
+    if (via.joint) statement.fail_at(line, "a Cartesian auxiliary point (POS, E6POS or FRAME) for CIRC", "an AXIS");
+    motion.via = via.target;
+    motion.via_name = read.via_name;
+  }
+  for (const std::string& axis : target.external_axes) warn(line, "external axis not read: " + axis);
+  if (!target.joint) warn_unset_frames(line);
+  motion.target = target.target;
+  motion.target_name = read.target_name;
+  motion.circular_angle = read.circular_angle;
   motion.X_FT = frame_pose(state_.tool);
   motion.X_RB = frame_pose(state_.base);
   motion.speed = state_.speed();
-  motion.blend = blend(approximations, kind, statement);
+  motion.blend = blend(read.approximations, read.kind, statement);
   motion.file = file_;
   motion.line = line;
-  previous_ = krl::PreviousTarget{converted.completed, converted.joint, motion.tool_name, motion.base_name};
+  previous_ = krl::PreviousTarget{target.completed, target.joint, motion.tool_name, motion.base_name};
   recorder_.add_motion(std::move(motion));
 }
 

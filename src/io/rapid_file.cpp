@@ -68,6 +68,8 @@ std::optional<MotionSpec> motion_spec(std::string_view name) {
   return std::nullopt;
 }
 
+class MotionArguments;
+
 class Interpreter {
  public:
   Interpreter(std::vector<ProgramToken> tokens, std::string file, int end_line, ProgramRecorder& recorder)
@@ -98,6 +100,7 @@ class Interpreter {
   void assign_path(Value& holder, const std::vector<Step>& steps, std::size_t at, Value value, const TokenCursor& statement);
   void call(TokenCursor& statement);
   void motion(TokenCursor& statement, const MotionSpec& spec);
+  void motion_targets(const MotionArguments& arguments, const MotionSpec& spec, ProgramMotion& motion);
 
   std::vector<ProgramToken> tokens_;
   std::vector<TokenRange> statements_;
@@ -350,81 +353,122 @@ void Interpreter::call(TokenCursor& statement) {
   run_routine(routine, std::move(frame), name.line);
 }
 
-void Interpreter::motion(TokenCursor& statement, const MotionSpec& spec) {
+/// The arguments of one motion instruction, checked, with their values and texts.
+class MotionArguments {
+ public:
+  MotionArguments(TokenCursor& statement, Evaluator& evaluator, const std::vector<ProgramToken>& tokens,
+                  const MotionSpec& spec, std::vector<ProgramWarning>& warnings);
+
+  const std::string& instruction() const { return instruction_; }
+  int line() const { return line_; }
+  Value value(std::size_t position) const { return evaluator_.evaluate(*positional_[position]); }
+  std::string text(std::size_t position) const { return text_of(*positional_[position]); }
+  bool has(const char* option) const { return optional_.count(option) > 0; }
+  Value option_value(const char* option) const { return evaluator_.evaluate(*optional_.at(option)); }
+  std::string option_text(const char* option) const { return text_of(*optional_.at(option)); }
+  /// A non-negative num given as `\option:=`.
+  double option_number(const char* option) const;
+  rapid::Context context(const std::string& what) const { return {statement_, line_, what + " of " + instruction_}; }
+
+ private:
+  std::string text_of(const Argument& argument) const { return join_tokens(tokens_, argument.begin, argument.end); }
+
+  TokenCursor& statement_;
+  Evaluator& evaluator_;
+  const std::vector<ProgramToken>& tokens_;
+  std::string instruction_;
+  int line_ = 0;
+  std::vector<Argument> arguments_;
+  std::vector<const Argument*> positional_;
+  std::map<std::string, const Argument*> optional_;
+};
+
+MotionArguments::MotionArguments(TokenCursor& statement, Evaluator& evaluator,
+                                 const std::vector<ProgramToken>& tokens, const MotionSpec& spec,
+                                 std::vector<ProgramWarning>& warnings)
+    : statement_(statement), evaluator_(evaluator), tokens_(tokens) {
   const ProgramToken& name = statement.next("a motion instruction");
-  const std::string instruction(name.text);
-  const int line = name.line;
-  Evaluator evaluator(statement, lookup());
-  const std::vector<Argument> arguments = evaluator.arguments("");
-  statement.expect_end("the arguments of " + instruction);
-  std::vector<const Argument*> positional;
-  std::map<std::string, const Argument*> optional;
+  instruction_ = std::string(name.text);
+  line_ = name.line;
+  arguments_ = evaluator.arguments("");
+  statement.expect_end("the arguments of " + instruction_);
   static const std::set<std::string> kKnown = {"CONC", "ID", "V", "T", "Z", "INPOS", "WOBJ", "TLOAD", "CORR", "NOEOFFS"};
-  for (const Argument& argument : arguments) {
+  for (const Argument& argument : arguments_) {
     if (argument.name.empty()) {
-      positional.push_back(&argument);
+      positional_.push_back(&argument);
       continue;
     }
     if (!kKnown.count(argument.name)) {
-      statement.fail_at(line, "an optional argument of " + instruction + " (\\V, \\T, \\Z, \\WObj, \\Conc, \\ID, \\Inpos, \\TLoad, \\Corr, \\NoEOffs)",
+      statement.fail_at(line_, "an optional argument of " + instruction_ + " (\\V, \\T, \\Z, \\WObj, \\Conc, \\ID, \\Inpos, \\TLoad, \\Corr, \\NoEOffs)",
                         "\\" + argument.spelling);
     }
-    if (!optional.emplace(argument.name, &argument).second) statement.fail_at(line, "each optional argument once", "\\" + argument.spelling + " twice");
+    if (!optional_.emplace(argument.name, &argument).second) statement.fail_at(line_, "each optional argument once", "\\" + argument.spelling + " twice");
     if (is_one_of(argument.name, {"CONC", "ID", "INPOS", "TLOAD", "CORR", "NOEOFFS"})) {
-      warn(line, "the optional argument \\" + argument.spelling + " of " + instruction + " is not read");
+      warnings.push_back({statement.file_name(), line_, "the optional argument \\" + argument.spelling + " of " + instruction_ + " is not read"});
     }
   }
-  if (positional.size() != spec.positional) {
-    statement.fail_at(line, std::to_string(spec.positional) + " arguments for " + instruction +
-                                (spec.kind == MotionKind::kCircular ? " (CirPoint, ToPoint, Speed, Zone, Tool)" : " (ToPoint, Speed, Zone, Tool)"),
-                      std::to_string(positional.size()));
+  if (positional_.size() != spec.positional) {
+    statement.fail_at(line_, std::to_string(spec.positional) + " arguments for " + instruction_ +
+                                 (spec.kind == MotionKind::kCircular ? " (CirPoint, ToPoint, Speed, Zone, Tool)" : " (ToPoint, Speed, Zone, Tool)"),
+                      std::to_string(positional_.size()));
   }
-  const auto value_of = [&](const Argument* argument) { return evaluator.evaluate(*argument); };
-  const auto text_of = [&](const Argument* argument) { return join_tokens(tokens_, argument->begin, argument->end); };
-  const auto number_of = [&](const char* option) {
-    const Value value = value_of(optional.at(option));
-    if (value.kind != Value::Kind::kNumber || value.number < 0) {
-      statement.fail_at(line, std::string("a non-negative num for \\") + option + " of " + instruction,
-                        value.kind == Value::Kind::kNumber ? number_text(value.number) : rapid::describe(value));
-    }
-    return value.number;
-  };
-  const std::size_t to = spec.kind == MotionKind::kCircular ? 1 : 0;
+}
+
+double MotionArguments::option_number(const char* option) const {
+  const Value value = option_value(option);
+  if (value.kind != Value::Kind::kNumber || value.number < 0) {
+    statement_.fail_at(line_, std::string("a non-negative num for \\") + option + " of " + instruction_,
+                       value.kind == Value::Kind::kNumber ? number_text(value.number) : rapid::describe(value));
+  }
+  return value.number;
+}
+
+void Interpreter::motion(TokenCursor& statement, const MotionSpec& spec) {
+  Evaluator evaluator(statement, lookup());
+  std::vector<ProgramWarning> warnings;
+  const MotionArguments arguments(statement, evaluator, tokens_, spec, warnings);
+  for (ProgramWarning& warning : warnings) recorder_.warn(warning.file, warning.line, std::move(warning.text));
   ProgramMotion motion;
   motion.kind = spec.kind;
-  std::vector<std::string> external_axes;
-  const rapid::Context target_context{statement, line, "the target of " + instruction};
-  if (spec.joint_target) {
-    motion.target = rapid::jointtarget_target(value_of(positional[to]), target_context, external_axes);
-  } else {
-    motion.target = rapid::robtarget_target(value_of(positional[to]), target_context, external_axes);
-  }
-  motion.target_name = text_of(positional[to]);
-  if (spec.kind == MotionKind::kCircular) {
-    motion.via = rapid::robtarget_target(value_of(positional[0]), {statement, line, "the circle point of MoveC"}, external_axes);
-    motion.via_name = text_of(positional[0]);
-  }
-  for (const std::string& axis : external_axes) warn(line, "external axis not read: " + axis);
-  motion.speed = rapid::speed_data(value_of(positional[to + 1]), {statement, line, "the speed of " + instruction});
-  motion.speed.name = text_of(positional[to + 1]);
-  if (optional.count("V")) motion.speed.tcp_speed = number_of("V") / 1000.0;
-  if (optional.count("T")) motion.speed.duration = number_of("T");
-  motion.blend = rapid::zone_data(value_of(positional[to + 2]), {statement, line, "the zone of " + instruction});
-  motion.blend.name = text_of(positional[to + 2]);
-  if (optional.count("Z")) {
+  motion_targets(arguments, spec, motion);
+  const std::size_t speed = spec.kind == MotionKind::kCircular ? 2 : 1;
+  motion.speed = rapid::speed_data(arguments.value(speed), arguments.context("the speed"));
+  motion.speed.name = arguments.text(speed);
+  if (arguments.has("V")) motion.speed.tcp_speed = arguments.option_number("V") / 1000.0;
+  if (arguments.has("T")) motion.speed.duration = arguments.option_number("T");
+  motion.blend = rapid::zone_data(arguments.value(speed + 1), arguments.context("the zone"));
+  motion.blend.name = arguments.text(speed + 1);
+  if (arguments.has("Z")) {
     motion.blend.kind = BlendKind::kDistance;
-    motion.blend.radius = number_of("Z") / 1000.0;
+    motion.blend.radius = arguments.option_number("Z") / 1000.0;
   }
-  motion.X_FT = rapid::tool_pose(value_of(positional[to + 3]), {statement, line, "the tool of " + instruction});
-  motion.tool_name = text_of(positional[to + 3]);
+  motion.X_FT = rapid::tool_pose(arguments.value(speed + 2), arguments.context("the tool"));
+  motion.tool_name = arguments.text(speed + 2);
   motion.base_name = "wobj0";
-  if (optional.count("WOBJ")) {
-    motion.X_RB = rapid::work_object_pose(value_of(optional.at("WOBJ")), {statement, line, "the work object of " + instruction});
-    motion.base_name = text_of(optional.at("WOBJ"));
+  if (arguments.has("WOBJ")) {
+    motion.X_RB = rapid::work_object_pose(arguments.option_value("WOBJ"), arguments.context("the work object"));
+    motion.base_name = arguments.option_text("WOBJ");
   }
   motion.file = file_;
-  motion.line = line;
+  motion.line = arguments.line();
   recorder_.add_motion(std::move(motion));
+}
+
+void Interpreter::motion_targets(const MotionArguments& arguments, const MotionSpec& spec, ProgramMotion& motion) {
+  const std::size_t to = spec.kind == MotionKind::kCircular ? 1 : 0;
+  std::vector<std::string> external_axes;
+  const rapid::Context context = arguments.context("the target");
+  if (spec.joint_target) {
+    motion.target = rapid::jointtarget_target(arguments.value(to), context, external_axes);
+  } else {
+    motion.target = rapid::robtarget_target(arguments.value(to), context, external_axes);
+  }
+  motion.target_name = arguments.text(to);
+  if (spec.kind == MotionKind::kCircular) {
+    motion.via = rapid::robtarget_target(arguments.value(0), arguments.context("the circle point"), external_axes);
+    motion.via_name = arguments.text(0);
+  }
+  for (const std::string& axis : external_axes) warn(arguments.line(), "external axis not read: " + axis);
 }
 
 }  // namespace

@@ -81,6 +81,8 @@ class Interpreter {
   void call_function(TokenCursor& cursor, const urscript::Function& function);
   void set_tcp(TokenCursor& cursor, const std::vector<CallArgument>& arguments);
   void motion(TokenCursor& cursor, const MotionSignature& signature);
+  std::map<std::string, double> motion_numbers(TokenCursor& statement, const MotionSignature& signature,
+                                               const std::map<std::string, CallArgument>& bound);
   std::map<std::string, CallArgument> bind(TokenCursor& cursor,
                                            const std::vector<std::string>& parameters,
                                            const std::vector<CallArgument>& arguments,
@@ -366,6 +368,25 @@ ProgramTarget Interpreter::target(TokenCursor& statement, const CallArgument& ar
                     urscript::describe(value));
 }
 
+std::map<std::string, double> Interpreter::motion_numbers(TokenCursor& statement, const MotionSignature& signature,
+                                                          const std::map<std::string, CallArgument>& bound) {
+  const std::string routine(tokens_[statement.range().begin].text);
+  std::map<std::string, double> numbers;
+  for (const auto& [name, fallback] : signature.numbers) {
+    const auto given = bound.find(name);
+    numbers[name] = given == bound.end() ? fallback : motion_number(statement, given->second, name, routine);
+  }
+  if (signature.kind != MotionKind::kCircular) return numbers;
+  if (numbers["mode"] != 0.0 && numbers["mode"] != 1.0) {
+    statement.fail_at(statement.range().line, "mode 0 or 1 for movec", number_text(numbers["mode"]));
+  }
+  if (numbers["mode"] == 1.0) {
+    recorder_.warn(file_, statement.range().line,
+                   "movec mode=1 (orientation fixed to the arc) is not represented: the orientation is read as interpolated");
+  }
+  return numbers;
+}
+
 void Interpreter::motion(TokenCursor& statement, const MotionSignature& signature) {
   const std::string routine(tokens_[statement.range().begin].text);
   const int line = statement.range().line;
@@ -376,15 +397,9 @@ void Interpreter::motion(TokenCursor& statement, const MotionSignature& signatur
   for (const auto& [name, fallback] : signature.numbers) parameters.push_back(name);
   const auto bound = bind(statement, parameters, arguments, routine);
   for (const std::string& target_parameter : signature.targets) {
-    if (!bound.count(target_parameter)) {
-      statement.fail_at(line, "a value for " + target_parameter + " of " + routine, "none");
-    }
+    if (!bound.count(target_parameter)) statement.fail_at(line, "a value for " + target_parameter + " of " + routine, "none");
   }
-  std::map<std::string, double> numbers;
-  for (const auto& [name, fallback] : signature.numbers) {
-    const auto given = bound.find(name);
-    numbers[name] = given == bound.end() ? fallback : motion_number(statement, given->second, name, routine);
-  }
+  std::map<std::string, double> numbers = motion_numbers(statement, signature, bound);
   ProgramMotion motion;
   motion.kind = signature.kind;
   const CallArgument& to = bound.at(signature.targets.back());
@@ -394,13 +409,8 @@ void Interpreter::motion(TokenCursor& statement, const MotionSignature& signatur
     const CallArgument& via = bound.at(signature.targets.front());
     motion.via = target(statement, via, routine, signature.targets.front());
     motion.via_name = argument_name(via);
-    if (numbers["mode"] != 0.0 && numbers["mode"] != 1.0) {
-      statement.fail_at(line, "mode 0 or 1 for movec", number_text(numbers["mode"]));
-    }
-    if (numbers["mode"] == 1.0) {
-      recorder_.warn(file_, line, "movec mode=1 (orientation fixed to the arc) is not represented: the orientation is read as interpolated");
-    }
   }
+  // movej's a and v are the leading joint's; movel's and movec's the TCP's.
   const bool joint_speeds = signature.kind == MotionKind::kJoint;
   (joint_speeds ? motion.speed.joint_acceleration : motion.speed.tcp_acceleration) = numbers["a"];
   (joint_speeds ? motion.speed.joint_speed : motion.speed.tcp_speed) = numbers["v"];
