@@ -77,6 +77,11 @@ Value checked(const Value& value, const std::string& type, const Context& contex
   if (const std::string problem = conform(result, type); !problem.empty()) {
     context.cursor.fail_at(context.line, problem + " for " + context.what, describe(value));
   }
+  // conform() lets unknown parts through; a motion needs every part (vmax's speeds excepted).
+  const Value* unknown = first_unknown_part(result);
+  if (unknown && !(type == "SPEEDDATA" && unknown->text == kRobotMaximum)) {
+    context.cursor.fail_at(context.line, "a " + name + " the reader can compute for " + context.what, unknown->text);
+  }
   return result;
 }
 

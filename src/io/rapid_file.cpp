@@ -252,8 +252,7 @@ void Interpreter::assignment(TokenCursor& statement) {
   }
   if (value.is_unknown()) warn(name.line, "'" + statement.statement_text() + "' is not computed: " + value.text);
   if (steps.empty()) {
-    value.type = variable.value.type.empty() ? variable.type : variable.value.type;
-    if (const std::string problem = rapid::conform(value, variable.type); !problem.empty() && !variable.type.empty()) {
+    if (const std::string problem = rapid::conform(value, variable.type); !problem.empty()) {
       statement.fail_at(name.line, problem + " for " + variable.spelling, rapid::describe(value));
     }
     variable.value = std::move(value);
@@ -280,7 +279,9 @@ void Interpreter::assign_path(Value& holder, const std::vector<Step>& steps, std
   std::size_t index = 0;
   std::string child_type;
   if (!steps[at].component.empty()) {
-    const std::vector<rapid::Component>* components = rapid::record_components(holder.type);
+    const std::vector<rapid::Component>* record = rapid::record_components(holder.type);
+    const bool conformed = record && holder.kind == Value::Kind::kAggregate && holder.elements.size() == record->size();
+    const std::vector<rapid::Component>* components = conformed ? record : nullptr;
     const auto found = components && !holder.array
                            ? std::find_if(components->begin(), components->end(),
                                           [&](const rapid::Component& c) { return c.name == steps[at].component; })

@@ -116,6 +116,14 @@ std::string describe(const Value& value) {
   return "a value";
 }
 
+const Value* first_unknown_part(const Value& value) {
+  if (value.is_unknown()) return &value;
+  for (const Value& element : value.elements) {
+    if (const Value* unknown = first_unknown_part(element)) return unknown;
+  }
+  return nullptr;
+}
+
 const std::vector<Component>* record_components(const std::string& type) {
   const auto found = record_table().find(type);
   return found == record_table().end() ? nullptr : &found->second;
@@ -197,7 +205,7 @@ Value Evaluator::unary() {
   Value operand = unary();
   if (op.text == "+" || operand.is_unknown()) return operand;
   if (operand.kind != Value::Kind::kNumber) {
-    return Value::unknown("a negated " + describe(operand) + " (not evaluated)");
+    return Value::unknown("'-' before " + describe(operand) + " (not evaluated)");
   }
   operand.number = -operand.number;
   return operand;
@@ -223,7 +231,9 @@ Value Evaluator::postfix() {
 Value Evaluator::component(const Value& value, const std::string& name, int line) {
   if (value.is_unknown()) return value;
   const std::vector<Component>* components = record_components(value.type);
-  if (!components || value.array) {
+  const bool record = components && !value.array && value.kind == Value::Kind::kAggregate &&
+                      value.elements.size() == components->size();
+  if (!record) {
     return Value::unknown("a component ." + lower(name) + " of " + describe(value) + " of unknown type");
   }
   for (std::size_t i = 0; i < components->size(); ++i) {
@@ -356,6 +366,7 @@ Value Evaluator::function_call(const ProgramToken& name) {
   if (const std::string problem = conform(target, "ROBTARGET"); !problem.empty()) {
     cursor_.fail_at(line, problem + " as the point of " + std::string(name.text), describe(positional[0]));
   }
+  if (const Value* unknown = first_unknown_part(target)) return *unknown;
   Eigen::Vector3d offset;
   for (int i = 0; i < 3; ++i) {
     const Value& number = positional[static_cast<std::size_t>(i) + 1];

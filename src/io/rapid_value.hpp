@@ -47,6 +47,9 @@ const std::vector<Component>* record_components(const std::string& type);
 /// and returns it tagged with the type. Returns "" on success, else what was expected.
 std::string conform(Value& value, const std::string& type);
 
+/// The first unknown part of a value (itself, or an item at any depth); nullptr if none.
+const Value* first_unknown_part(const Value& value);
+
 /// An argument of a call: positional expression or `\Name[:=expr]` (range begin == end for
 /// a switch).
 struct Argument {

@@ -225,6 +225,18 @@ TEST(RapidFile, RejectsUnreadableDataNamingIt) {
                "expected a zonedata the reader can compute for the zone of MoveL, found zz, which is declared nowhere in the program");
 }
 
+TEST(RapidFile, AnUnknownPartOfARobtargetIsNamedNotRead) {
+  // Found by fuzz/rapid_fuzzer: Offs() read the parts of a robtarget whose rotation was unknown.
+  const std::string data = "VAR robtarget p := [[100, 0, 300], -[1, 0, 0, 0], [0, 0, 0, 0], " + kUnused + "];\n";
+  const std::string found = "'-' before an aggregate of 4 items (not evaluated)";
+  expect_error(module(data, "MoveL Offs(p, 10, 0, 0), v100, fine, tool0;\n"), 4,
+               "expected a robtarget the reader can compute for the target of MoveL, found " + found);
+  expect_error(module(data, "MoveL p, v100, fine, tool0;\n"), 4,
+               "expected a robtarget the reader can compute for the target of MoveL, found " + found);
+  expect_error(module("", "MoveL " + robtarget("[0, 0, 0]") + ", [100, 500, x, 1000], fine, tool0;\n"), 3,
+               "expected a speeddata the reader can compute for the speed of MoveL, found x, which is declared nowhere in the program");
+}
+
 TEST(RapidFile, RejectsMalformedProgramsNamingFileLineAndExpectation) {
   expect_error(module("", "MoveLDO p, v100, fine, tool0, do1, 1;\n"), 3,
                "expected a motion instruction the reader reads (MoveAbsJ, MoveJ, MoveL, MoveC), found 'MoveLDO'");

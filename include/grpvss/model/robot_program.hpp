@@ -123,7 +123,9 @@ struct ProgramMotion {
   MotionKind kind = MotionKind::kJoint;
   ProgramTarget target;
   std::string target_name;            ///< the symbol the program names; "" for a literal
-  std::optional<ProgramTarget> via;   ///< circular motions only: the via (auxiliary) point
+  /// Circular motions only: the via (auxiliary) point as written. The arc passes through its
+  /// position; UR and KUKA document that its orientation is not used.
+  std::optional<ProgramTarget> via;
   std::string via_name;
   std::optional<double> circular_angle;  ///< rad, KUKA CIRC ... CA (unset: to the target)
   Eigen::Isometry3d X_FT = Eigen::Isometry3d::Identity();  ///< tool: TCP in the flange, m
