@@ -214,7 +214,9 @@ void Interpreter::dispatch(TokenCursor& statement) {
     evaluator.expression();
     warn(line, "control flow not evaluated: " + statement.statement_text() + " (the statement is read as if the condition held)");
     TokenCursor inner(tokens_, {statement.position(), statement.range().end, statement.line()}, file_);
-    if (inner.at_end()) statement.fail("a statement after the IF condition");
+    if (inner.at_end() || inner.peek_name("IF")) {
+      statement.fail("a statement after the IF condition (a compact IF holds one simple statement)");
+    }
     return dispatch(inner);
   }
   const bool label = statement.peek_symbol(":", 1) && statement.range().end == statement.range().begin + 2;

@@ -307,8 +307,9 @@ std::vector<Argument> Evaluator::arguments(std::string_view closing) {
       Argument argument{upper_name(name.text), std::string(name.text), 0, 0};
       if (cursor_.accept_symbol(":=")) {
         argument.begin = cursor_.position();
-        expression();
+        skip_expression(closing);
         argument.end = cursor_.position();
+        if (argument.end == argument.begin) cursor_.fail("a value after ':='");
       }
       result.push_back(argument);
     }
@@ -320,7 +321,7 @@ std::vector<Argument> Evaluator::arguments(std::string_view closing) {
     if (!at_stop() && !cursor_.peek_symbol("\\")) {
       Argument argument;
       argument.begin = cursor_.position();
-      expression();
+      skip_expression(closing);
       argument.end = cursor_.position();
       result.push_back(argument);
     }
@@ -331,11 +332,27 @@ std::vector<Argument> Evaluator::arguments(std::string_view closing) {
   return result;
 }
 
+/// Moves past one argument's tokens without evaluating them (each argument is evaluated once,
+/// by evaluate(): evaluating here too would double the work at every level of nested calls).
+void Evaluator::skip_expression(std::string_view closing) {
+  int depth = 0;
+  while (!cursor_.at_end()) {
+    const bool stop = cursor_.peek_symbol(",") || cursor_.peek_symbol("\\") ||
+                      (!closing.empty() && cursor_.peek_symbol(closing));
+    if (depth == 0 && stop) return;
+    const ProgramToken& token = cursor_.next("an argument");
+    if (token.kind != TokenKind::kSymbol) continue;
+    if (token.text == "(" || token.text == "[" || token.text == "{") ++depth;
+    if (token.text == ")" || token.text == "]" || token.text == "}") --depth;
+  }
+}
+
 Value Evaluator::evaluate(const Argument& argument) {
   if (argument.begin == argument.end) return Value::of_boolean(true);  // a switch
   const std::size_t resume = cursor_.position();
   cursor_.set_position(argument.begin);
   Value value = expression();
+  if (cursor_.position() != argument.end) cursor_.fail("',' after the argument");
   cursor_.set_position(resume);
   return value;
 }

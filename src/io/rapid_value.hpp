@@ -92,6 +92,7 @@ class Evaluator {
   Value aggregate();
   Value function_call(const ProgramToken& name);
   Value arithmetic(const std::string& op, const Value& left, const Value& right, int line);
+  void skip_expression(std::string_view closing);
 
   TokenCursor& cursor_;
   Lookup lookup_;

@@ -256,6 +256,9 @@ TEST(RapidFile, RejectsMalformedProgramsNamingFileLineAndExpectation) {
                "expected a robtarget [trans, rot, robconf, extax] for the target of MoveL, found an aggregate of 2 items");
   expect_error(module("", "MoveL " + robtarget("[0, 0, 0]") + ", v100\\V:=-5, fine, tool0;\n"), 3,
                "expected a non-negative num for \\V of MoveL, found -5");
+  expect_error(module("", "IF a IF b MoveL p, v100, fine, tool0;\n"), 3,
+               "expected a statement after the IF condition (a compact IF holds one simple statement), found 'IF'");
+  expect_error(module("", "MoveL p q, v100, fine, tool0;\n"), 3, "expected ',' after the argument, found 'q'");
   expect_error("MODULE m\nPROC main()\n  main;\nENDPROC\nENDMODULE\n", 3,
                "expected calls nested at most 32 deep (recursion is not evaluated), found a call of main nested deeper");
 }
