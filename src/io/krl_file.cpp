@@ -317,10 +317,10 @@ MotionStatement Interpreter::read_motion(TokenCursor& statement) {
   motion.line = keyword.line;
   motion.kind = motion.what == "PTP" ? MotionKind::kJoint : motion.what == "LIN" ? MotionKind::kLinear : MotionKind::kCircular;
   Evaluator evaluator(statement, lookup());
-  const auto point = [&](std::string& name) {
+  const auto point = [&](std::string& name) {  // as written; "" for a literal aggregate
     const std::size_t begin = statement.position();
     Value value = evaluator.expression();
-    if (statement.position() == begin + 1) name = std::string(tokens_[begin].text);
+    name = tokens_[begin].text == "{" ? std::string() : join_tokens(tokens_, begin, statement.position());
     return value;
   };
   if (motion.kind == MotionKind::kCircular) {

@@ -366,6 +366,10 @@ class MotionArguments {
   int line() const { return line_; }
   Value value(std::size_t position) const { return evaluator_.evaluate(*positional_[position]); }
   std::string text(std::size_t position) const { return text_of(*positional_[position]); }
+  /// The data as written; "" for a literal aggregate.
+  std::string name(std::size_t position) const {
+    return tokens_[positional_[position]->begin].text == "[" ? std::string() : text(position);
+  }
   bool has(const char* option) const { return optional_.count(option) > 0; }
   Value option_value(const char* option) const { return evaluator_.evaluate(*optional_.at(option)); }
   std::string option_text(const char* option) const { return text_of(*optional_.at(option)); }
@@ -466,10 +470,10 @@ void Interpreter::motion_targets(const MotionArguments& arguments, const MotionS
   } else {
     motion.target = rapid::robtarget_target(arguments.value(to), context, external_axes);
   }
-  motion.target_name = arguments.text(to);
+  motion.target_name = arguments.name(to);
   if (spec.kind == MotionKind::kCircular) {
     motion.via = rapid::robtarget_target(arguments.value(0), arguments.context("the circle point"), external_axes);
-    motion.via_name = arguments.text(0);
+    motion.via_name = arguments.name(0);
   }
   for (const std::string& axis : external_axes) warn(arguments.line(), "external axis not read: " + axis);
 }

@@ -326,11 +326,12 @@ void Interpreter::set_tcp(TokenCursor& statement, const std::vector<CallArgument
   tool_name_ = statement.statement_text();
 }
 
+/// The target as written ("pick", "pose_trans(a, b)"); "" for a literal (p[...] or [...]).
 std::string Interpreter::argument_name(const CallArgument& argument) const {
-  if (argument.end == argument.begin + 1 && tokens_[argument.begin].kind == TokenKind::kName) {
-    return std::string(tokens_[argument.begin].text);
-  }
-  return {};
+  const ProgramToken& first = tokens_[argument.begin];
+  const bool literal = (first.kind == TokenKind::kSymbol && first.text == "[") ||
+                       (first.text == "p" && argument.end > argument.begin + 1 && tokens_[argument.begin + 1].text == "[");
+  return literal ? std::string() : join_tokens(tokens_, argument.begin, argument.end);
 }
 
 double Interpreter::motion_number(TokenCursor& statement, const CallArgument& argument,
@@ -362,6 +363,13 @@ ProgramTarget Interpreter::target(TokenCursor& statement, const CallArgument& ar
     CartesianTarget cartesian;
     cartesian.p_BT = pose->translation();
     cartesian.R_BT = Eigen::Quaterniond(pose->linear());
+    return cartesian;
+  }
+  if (const auto* ik = std::get_if<urscript::InverseKinematics>(&value)) {
+    CartesianTarget cartesian;
+    cartesian.p_BT = ik->pose.translation();
+    cartesian.R_BT = Eigen::Quaterniond(ik->pose.linear());
+    cartesian.configuration = UrNearestJoints{Eigen::Map<const Eigen::VectorXd>(ik->qnear.data(), Eigen::Index(ik->qnear.size()))};
     return cartesian;
   }
   statement.fail_at(line, "a joint list or pose the reader can compute for " + parameter + " of " + routine,

@@ -1,6 +1,8 @@
 #include "urscript_value.hpp"
 
 #include <cmath>
+#include <algorithm>
+#include <map>
 #include <optional>
 
 #include "grpvss/io/program_orientation.hpp"
@@ -43,6 +45,7 @@ std::string describe(const Value& value) {
       return "a list of " + std::to_string(list.size()) + " numbers";
     }
     std::string operator()(const Eigen::Isometry3d&) const { return "a pose"; }
+    std::string operator()(const InverseKinematics&) const { return "the joints of get_inverse_kin()"; }
     std::string operator()(const Unknown& unknown) const { return unknown.reason; }
   };
   return std::visit(Describer{}, value);
@@ -140,6 +143,9 @@ Value Evaluator::element(const Value& container, const Value& index, int line) {
     }
     return (*list)[static_cast<std::size_t>(*i)];
   }
+  if (std::holds_alternative<InverseKinematics>(container)) {
+    return Unknown{"an element of get_inverse_kin() (its joint values are not computed)"};
+  }
   if (const auto* pose = std::get_if<Eigen::Isometry3d>(&container)) {
     if (*i < 0 || *i > 5) {
       cursor_.fail_at(line, "a pose index 0..5", std::to_string(static_cast<long long>(*i)));
@@ -215,11 +221,45 @@ Value Evaluator::evaluate_range(std::size_t begin, std::size_t end) {
 
 Value Evaluator::function_call(const ProgramToken& name) {
   const std::vector<CallArgument> arguments = call_arguments();
+  if (name.text == "get_inverse_kin") return inverse_kinematics(arguments, name.line);
   std::vector<Value> values;
   for (const CallArgument& argument : arguments) {
     values.push_back(evaluate_range(argument.begin, argument.end));
   }
   return builtin(std::string(name.text), values, name.line);
+}
+
+/// get_inverse_kin(x, qnear, maxPositionError, maxOrientationError, tcp): read as the pose x
+/// with the configuration nearest qnear; a `tcp` other than the active one is not read.
+Value Evaluator::inverse_kinematics(const std::vector<CallArgument>& arguments, int line) {
+  static const std::vector<std::string> kParameters = {"x", "qnear", "maxPositionError", "maxOrientationError", "tcp"};
+  std::map<std::string, Value> bound;
+  std::size_t positional = 0;
+  for (const CallArgument& argument : arguments) {
+    const std::string parameter = argument.name.empty() && positional < kParameters.size() ? kParameters[positional++] : argument.name;
+    if (std::find(kParameters.begin(), kParameters.end(), parameter) == kParameters.end()) {
+      cursor_.fail_at(line, "an argument of get_inverse_kin (x, qnear, maxPositionError, maxOrientationError, tcp)",
+                      parameter.empty() ? "a sixth argument" : quote_source(parameter));
+    }
+    if (!bound.emplace(parameter, evaluate_range(argument.begin, argument.end)).second) {
+      cursor_.fail_at(line, "one value for " + parameter + " of get_inverse_kin", "a second one");
+    }
+  }
+  if (!bound.count("x")) cursor_.fail_at(line, "a pose x for get_inverse_kin", "none");
+  if (bound.count("tcp")) return Unknown{"get_inverse_kin() for a tcp= other than the active one (not read)"};
+  for (const auto& [parameter, value] : bound) {
+    if (unknown_of(value)) return value;
+  }
+  InverseKinematics result;
+  const auto* pose = std::get_if<Eigen::Isometry3d>(&bound.at("x"));
+  if (!pose) cursor_.fail_at(line, "a pose x for get_inverse_kin", describe(bound.at("x")));
+  result.pose = *pose;
+  if (bound.count("qnear")) {
+    const auto* qnear = std::get_if<NumberList>(&bound.at("qnear"));
+    if (!qnear || qnear->size() != 6) cursor_.fail_at(line, "6 joint values for qnear of get_inverse_kin", describe(bound.at("qnear")));
+    result.qnear = *qnear;
+  }
+  return result;
 }
 
 Value Evaluator::builtin(const std::string& name, const std::vector<Value>& arguments, int line) {

@@ -20,8 +20,15 @@ struct Unknown {
 
 using NumberList = std::vector<double>;
 
-/// A URScript value: number, boolean, string, list of numbers, pose (X, SI), or unknown.
-using Value = std::variant<double, bool, std::string, NumberList, Eigen::Isometry3d, Unknown>;
+/// `get_inverse_kin(x, qnear)`: the joints of pose x (active TCP) nearest qnear (empty: none given).
+struct InverseKinematics {
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  NumberList qnear;
+};
+
+/// A URScript value: number, boolean, string, list of numbers, pose (X, SI), the joints of an
+/// inverse-kinematics call, or unknown.
+using Value = std::variant<double, bool, std::string, NumberList, Eigen::Isometry3d, InverseKinematics, Unknown>;
 
 /// "a number", "a pose", ... for messages.
 std::string describe(const Value& value);
@@ -62,6 +69,7 @@ class Evaluator {
   Value name_value(const ProgramToken& name);
   Value function_call(const ProgramToken& name);
   Value builtin(const std::string& name, const std::vector<Value>& arguments, int line);
+  Value inverse_kinematics(const std::vector<CallArgument>& arguments, int line);
   Value pose_literal();
   Value list_literal();
   Value arithmetic(const std::string& op, const Value& left, const Value& right, int line);

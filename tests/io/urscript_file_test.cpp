@@ -46,7 +46,6 @@ void expect_pose(const ProgramTarget& target, const Pose& expected) {
   const CartesianTarget& c = cartesian(target);
   expect_vector_near(c.p_BT, expected.t, 1e-15);
   expect_matrix_near(c.R_BT.toRotationMatrix(), expected.R, 1e-15);
-  EXPECT_TRUE(std::holds_alternative<std::monostate>(c.configuration));
 }
 
 TEST(UrScriptFile, ReadsThePickAndPlaceSample) {
@@ -66,7 +65,8 @@ TEST(UrScriptFile, ReadsThePickAndPlaceSample) {
   const int lines[] = {17, 18, 19, 21, 22, 23, 25, 26};
   const MotionKind kinds[] = {MotionKind::kJoint, MotionKind::kJoint, MotionKind::kLinear, MotionKind::kLinear,
                               MotionKind::kCircular, MotionKind::kLinear, MotionKind::kLinear, MotionKind::kJoint};
-  const char* names[] = {"home_q", "above_pick", "pick", "above_pick", "above_place", "place", "above_place", "home_q"};
+  const char* names[] = {"home_q", "get_inverse_kin(above_pick, qnear=home_q)", "pick", "above_pick",
+                         "above_place", "place", "above_place", "home_q"};
   for (std::size_t i = 0; i < m.size(); ++i) {
     EXPECT_EQ(m[i].line, lines[i]) << i;
     EXPECT_EQ(m[i].file, kSample) << i;
@@ -80,7 +80,13 @@ TEST(UrScriptFile, ReadsThePickAndPlaceSample) {
     EXPECT_EQ(m[i].via.has_value(), i == 4) << i;
   }
   EXPECT_EQ(joints(m[0].target), home);
-  expect_pose(m[1].target, above_pick);
+  expect_pose(m[1].target, above_pick);  // get_inverse_kin(above_pick, qnear=home_q): the pose, nearest home
+  const auto* near = std::get_if<UrNearestJoints>(&cartesian(m[1].target).configuration);
+  ASSERT_NE(near, nullptr);
+  EXPECT_EQ(near->qnear, home);
+  for (const std::size_t i : {2, 3, 5, 6}) {
+    EXPECT_TRUE(std::holds_alternative<std::monostate>(cartesian(m[i].target).configuration)) << i;
+  }
   expect_pose(m[2].target, pick);
   expect_pose(m[3].target, above_pick);
   expect_pose(*m[4].via, pose(0.25, 0.2, 0.3, 0, kRoughPi, 0));
@@ -165,6 +171,15 @@ TEST(UrScriptFile, TopLevelStatementsControlFlowAndCallsWithArguments) {
   EXPECT_EQ(program.motions[0].tool_name, "flange (no set_tcp)");
 }
 
+TEST(UrScriptFile, GetInverseKinIsThePoseWithTheNearestConfiguration) {
+  const RobotProgram program = parse("set_tcp(p[0, 0, 0, 0, 0, 0])\nmovel(get_inverse_kin(p[0.3, 0, 0.2, 0, 0, 0]))\n");
+  const CartesianTarget& target = cartesian(program.motions.at(0).target);
+  EXPECT_EQ(target.p_BT, Eigen::Vector3d(0.3, 0, 0.2));
+  const auto* near = std::get_if<UrNearestJoints>(&target.configuration);
+  ASSERT_NE(near, nullptr);
+  EXPECT_EQ(near->qnear.size(), 0);  // none given: nearest the joints the robot has then
+}
+
 TEST(UrScriptFile, UnknownValuesAreWarnedAndRejectedWhenAMotionNeedsThem) {
   const RobotProgram program = parse("x = get_actual_tcp_pose()\nmovej([0, 0, 0, 0, 0, 0])\n");
   ASSERT_EQ(program.warnings.size(), 2u);
@@ -176,9 +191,11 @@ TEST(UrScriptFile, UnknownValuesAreWarnedAndRejectedWhenAMotionNeedsThem) {
   expect_error("movel(wp9)\n", 1,
                "expected a joint list or pose the reader can compute for pose of movel, found "
                "'wp9', which this program does not assign before line 1");
-  expect_error("movej(get_inverse_kin(p[0.3, 0, 0.2, 0, 0, 0]))\n", 1,
+  expect_error("movej(get_inverse_kin(p[0.3, 0, 0.2, 0, 0, 0], tcp=p[0, 0, 0.1, 0, 0, 0]))\n", 1,
                "expected a joint list or pose the reader can compute for q of movej, found "
-               "get_inverse_kin(), which the reader does not evaluate");
+               "get_inverse_kin() for a tcp= other than the active one (not read)");
+  expect_error("movel(get_inverse_kin(p[0.3, 0, 0.2, 0, 0, 0], [0, 0, 0]))\n", 1,
+               "expected 6 joint values for qnear of get_inverse_kin, found a list of 3 numbers");
 }
 
 TEST(UrScriptFile, RejectsMalformedProgramsNamingFileLineAndExpectation) {

@@ -55,8 +55,15 @@ struct RapidConfData {
   int cfx = 0;
 };
 
-/// The arm configuration a Cartesian target names (none for UR, which has no such data).
-using ArmConfiguration = std::variant<std::monostate, KrlStatusTurn, RapidConfData>;
+/// URScript `get_inverse_kin(x, qnear)`: the controller takes the inverse-kinematics solution
+/// nearest `qnear` (rad). Empty `qnear` (none given): nearest the joints the robot has then,
+/// i.e. at the end of the previous motion.
+struct UrNearestJoints {
+  Eigen::VectorXd qnear;
+};
+
+/// The arm configuration a Cartesian target names, as the program gives it (monostate: none).
+using ArmConfiguration = std::variant<std::monostate, KrlStatusTurn, RapidConfData, UrNearestJoints>;
 
 /// \brief A target given as a TCP pose in the motion's base/work-object frame B.
 struct CartesianTarget {
