@@ -12,7 +12,7 @@ shift || true
 targets=("$@")
 if [ "${#targets[@]}" -eq 0 ]; then
   targets=(robot environment path profile_table certificate certificate_checker
-           trajectory_csv trajectory_json)
+           trajectory_csv trajectory_json urscript krl rapid)
 fi
 build_dir="${GRPVSS_FUZZ_BUILD_DIR:-$here/build-fuzz}"
 jobs="${GRPVSS_JOBS:-$(nproc)}"
@@ -30,7 +30,8 @@ for package in clang libclang-rt-14-dev; do
   fi
 done
 cmake -S "$here/fuzz" -B "$build_dir" -DCMAKE_CXX_COMPILER=clang++ >/dev/null
-cmake --build "$build_dir" -j "$jobs"
+# Only the targets asked for: the program readers' targets do not need the CGAL library.
+cmake --build "$build_dir" -j "$jobs" --target "${targets[@]/%/_fuzzer}"
 
 # Leaks are findings; UBSan reports abort (the targets are built with -fno-sanitize-recover).
 export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:allocator_may_return_null=0}"

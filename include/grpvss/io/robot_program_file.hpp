@@ -1,0 +1,20 @@
+#pragma once
+/// \file
+/// \brief One entry point for industrial robot programs: picks the reader by the file's
+/// extension (docs/robot-programs.md).
+
+#include <string>
+
+#include "grpvss/model/robot_program.hpp"
+
+namespace grpvss::io {
+
+/// \brief Reads a robot program, choosing the language by extension (ignoring case):
+/// `.script` (URScript, io/urscript_file.hpp), `.src` (KUKA KRL with its .dat and a
+/// $config.dat beside it, io/krl_file.hpp), `.mod`, `.modx`, `.prg`, `.sys`, `.sysx` (ABB
+/// RAPID, io/rapid_file.hpp).
+/// \throws InputError(path, 0, ...) for another extension (a PolyScope `.urp` and a KRL
+/// `.dat` alone are named as such), and whatever the chosen reader throws.
+RobotProgram read_robot_program(const std::string& path);
+
+}  // namespace grpvss::io
