@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "grpvss/common/input_error.hpp"
+#include "grpvss/kinematics/automatic_ik.hpp"
 #include "grpvss/kinematics/forward_kinematics.hpp"
 #include "grpvss/kinematics/ibm7545_ik.hpp"
 #include "grpvss/kinematics/ik_plugin_loader.hpp"
@@ -15,16 +16,25 @@ std::shared_ptr<const kinematics::InverseKinematics> select_ik(const std::string
                                                               const RobotModel& robot,
                                                               const std::string& robot_file) {
   const std::string plugin_prefix = "plugin:";
-  if (spec == "auto") return kinematics::make_default_ik(robot);
+  if (spec == "auto") return kinematics::make_automatic_ik(robot);
   if (spec == "numeric") return kinematics::make_numeric_ik(robot);
   if (spec == "ibm7545") {
     if (!kinematics::is_ibm7545_structure(robot))
       throw InputError(robot_file, 0, "a robot of the IBM 7545 structure for --ik ibm7545");
     return kinematics::make_ibm7545_ik(robot);
   }
+  if (spec == "opw" || spec == "ur") {
+    kinematics::IkChoice choice =
+        spec == "opw" ? kinematics::make_opw_ik(robot) : kinematics::make_ur_ik(robot);
+    if (!choice.ik) {
+      throw InputError(robot_file, 0, "a robot of the " + std::string(spec == "opw" ? "OPW" : "UR") +
+                                          " family for --ik " + spec, choice.reason);
+    }
+    return std::move(choice.ik);
+  }
   if (spec.rfind(plugin_prefix, 0) == 0 && spec.size() > plugin_prefix.size())
     return kinematics::load_ik_plugin(spec.substr(plugin_prefix.size()), robot);
-  throw InputError("--ik", 0, "auto, ibm7545, numeric or plugin:PATH.so", "'" + spec + "'");
+  throw InputError("--ik", 0, "auto, ibm7545, opw, ur, numeric or plugin:PATH.so", "'" + spec + "'");
 }
 
 KinematicsAccess make_kinematics_access(const RobotModel& robot,

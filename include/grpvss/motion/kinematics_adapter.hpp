@@ -12,11 +12,12 @@
 
 namespace grpvss::motion {
 
-/// \brief The IK named by `spec`: "auto" (closed form for the IBM 7545 structure, numeric
-/// otherwise), "ibm7545", "numeric", or "plugin:PATH.so".
+/// \brief The IK named by `spec`: "auto" (kinematics::make_automatic_ik: the IBM 7545 closed
+/// form, else OPW, else UR closed form, else numeric), "ibm7545", "opw", "ur", "numeric", or
+/// "plugin:PATH.so" (docs/ik.md).
 /// \throws grpvss::InputError for an unknown name (file "--ik", line 0), a robot that is not
-/// of the IBM 7545 structure for "ibm7545" (the robot file, line 0), or a plug-in that cannot
-/// be loaded.
+/// of the IBM 7545 structure for "ibm7545" or not of the family for "opw" / "ur" (the robot
+/// file, line 0, found: the reason), or a plug-in that cannot be loaded.
 std::shared_ptr<const kinematics::InverseKinematics> select_ik(const std::string& spec,
                                                               const RobotModel& robot,
                                                               const std::string& robot_file);
