@@ -158,7 +158,7 @@ void register_check_certificate_command(CLI::App& app, int& exit_code) {
   command->add_option("--profile-table", args->profile_table,
                       "Motion-time table the certificate was made with (docs/trajectories.md)");
   CLI::Option* ik = command->add_option(
-      "--ik", args->ik_text, "IK: auto, ibm7545, numeric or plugin:PATH.so (must be the certificate's)");
+      "--ik", args->ik_text, "IK: auto, ibm7545, opw, ur, numeric or plugin:PATH.so (must be the certificate's)");
   command->add_option("CERT", args->certificate_file, "Certificate written by verify")->required();
   command->add_flag("--json", args->json, "Print the result as JSON");
   command->add_flag("--quiet", args->quiet, "Print nothing; the exit code tells the result");

@@ -91,7 +91,7 @@ void register_trajectory_command(CLI::App& app, int& exit_code) {
       ->capture_default_str();
   command->add_option("--profile-table", args->profile_table,
                       "Motion-time table replacing the ideal trapezoids (docs/trajectories.md)");
-  command->add_option("--ik", args->ik, "IK: auto, ibm7545, numeric or plugin:PATH.so")
+  command->add_option("--ik", args->ik, "IK: auto, ibm7545, opw, ur, numeric or plugin:PATH.so (docs/ik.md)")
       ->capture_default_str();
   command->add_option("--at", args->at, "Path times (s) at which to print the joints")
       ->delimiter(',')

@@ -35,7 +35,7 @@ void add_input_options(CLI::App& command, VerifyArguments& args) {
       ->capture_default_str();
   command.add_option("--profile-table", args.profile_table,
                      "Motion-time table replacing the ideal trapezoids (docs/trajectories.md)");
-  command.add_option("--ik", args.ik, "IK: auto, ibm7545, numeric or plugin:PATH.so")
+  command.add_option("--ik", args.ik, "IK: auto, ibm7545, opw, ur, numeric or plugin:PATH.so (docs/ik.md)")
       ->capture_default_str();
 }
 
@@ -78,10 +78,12 @@ kinematics::IkChoice parse_ik_choice(const std::string& text) {
   if (text == "auto") return {kinematics::IkMethod::kAuto, {}};
   if (text == "numeric") return {kinematics::IkMethod::kNumeric, {}};
   if (text == "ibm7545") return {kinematics::IkMethod::kIbm7545, {}};
+  if (text == "opw") return {kinematics::IkMethod::kOpw, {}};
+  if (text == "ur") return {kinematics::IkMethod::kUr, {}};
   if (text.rfind(plugin_prefix, 0) == 0 && text.size() > plugin_prefix.size()) {
     return {kinematics::IkMethod::kPlugin, text.substr(plugin_prefix.size())};
   }
-  throw InputError("--ik", 0, "auto, ibm7545, numeric or plugin:PATH.so", "'" + text + "'");
+  throw InputError("--ik", 0, "auto, ibm7545, opw, ur, numeric or plugin:PATH.so", "'" + text + "'");
 }
 
 }  // namespace grpvss::app

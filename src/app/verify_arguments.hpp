@@ -39,7 +39,7 @@ void add_input_options(CLI::App& command, VerifyArguments& args);
 
 /// The CLI's words turned into the typed request, once (reads the profile table file).
 certify::SetupRequest make_setup_request(const VerifyArguments& args);
-/// `--ik`: auto, ibm7545, numeric or plugin:PATH.so. \throws InputError ("--ik", line 0).
+/// `--ik`: auto, ibm7545, opw, ur, numeric or plugin:PATH.so. \throws InputError ("--ik", line 0).
 kinematics::IkChoice parse_ik_choice(const std::string& text);
 
 }  // namespace grpvss::app

@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "grpvss/common/input_error.hpp"
+#include "grpvss/kinematics/automatic_ik.hpp"
 #include "grpvss/kinematics/forward_kinematics.hpp"
 #include "grpvss/kinematics/ibm7545_ik.hpp"
 #include "grpvss/kinematics/ik_plugin_loader.hpp"
@@ -15,12 +16,24 @@ std::shared_ptr<const kinematics::InverseKinematics> select_ik(const kinematics:
                                                               const RobotModel& robot,
                                                               const std::string& robot_file) {
   switch (choice.method) {
-    case kinematics::IkMethod::kAuto: return kinematics::make_default_ik(robot);
+    case kinematics::IkMethod::kAuto: return kinematics::make_automatic_ik(robot);
     case kinematics::IkMethod::kNumeric: return kinematics::make_numeric_ik(robot);
     case kinematics::IkMethod::kIbm7545:
       if (!kinematics::is_ibm7545_structure(robot))
         throw InputError(robot_file, 0, "a robot of the IBM 7545 structure for --ik ibm7545");
       return kinematics::make_ibm7545_ik(robot);
+    case kinematics::IkMethod::kOpw:
+    case kinematics::IkMethod::kUr: {
+      const bool opw = choice.method == kinematics::IkMethod::kOpw;
+      kinematics::FamilyIk family = opw ? kinematics::make_opw_ik(robot) : kinematics::make_ur_ik(robot);
+      if (!family.ik) {
+        throw InputError(robot_file, 0,
+                         std::string("a robot of the ") + (opw ? "OPW" : "UR") + " family for --ik " +
+                             (opw ? "opw" : "ur"),
+                         family.reason);
+      }
+      return std::move(family.ik);
+    }
     case kinematics::IkMethod::kPlugin:
       return kinematics::load_ik_plugin(choice.plugin_path, robot);
   }

@@ -32,8 +32,10 @@ class InverseKinematics {
 
 /// \brief Which IK a run uses (the CLI's `--ik`, parsed by the app).
 enum class IkMethod {
-  kAuto,     ///< closed form for the IBM 7545 structure, numeric otherwise
+  kAuto,     ///< a closed form where the robot's family has one (IBM 7545, OPW, UR), else numeric
   kIbm7545,  ///< the IBM 7545 closed form (the robot must have its structure)
+  kOpw,      ///< the OPW closed form (6-axis, spherical wrist; docs/ik.md)
+  kUr,       ///< the UR closed form (docs/ik.md)
   kNumeric,  ///< damped least squares
   kPlugin,   ///< a user's solver through the C ABI (docs/ik-plugin.md)
 };

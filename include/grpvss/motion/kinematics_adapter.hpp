@@ -12,9 +12,12 @@
 
 namespace grpvss::motion {
 
-/// \brief The IK `choice` names, for `robot`.
-/// \throws grpvss::InputError for a robot that is not of the IBM 7545 structure for
-/// IkMethod::kIbm7545 (the robot file, line 0), or a plug-in that cannot be loaded.
+/// \brief The IK `choice` names, for `robot` (docs/ik.md): kAuto is
+/// kinematics::make_automatic_ik (the IBM 7545 closed form, else OPW, else UR closed form, else
+/// numeric).
+/// \throws grpvss::InputError for a robot that is not of the IBM 7545 structure for kIbm7545 or
+/// not of the family for kOpw / kUr (the robot file, line 0, found: the reason), or a plug-in
+/// that cannot be loaded.
 std::shared_ptr<const kinematics::InverseKinematics> select_ik(const kinematics::IkChoice& choice,
                                                               const RobotModel& robot,
                                                               const std::string& robot_file);
