@@ -11,7 +11,7 @@ seconds="${1:-20}"
 shift || true
 targets=("$@")
 if [ "${#targets[@]}" -eq 0 ]; then
-  targets=(robot environment path profile_table certificate certificate_checker)
+  targets=(robot environment path profile_table certificate certificate_checker urdf srdf)
 fi
 build_dir="${GRPVSS_FUZZ_BUILD_DIR:-$here/build-fuzz}"
 jobs="${GRPVSS_JOBS:-$(nproc)}"
