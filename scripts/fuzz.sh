@@ -12,7 +12,7 @@ shift || true
 targets=("$@")
 if [ "${#targets[@]}" -eq 0 ]; then
   targets=(robot environment path profile_table certificate certificate_checker
-           trajectory_csv trajectory_json urscript krl rapid)
+           trajectory_csv trajectory_json urscript krl rapid urdf srdf)
 fi
 build_dir="${GRPVSS_FUZZ_BUILD_DIR:-$here/build-fuzz}"
 jobs="${GRPVSS_JOBS:-$(nproc)}"
