@@ -1,0 +1,50 @@
+/// \file
+/// \brief One closed group through the exact decomposition, verified before use.
+
+#include "grpvss/geometry/exact_group_decomposition.hpp"
+
+#include <utility>
+
+#include "grpvss/geometry/exact_cover_check.hpp"
+#include "grpvss/geometry/exact_volume.hpp"
+#include "grpvss/geometry/nef_decomposition.hpp"
+
+namespace grpvss::geometry {
+
+ExactGroupPieces exact_group_pieces(const std::vector<Eigen::Vector3d>& vertices,
+                                    std::vector<std::array<int, 3>> triangles,
+                                    const ConvexPolytope& hull) {
+  ExactGroupPieces result;
+  const mpq_class six = six_signed_volume(vertices, triangles);
+  if (sgn(six) == 0) {
+    result.fallback_reason = "the surface encloses no volume";
+    return result;
+  }
+  if (sgn(six) < 0) {  // inward: the Nef construction and the check want outward triangles
+    for (auto& t : triangles) std::swap(t[1], t[2]);
+  }
+  // Hull volume = solid volume and solid inside the hull: the solid is its hull.
+  if (six_volume(hull) == abs(six)) {
+    result.pieces.push_back(hull);
+    result.convex = true;
+    return result;
+  }
+  if (surface_self_intersects(vertices, triangles)) {
+    result.fallback_reason = "the surface intersects itself";
+    return result;
+  }
+  const std::vector<RationalPiece> exact = nef_convex_decomposition(vertices, triangles);
+  // proof: proofs/shape-containment.md#lemma-exact-cover (the decomposition is not trusted)
+  const ExactCoverCheck check = verify_exact_cover(exact, vertices, triangles);
+  if (!check.covered) {
+    result.fallback_reason = "the exact pieces failed verification: " + check.failure;
+    return result;
+  }
+  for (const RationalPiece& piece : exact) {
+    // proof: proofs/shape-containment.md#lemma-outward-rounding
+    result.pieces.push_back(ConvexPolytope::from_points(enclosing_double_points(piece)));
+  }
+  return result;
+}
+
+}  // namespace grpvss::geometry
