@@ -3,6 +3,8 @@
 
 #include "grpvss/geometry/exact_group_decomposition.hpp"
 
+#include <exception>
+#include <string>
 #include <utility>
 
 #include "grpvss/geometry/exact_cover_check.hpp"
@@ -33,7 +35,13 @@ ExactGroupPieces exact_group_pieces(const std::vector<Eigen::Vector3d>& vertices
     result.fallback_reason = "the surface intersects itself";
     return result;
   }
-  const std::vector<RationalPiece> exact = nef_convex_decomposition(vertices, triangles);
+  std::vector<RationalPiece> exact;
+  try {
+    exact = nef_convex_decomposition(vertices, triangles);
+  } catch (const std::exception& e) {  // a CGAL precondition or assertion: the hull is sound
+    result.fallback_reason = std::string("the exact decomposition failed: ") + e.what();
+    return result;
+  }
   // proof: proofs/shape-containment.md#lemma-exact-cover (the decomposition is not trusted)
   const ExactCoverCheck check = verify_exact_cover(exact, vertices, triangles);
   if (!check.covered) {

@@ -146,7 +146,9 @@ ConvexPieces PieceCollector::finish() {
 }
 
 void warn_about_structure(const MeshTopology& topology, PieceCollector& collector) {
-  if (topology.unused_vertices > 0) {
+  if (topology.unused_vertices == 1) {
+    collector.warn("1 vertex is used by no triangle and is ignored");
+  } else if (topology.unused_vertices > 1) {
     collector.warn(std::to_string(topology.unused_vertices) +
                    " vertices are used by no triangle and are ignored");
   }

@@ -185,17 +185,40 @@ TEST(MeshDecomposition, ExactModeRoundsRationalPieceVerticesOutward) {
 }
 
 TEST(MeshDecomposition, ExactModeCoversATorusWithManyVerifiedPieces) {
-  // 96 triangles, genus 1, every edge of the inner ring reflex: CGAL 5.5 makes 69 pieces
-  // (many slivers), all verified and rounded outward.
-  const TriangleMesh ring = meshes::torus(8, 6, 3.0, 1.0);
+  // 48 triangles, genus 1, the inner ring's edges reflex: CGAL 5.5 makes 34 pieces (many
+  // slivers), all verified and rounded outward.
+  const TriangleMesh ring = meshes::torus(6, 4, 3.0, 1.0);
   const ConvexPieces result = decompose(ring, DecomposeMode::kExact);
-  EXPECT_EQ(result.pieces.size(), 69u);
+  EXPECT_EQ(result.pieces.size(), 34u);
   EXPECT_TRUE(result.warnings.empty());
   EXPECT_GE(*result.volume_ratio, 1.0);
   EXPECT_LT(*result.volume_ratio, 1.0 + 1e-12);
-  EXPECT_GT(expect_pieces_contain_solid(ring, result, 300), 30);
+  EXPECT_GT(expect_pieces_contain_solid(ring, result, 300), 20);
   // One hull fills the hole: the exact pieces are far tighter.
   EXPECT_GT(*decompose(ring, DecomposeMode::kHull).volume_ratio, 1.5);
+}
+
+TEST(MeshDecomposition, ExactModeHandlesFinelyTriangulatedStlFaces) {
+  // 448 triangles without shared vertices: every flat face is many coplanar triangles, all
+  // of them coverers of the piece facets in their plane.
+  const TriangleMesh fine = meshes::subdivided(meshes::u_fixture(), 2);
+  ASSERT_EQ(fine.triangles.size(), 448u);
+  const ConvexPieces result = decompose(fine, DecomposeMode::kExact);
+  ASSERT_EQ(result.pieces.size(), 3u);
+  EXPECT_EQ(sorted_volumes(result), (std::vector<double>{4.0, 4.0, 10.0}));
+  EXPECT_EQ(*result.volume_ratio, 1.0);
+  EXPECT_TRUE(result.warnings.empty());
+}
+
+TEST(MeshDecomposition, UnusedVerticesAreIgnoredWithAWarning) {
+  TriangleMesh l = meshes::l_bracket();
+  l.vertices.emplace_back(100, 100, 100);  // far outside: would blow up the hull if used
+  ConvexPieces result = decompose(l, DecomposeMode::kHull);
+  EXPECT_EQ(sorted_volumes(result), std::vector<double>{18.0});
+  EXPECT_EQ(texts(result).front(), "1 vertex is used by no triangle and is ignored");
+  l.vertices.emplace_back(-100, 0, 0);
+  result = decompose(l, DecomposeMode::kParts);
+  EXPECT_EQ(texts(result).front(), "2 vertices are used by no triangle and are ignored");
 }
 
 TEST(MeshDecomposition, ExactModeKeepsConvexComponentsWhole) {

@@ -88,6 +88,30 @@ inline TriangleMesh unshared(const TriangleMesh& shared) {
   return mesh;
 }
 
+/// Each triangle split into 4 by its edge midpoints, `levels` times (4^levels as many
+/// triangles, same surface). Triangles get their own vertices, as in an STL file; shared
+/// midpoints are bit-identical ((p + q) / 2 either way), so welding joins them again.
+inline TriangleMesh subdivided(const TriangleMesh& mesh, int levels) {
+  TriangleMesh current = unshared(mesh);
+  for (int level = 0; level < levels; ++level) {
+    TriangleMesh next;
+    next.source = current.source;
+    for (const auto& t : current.triangles) {
+      const Eigen::Vector3d a = current.vertices[t[0]], b = current.vertices[t[1]],
+                            c = current.vertices[t[2]];
+      const Eigen::Vector3d ab = (a + b) / 2, bc = (b + c) / 2, ca = (c + a) / 2;
+      for (const auto& [p, q, r] : {std::array<Eigen::Vector3d, 3>{a, ab, ca}, {ab, b, bc},
+                                    {ca, bc, c}, {ab, bc, ca}}) {
+        const int base = static_cast<int>(next.vertices.size());
+        next.vertices.insert(next.vertices.end(), {p, q, r});
+        next.triangles.push_back({base, base + 1, base + 2});
+      }
+    }
+    current = std::move(next);
+  }
+  return current;
+}
+
 /// Torus around z: `around` segments of the major circle (radius R), `across` of the tube
 /// (radius r); 2 * around * across outward triangles. Vertices rounded doubles.
 inline TriangleMesh torus(int around, int across, double R, double r) {

@@ -28,7 +28,9 @@ struct ExactCoverCheck {
 ///   the whole boundary of conv(vertices), and the piece is full-dimensional);
 /// - (F) every piece triangle t is covered, up to a set of zero area, by the surface
 ///   triangles in t's plane together with the triangles of OTHER pieces lying in t's plane
-///   with the opposite outward normal.
+///   with the opposite outward normal. Decided per facet (a piece's triangles in one plane
+///   merged into their convex hull, which they tile once (B) holds): exact plane keys, a 2-D
+///   projection, exact convex clipping of the facet by each coverer.
 /// There must be at least one piece. The lemma's remaining hypothesis — the surface is a
 /// connected, closed, embedded 2-manifold — is the caller's (oriented_manifold_problem(),
 /// surface_self_intersects()). Then the union of conv(piece vertices) contains the solid.
