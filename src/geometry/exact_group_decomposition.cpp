@@ -10,12 +10,13 @@
 #include "grpvss/geometry/exact_cover_check.hpp"
 #include "grpvss/geometry/exact_volume.hpp"
 #include "grpvss/geometry/nef_decomposition.hpp"
+#include "grpvss/geometry/piece_merging.hpp"
 
 namespace grpvss::geometry {
 
 ExactGroupPieces exact_group_pieces(const std::vector<Eigen::Vector3d>& vertices,
                                     std::vector<std::array<int, 3>> triangles,
-                                    const ConvexPolytope& hull) {
+                                    const ConvexPolytope& hull, double merge_volume_fraction) {
   ExactGroupPieces result;
   const mpq_class six = six_signed_volume(vertices, triangles);
   if (sgn(six) == 0) {
@@ -48,10 +49,16 @@ ExactGroupPieces exact_group_pieces(const std::vector<Eigen::Vector3d>& vertices
     result.fallback_reason = "the exact pieces failed verification: " + check.failure;
     return result;
   }
+  std::vector<ConvexPolytope> rounded;
   for (const RationalPiece& piece : exact) {
     // proof: proofs/shape-containment.md#lemma-outward-rounding
-    result.pieces.push_back(ConvexPolytope::from_points(enclosing_double_points(piece)));
+    rounded.push_back(ConvexPolytope::from_points(enclosing_double_points(piece)));
   }
+  if (merge_volume_fraction > 0.0) {
+    const double solid_volume = mpq_class(abs(six)).get_d() / 6.0;
+    rounded = merge_pieces(std::move(rounded), merge_volume_fraction * solid_volume);
+  }
+  result.pieces = std::move(rounded);
   return result;
 }
 

@@ -102,7 +102,8 @@ void PieceCollector::add_exact(const std::vector<int>& group, const std::string&
   const ConvexPolytope group_hull = hull(group, origin);
   LocalSurface surface = local_surface(topology_, group);
   ExactGroupPieces exact =
-      exact_group_pieces(surface.vertices, std::move(surface.triangles), group_hull);
+      exact_group_pieces(surface.vertices, std::move(surface.triangles), group_hull,
+                         options_.merge_volume_fraction);
   if (exact.fallback_reason) {
     warn(origin + ": not decomposed exactly (" + *exact.fallback_reason +
          "); its convex hull is used");
@@ -210,6 +211,9 @@ std::string_view decompose_mode_name(DecomposeMode mode) {
 ConvexPieces decompose_mesh(const TriangleMesh& mesh, const DecompositionOptions& options) {
   if (!(options.warn_volume_ratio >= 1.0)) {
     throw std::invalid_argument("warn_volume_ratio must be >= 1");
+  }
+  if (!(options.merge_volume_fraction >= 0.0 && options.merge_volume_fraction <= 1.0)) {
+    throw std::invalid_argument("merge_volume_fraction must be in [0, 1]");
   }
   validate_mesh(mesh);
   const MeshTopology topology = mesh_topology(mesh);

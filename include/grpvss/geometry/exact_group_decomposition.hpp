@@ -31,10 +31,11 @@ struct ExactGroupPieces {
 /// signed volume); if the hull's exact volume equals the solid's, the hull is the answer;
 /// else reject self-intersecting surfaces (surface_self_intersects), decompose
 /// (nef_convex_decomposition), verify (verify_exact_cover) and round each piece outward
-/// (enclosing_double_points, exact hull).
+/// (enclosing_double_points, exact hull); finally merge thin pieces (merge_pieces) while the
+/// added volume stays within merge_volume_fraction of the solid's volume.
 /// proof: proofs/shape-containment.md#lemma-exact-cover
 ExactGroupPieces exact_group_pieces(const std::vector<Eigen::Vector3d>& vertices,
                                     std::vector<std::array<int, 3>> triangles,
-                                    const ConvexPolytope& hull);
+                                    const ConvexPolytope& hull, double merge_volume_fraction);
 
 }  // namespace grpvss::geometry

@@ -51,6 +51,9 @@ struct DecompositionOptions {
   double flat_thickness = 0.0;
   /// Warn when the pieces' total volume exceeds this multiple of the mesh volume.
   double warn_volume_ratio = 1.2;
+  /// `exact` only: thin pieces are merged into hulls of unions while the added volume stays
+  /// within this fraction of each component's volume (0: keep every piece).
+  double merge_volume_fraction = 1e-3;
 };
 
 /// \brief The convex pieces of one mesh, for the certified core.
