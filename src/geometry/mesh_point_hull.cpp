@@ -9,7 +9,7 @@
 #include <stdexcept>
 
 #include "grpvss/common/input_error.hpp"
-#include "grpvss/geometry/minkowski_offset.hpp"
+#include "grpvss/geometry/points_in_polytope.hpp"
 #include "grpvss/geometry/rational_vector.hpp"
 #include "grpvss/geometry/shape_limits.hpp"
 
@@ -98,7 +98,7 @@ ConvexPolytope mesh_point_hull(const std::vector<Eigen::Vector3d>& points, doubl
   }
   // proof: proofs/shape-containment.md#lemma-hull-cover (checked, not assumed)
   ConvexPolytope hull = ConvexPolytope::from_points(hull_points);
-  if (!contains_ball_sum_exactly(hull, points, 0.0)) {
+  if (!points_inside_exactly(hull, points)) {
     throw std::logic_error("mesh_point_hull: the exact hull does not contain its points");
   }
   return hull;

@@ -15,7 +15,7 @@ namespace grpvss::geometry {
 
 /// \brief conv(points) as an exact ConvexPolytope (vertices are input doubles, bit for bit),
 /// accepted only after the exact check that every point is inside it
-/// (contains_ball_sum_exactly with radius 0: the hull is not taken on trust).
+/// (points_inside_exactly: the hull is not taken on trust).
 ///
 /// Flat groups (all points exactly coplanar, not collinear): if \p flat_thickness > 0 every
 /// point p is replaced by p +- (flat_thickness / 2) e_k, k the axis closest to the plane's
