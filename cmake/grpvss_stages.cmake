@@ -49,9 +49,11 @@ endfunction()
 function(grpvss_add_stages)
   grpvss_add_stage(common PUBLIC_LIBS Eigen3::Eigen)
   grpvss_add_stage(model DEPENDS common)
-  grpvss_add_stage(io DEPENDS model PRIVATE_LIBS fmt::fmt)
+  grpvss_add_stage(io DEPENDS model
+                   PRIVATE_LIBS fmt::fmt nlohmann_json::nlohmann_json urdfdom::urdfdom_model
+                                assimp::assimp tinyxml2::tinyxml2)
   grpvss_add_stage(kinematics DEPENDS model PRIVATE_LIBS fmt::fmt ${CMAKE_DL_LIBS})
-  grpvss_add_stage(motion DEPENDS kinematics PRIVATE_LIBS fmt::fmt)
+  grpvss_add_stage(motion DEPENDS kinematics PRIVATE_LIBS fmt::fmt gmpxx gmp)
   grpvss_add_stage(geometry DEPENDS model)
   # The only stage that includes CGAL (each CGAL translation unit costs ~20 s and 1.5 GB).
   grpvss_add_stage(exact DEPENDS geometry PRIVATE_LIBS CGAL::CGAL gmpxx gmp)

@@ -7,8 +7,8 @@
 #include <gmpxx.h>
 #include <gtest/gtest.h>
 
-#include "../src/motion/hermite_piece.hpp"
-#include "../src/motion/variation_arithmetic.hpp"
+#include "motion/hermite_piece.hpp"
+#include "motion/variation_arithmetic.hpp"
 
 namespace grpvss::motion::detail {
 namespace {
