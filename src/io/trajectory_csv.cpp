@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "grpvss/common/input_error.hpp"
-#include "grpvss/io/number_reader.hpp"
+#include "number_reader.hpp"
 #include "grpvss/io/trajectory_file.hpp"
 #include "trajectory_text.hpp"
 

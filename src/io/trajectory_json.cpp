@@ -9,7 +9,7 @@
 #include <fmt/format.h>
 
 #include "grpvss/common/input_error.hpp"
-#include "grpvss/io/number_reader.hpp"
+#include "number_reader.hpp"
 #include "grpvss/io/trajectory_file.hpp"
 #include "trajectory_json_lines.hpp"
 #include "trajectory_text.hpp"

@@ -32,6 +32,8 @@ void parse_krl_input(std::string_view input) {
 /// Runs every reproducer of `target`; returns how many there were.
 int run_reproducers(const std::string& target, void (*parse)(std::string_view)) {
   int count = 0;
+  // A target whose fuzzer never found anything has no folder (git keeps no empty folder).
+  if (!std::filesystem::exists(kRegressions + target)) return 0;
   for (const auto& entry : std::filesystem::directory_iterator(kRegressions + target)) {
     const std::string text = test::read_text_file(entry.path().string());
     ++count;
@@ -47,6 +49,7 @@ int run_reproducers(const std::string& target, void (*parse)(std::string_view)) 
 
 TEST(ProgramFuzzRegression, EveryReproducerEndsInAProgramOrAnInputError) {
   EXPECT_GE(run_reproducers("krl", parse_krl_input), 1);
+  // No URScript reproducer so far; any added later runs here.
   run_reproducers("urscript", [](std::string_view text) { parse_urscript(text, "fuzz.script"); });
   EXPECT_GE(run_reproducers("rapid", [](std::string_view text) { parse_rapid(text, "fuzz.mod"); }), 1);
 }
