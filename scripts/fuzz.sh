@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer targets (fuzz/, clang++ with ASan + UBSan) into ./build-fuzz and runs
-# each for a bounded time. Usage: scripts/fuzz.sh [SECONDS_PER_TARGET] [TARGET...]
+# Builds the libFuzzer targets (fuzz/) in the sanitizer build ./build-asan
+# (scripts/sanitized-build.sh: clang++, ASan + UBSan) and runs each for a bounded time.
+# Usage: scripts/fuzz.sh [SECONDS_PER_TARGET] [TARGET...]
 # Default 20 s per target (CI); pass e.g. 600 for a longer campaign. The committed seeds in
-# fuzz/corpus/<target>/ are read; new inputs go to build-fuzz/corpus/<target>/ (not committed);
+# fuzz/corpus/<target>/ are read; new inputs go to build-asan/fuzz-corpus/<target>/ (not committed);
 # a crash, leak, UB report, timeout or unexpected exception leaves its reproducer in
-# build-fuzz/artifacts/<target>/ and makes this script fail. docs/reliability.md.
+# build-asan/fuzz-artifacts/<target>/ and makes this script fail. docs/reliability.md.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 seconds="${1:-20}"
@@ -14,24 +15,11 @@ if [ "${#targets[@]}" -eq 0 ]; then
   targets=(robot environment path profile_table certificate certificate_checker
            trajectory_csv trajectory_json urscript krl rapid urdf srdf)
 fi
-build_dir="${GRPVSS_FUZZ_BUILD_DIR:-$here/build-fuzz}"
-jobs="${GRPVSS_JOBS:-$(nproc)}"
+build_dir="${GRPVSS_ASAN_BUILD_DIR:-$here/build-asan}"
 
-# clang and its libFuzzer runtime (Debian 12: clang 14), installed like scripts/setup.sh does.
-for package in clang libclang-rt-14-dev; do
-  if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed"; then
-    if [ "$(id -u)" = 0 ]; then
-      apt-get update -q >/dev/null
-      DEBIAN_FRONTEND=noninteractive apt-get install -y -q "$package" >/dev/null
-    else
-      echo "fuzz: missing Debian package $package (run as root to install it)" >&2
-      exit 1
-    fi
-  fi
-done
-cmake -S "$here/fuzz" -B "$build_dir" -DCMAKE_CXX_COMPILER=clang++ >/dev/null
-# Only the targets asked for: the program readers' targets do not need the CGAL library.
-cmake --build "$build_dir" -j "$jobs" --target "${targets[@]/%/_fuzzer}"
+# The fuzz targets live in the sanitizer build; only the targets asked for are built (the
+# program readers' targets do not need the CGAL stage).
+bash "$here/scripts/sanitized-build.sh" "${targets[@]/%/_fuzzer}"
 
 # Leaks are findings; UBSan reports abort (the targets are built with -fno-sanitize-recover).
 export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:allocator_may_return_null=0}"
@@ -39,13 +27,13 @@ export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
 status=0
 summary=()
 for target in "${targets[@]}"; do
-  corpus="$build_dir/corpus/$target"
-  artifacts="$build_dir/artifacts/$target"
+  corpus="$build_dir/fuzz-corpus/$target"
+  artifacts="$build_dir/fuzz-artifacts/$target"
   mkdir -p "$corpus" "$artifacts"
-  log="$build_dir/$target.log"
+  log="$build_dir/fuzz-$target.log"
   echo "fuzz: $target for ${seconds}s" >&2
   # -timeout: one input taking longer than 10 s is a hang; -rss_limit_mb bounds memory.
-  if "$build_dir/${target}_fuzzer" "$corpus" "$here/fuzz/corpus/$target" \
+  if "$build_dir/fuzz/${target}_fuzzer" "$corpus" "$here/fuzz/corpus/$target" \
       -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=65536 \
       -print_final_stats=1 -artifact_prefix="$artifacts/" >"$log" 2>&1; then
     runs="$(grep -o 'Done [0-9]* runs' "$log" | grep -o '[0-9]*' || echo '?')"

@@ -184,8 +184,8 @@ MeshTopology mesh_topology(const TriangleMesh& mesh) {
   }
   topology.unused_vertices =
       static_cast<int>(std::count(input_used.begin(), input_used.end(), 0));
-  for (const auto& [key, use] : edge_uses(mesh, topology, all_triangles(mesh.triangles.size()))) {
-    (void)key;
+  for (const auto& edge_and_use : edge_uses(mesh, topology, all_triangles(mesh.triangles.size()))) {
+    const auto& use = edge_and_use.second;  // a named reference: lambdas cannot capture bindings
     const auto note = [&use](int& count, std::optional<MeshEdgeExample>& first) {
       ++count;
       if (!first || use.example.triangle < first->triangle) first = use.example;

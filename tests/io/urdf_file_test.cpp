@@ -185,8 +185,10 @@ void expect_screw_mounts_at(double v) {
   EXPECT_EQ(d.side_joints[1].value, v);
   const Eigen::Vector3d half(0.011, 0.0075, 0.010);
   const double z = 0.0584 + 0.011 - 0.1034;
-  for (const auto& [finger, sign] : {std::pair<std::string, double>{"panda_leftfinger", 1.0},
-                                     std::pair<std::string, double>{"panda_rightfinger", -1.0}}) {
+  for (const auto& [finger_name, sign] :
+       {std::pair<std::string, double>{"panda_leftfinger", 1.0},
+        std::pair<std::string, double>{"panda_rightfinger", -1.0}}) {
+    const std::string& finger = finger_name;  // a lambda cannot capture a structured binding
     const auto it = std::find_if(d.links[7].collisions.begin(), d.links[7].collisions.end(),
                                  [&](const CollisionDescription& c) { return c.link == finger && c.index == 0; });
     ASSERT_NE(it, d.links[7].collisions.end());
