@@ -10,6 +10,7 @@
 #include "cell_sections.hpp"
 #include "cell_yaml.hpp"
 #include "did_you_mean.hpp"
+#include "yaml_document.hpp"
 #include "grpvss/common/input_error.hpp"
 #include "grpvss/io/length_unit.hpp"
 #include "grpvss/io/text_file.hpp"
@@ -92,18 +93,13 @@ CellDescription read_cell(CellYaml& yaml, const YAML::Node& root) {
   return cell;
 }
 
-// The one YAML document of the text (yaml-cpp's exceptions become InputErrors).
+// The one YAML document of the text (the caller turns yaml-cpp's exceptions into InputErrors).
 YAML::Node load_document(std::string_view text, const std::string& file_name) {
   if (text.size() > kMaxCellFileBytes) {
     throw InputError(file_name, 0, fmt::format("a cell file of at most {} bytes", kMaxCellFileBytes),
                      fmt::format("{} bytes", text.size()));
   }
-  const std::vector<YAML::Node> documents = YAML::LoadAll(std::string(text));
-  if (documents.size() != 1) {
-    throw InputError(file_name, documents.empty() ? 0 : yaml_line(documents[1]),
-                     "one YAML document (the cell)", fmt::format("{} documents", documents.size()));
-  }
-  return documents.front();
+  return load_single_yaml_document(text, file_name, "the cell");
 }
 
 std::string folder_of(const std::string& file_name) {
