@@ -51,7 +51,7 @@ function(grpvss_add_stages)
   grpvss_add_stage(model DEPENDS common)
   grpvss_add_stage(io DEPENDS model
                    PRIVATE_LIBS fmt::fmt nlohmann_json::nlohmann_json urdfdom::urdfdom_model
-                                assimp::assimp tinyxml2::tinyxml2)
+                                assimp::assimp tinyxml2::tinyxml2 yaml-cpp)
   grpvss_add_stage(kinematics DEPENDS model PRIVATE_LIBS fmt::fmt ${CMAKE_DL_LIBS})
   grpvss_add_stage(motion DEPENDS kinematics PRIVATE_LIBS fmt::fmt gmpxx gmp)
   grpvss_add_stage(geometry DEPENDS model)

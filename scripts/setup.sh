@@ -10,7 +10,7 @@ debian_packages=(
   libcgal-dev libgmp-dev libmpfr-dev libeigen3-dev libboost-dev
   libcli11-dev nlohmann-json3-dev libfmt-dev libssl-dev
   libgtest-dev libgmock-dev libbenchmark-dev bsdutils
-  liburdfdom-dev libassimp-dev libtinyxml2-dev
+  liburdfdom-dev libassimp-dev libtinyxml2-dev libyaml-cpp-dev
 )
 missing=()
 for package in "${debian_packages[@]}"; do
