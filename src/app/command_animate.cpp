@@ -1,5 +1,6 @@
 // `grpvss animate REPORT.json --html FILE [--force]`: the 3-D animation of a verification run
 // as one self-contained HTML file (docs/viewer.md). Reads only the JSON report.
+#include <cstdio>
 #include <memory>
 #include <string>
 
@@ -7,6 +8,7 @@
 
 #include "commands.hpp"
 #include "grpvss/report/atomic_output.hpp"
+#include "output_paths.hpp"
 #include "report_file.hpp"
 #include "viewer_html.hpp"
 
@@ -20,9 +22,12 @@ struct AnimateArguments {
 };
 
 int run_animate(const AnimateArguments& args) {
+  check_requested_outputs({{"--html", args.html}}, {args.report_file}, args.force);
   const nlohmann::json report = read_report_file(args.report_file);
   report::write_file_atomically(args.html, render_viewer_html(report, args.report_file), args.force);
-  fmt::print("HTML animation: {}\n", args.html);
+  // With --html - the page is standard output: the note goes to stderr.
+  fmt::print(args.html == report::kStandardOutput ? stderr : stdout, "HTML animation: {}\n",
+             args.html);
   return kExitOk;
 }
 

@@ -1,6 +1,7 @@
 // `grpvss render --report REPORT.json --step K --svg FILE`: the thesis's wireframe picture of
 // one step for a given view (defaults ANGLEX, ANGLEY, ANGLEZ = -75, 0, 170; SCALE 1; window
 // -50..50), interference points as red stars. Reads only the JSON report.
+#include <cstdio>
 #include <memory>
 #include <string>
 #include <vector>
@@ -11,6 +12,7 @@
 #include "grpvss/common/input_error.hpp"
 #include "grpvss/report/atomic_output.hpp"
 #include "grpvss/report/svg_render.hpp"
+#include "output_paths.hpp"
 #include "report_file.hpp"
 
 namespace grpvss::app {
@@ -26,13 +28,16 @@ struct RenderArguments {
 };
 
 int run_render(RenderArguments args) {
+  check_requested_outputs({{"--svg", args.svg}}, {args.report_file}, args.force);
   const nlohmann::json report = read_report_file(args.report_file);
   args.view.window_min = args.window.at(0);
   args.view.window_max = args.window.at(1);
   report::write_file_atomically(
       args.svg, report::render_step_svg(report, args.step, args.view, args.report_file),
       args.force);
-  fmt::print("SVG picture of step {}: {}\n", args.step, args.svg);
+  // With --svg - the picture is standard output: the note goes to stderr.
+  fmt::print(args.svg == report::kStandardOutput ? stderr : stdout,
+             "SVG picture of step {}: {}\n", args.step, args.svg);
   return kExitOk;
 }
 

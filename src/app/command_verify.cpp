@@ -1,12 +1,14 @@
 // `grpvss verify`: the simulation loop of thesis Figures 10-11 with the certified (default) or
 // the thesis step rule; writes the thesis output file, the JSON report and the certificate.
-// Exit codes: 0 CLEAR, 1 any other verdict, 2 input error (docs/user-guide.md). On a terminal
-// a progress bar runs on stderr (never when stderr is piped, never with --quiet).
+// Exit codes: one per verdict (commands.hpp, docs/user-guide.md#exit-codes). On a terminal a
+// progress bar runs on stderr (never when stderr is piped, never with --quiet). An output "-"
+// is standard output; the summary then goes to stderr.
 #include <cstdio>
-#include <filesystem>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>
@@ -27,6 +29,7 @@
 #include "grpvss/report/scene_json.hpp"
 #include "grpvss/report/thesis_output.hpp"
 #include "interactive/verdict_summary.hpp"
+#include "output_paths.hpp"
 #include "progress_bar.hpp"
 #include "verify_arguments.hpp"
 #include "viewer_html_stream.hpp"
@@ -39,12 +42,30 @@ std::string file_label(const std::string& path) {
   return slash == std::string::npos ? path : path.substr(slash + 1);
 }
 
-void print_summary(const certify::VerificationRun& run, const VerifyArguments& args) {
-  fmt::print("{}", verdict_summary(run.result));
-  if (!args.out.empty()) fmt::print("thesis output file: {}\n", args.out);
-  if (!args.json.empty()) fmt::print("JSON report: {}\n", args.json);
-  if (!args.certificate.empty()) fmt::print("certificate: {}\n", args.certificate);
-  if (!args.html.empty()) fmt::print("HTML animation: {}\n", args.html);
+std::vector<RequestedOutput> requested_outputs(const VerifyArguments& args) {
+  return {{"--out", args.out}, {"--json", args.json}, {"--html", args.html},
+          {"--certificate", args.certificate}};
+}
+
+std::string output_label(const std::string& path) {
+  return path == report::kStandardOutput ? "standard output" : path;
+}
+
+void print_summary(std::FILE* stream, const certify::VerificationRun& run,
+                   const VerifyArguments& args) {
+  fmt::print(stream, "{}", verdict_summary(run.result));
+  if (!args.out.empty()) fmt::print(stream, "thesis output file: {}\n", output_label(args.out));
+  if (!args.json.empty()) fmt::print(stream, "JSON report: {}\n", output_label(args.json));
+  if (!args.certificate.empty()) {
+    fmt::print(stream, "certificate: {}\n", output_label(args.certificate));
+  }
+  if (!args.html.empty()) fmt::print(stream, "HTML animation: {}\n", output_label(args.html));
+}
+
+// The report's scratch files go beside the report (or the page), in the temporary folder for
+// standard output.
+std::string scratch_location(const VerifyArguments& args) {
+  return args.json.empty() ? args.html : args.json;
 }
 
 int run_verify(const VerifyArguments& args) {
@@ -62,13 +83,10 @@ int run_verify(const VerifyArguments& args) {
   }
   // Refused before a long run rather than after it; the publication itself still never
   // clobbers (a file that appears meanwhile is refused then).
-  if (!args.force) {
-    for (const std::string* output : {&args.out, &args.json, &args.html, &args.certificate}) {
-      if (!output->empty() && std::filesystem::exists(*output)) {
-        throw report::OutputExistsError(*output);
-      }
-    }
-  }
+  const std::vector<RequestedOutput> requested = requested_outputs(args);
+  check_requested_outputs(requested, {args.robot_file, args.environment_file, args.path_file,
+                                    args.profile_table},
+                          args.force);
 
   // The outputs are written while the verification runs, in memory independent of the number
   // of steps (docs/reliability.md#resource-bounds); each is published only at its finish().
@@ -86,7 +104,7 @@ int run_verify(const VerifyArguments& args) {
     report::JsonReportStream::Outputs outputs;
     outputs.json_path = args.json;
     outputs.script_safe = !args.html.empty();  // the page embeds the report
-    outputs.scratch_path = args.json.empty() ? args.html : args.json;
+    outputs.scratch_path = scratch_location(args);
     outputs.force = args.force;
     json_report.emplace(robot, std::move(outputs));
     hooks.observers.push_back(&*json_report);
@@ -119,8 +137,10 @@ int run_verify(const VerifyArguments& args) {
                                           {"path", digests.path.sha256},
                                           {"ik", ik->name()}});
   }
-  if (!args.quiet) print_summary(run, args);
-  return run.result.verdict == certify::Verdict::kClear ? kExitOk : kExitFinding;
+  if (!args.quiet) {
+    print_summary(writes_to_standard_output(requested) ? stderr : stdout, run, args);
+  }
+  return exit_code_of(run.result.verdict);
 }
 
 }  // namespace
@@ -130,7 +150,7 @@ void register_verify_command(CLI::App& app, int& exit_code) {
   auto* command = app.add_subcommand("verify", "Verify a path: simulate, test, certify");
   add_verify_options(*command, *args);
   command->add_option("--out", args->out, "Thesis output file (Appendix A.3 layout)");
-  command->add_option("--json", args->json, "JSON report (docs/report-schema.md)");
+  command->add_option("--json", args->json, "JSON report (docs/report-schema.md); - for stdout");
   command->add_option("--html", args->html, "3-D animation of the run, one offline HTML file");
   command->add_option("--certificate", args->certificate,
                       "Certificate for check-certificate (docs/certificate.md)");

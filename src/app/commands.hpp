@@ -4,14 +4,9 @@
 
 #include <CLI/CLI.hpp>
 
-namespace grpvss::app {
+#include "exit_codes.hpp"
 
-/// Exit codes (docs/user-guide.md#exit-codes): 0 CLEAR/ok, 1 a finding (any other verdict, a
-/// rejected certificate, a thesis error), 2 input error, 3 internal error.
-constexpr int kExitOk = 0;
-constexpr int kExitFinding = 1;
-constexpr int kExitInputError = 2;
-constexpr int kExitInternalError = 3;
+namespace grpvss::app {
 
 void register_trajectory_command(CLI::App& app, int& exit_code);
 void register_verify_command(CLI::App& app, int& exit_code);

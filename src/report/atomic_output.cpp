@@ -58,7 +58,7 @@ class AtomicOutputFile::Temporary {
                                        counter.fetch_add(1)))
                   .string();
       // O_EXCL: never reuse (or follow a symlink planted at) an existing name.
-      fd_ = ::open(name_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+      fd_ = ::open(name_.c_str(), O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
       if (fd_ >= 0) return;
       if (errno != EEXIST) throw_system(final_path, "creating a temporary file", errno);
     }
@@ -90,6 +90,25 @@ class AtomicOutputFile::Temporary {
     if (::close(fd) != 0) throw_system(final_path, "closing", errno);
   }
 
+  // Standard output receives the whole content at once, after it was completely written.
+  void copy_to_standard_output(const std::string& final_path) {
+    if (::lseek(fd_, 0, SEEK_SET) != 0) throw_system(final_path, "rewinding", errno);
+    std::string chunk(std::size_t{1} << 16, '\0');
+    for (;;) {
+      const ssize_t got = ::read(fd_, chunk.data(), chunk.size());
+      if (got < 0 && errno == EINTR) continue;
+      if (got < 0) throw_system(final_path, "reading back", errno);
+      if (got == 0) break;
+      std::string_view piece(chunk.data(), static_cast<std::size_t>(got));
+      while (!piece.empty()) {
+        const ssize_t written = ::write(STDOUT_FILENO, piece.data(), piece.size());
+        if (written < 0 && errno == EINTR) continue;
+        if (written < 0) throw_system(final_path, "writing standard output", errno);
+        piece.remove_prefix(static_cast<std::size_t>(written));
+      }
+    }
+  }
+
   const std::string& name() const { return name_; }
   void forget() { name_.clear(); }
 
@@ -101,6 +120,7 @@ class AtomicOutputFile::Temporary {
 namespace {
 
 std::filesystem::path directory_of(const std::string& path) {
+  if (path == kStandardOutput) return std::filesystem::temp_directory_path();
   std::filesystem::path directory = std::filesystem::path(path).parent_path();
   if (directory.empty()) directory = ".";
   return directory;
@@ -142,6 +162,12 @@ void AtomicOutputFile::commit() {
   if (!temporary_) throw std::logic_error("AtomicOutputFile: committed twice");
   flush();
   std::string().swap(buffer_);
+  if (path_ == kStandardOutput) {
+    std::fflush(stdout);  // what the program printed before stays before the content
+    temporary_->copy_to_standard_output(path_);
+    temporary_.reset();
+    return;
+  }
   temporary_->sync_and_close(path_);
   if (force_) {
     if (std::rename(temporary_->name().c_str(), path_.c_str()) != 0) {

@@ -29,6 +29,8 @@ constexpr std::size_t kBufferBytes = std::size_t{1} << 20;
 int open_anonymous(const std::string& output_path) {
   std::filesystem::path directory = std::filesystem::path(output_path).parent_path();
   if (directory.empty()) directory = ".";
+  // Standard output has no folder: its scratch goes where its temporary file goes.
+  if (output_path == kStandardOutput) directory = std::filesystem::temp_directory_path();
   const int fd = ::open(directory.c_str(), O_RDWR | O_TMPFILE | O_CLOEXEC, 0600);
   if (fd >= 0) return fd;
   if (errno != EOPNOTSUPP && errno != EISDIR && errno != EINVAL) {

@@ -13,6 +13,11 @@
 
 namespace grpvss::report {
 
+/// The output path that means standard output (`--json -`): the content is gathered in a
+/// temporary file and copied to standard output only when complete (commit()), so a run that
+/// fails part-way prints nothing; `force` does not apply.
+inline constexpr const char* kStandardOutput = "-";
+
 /// \brief The output path already exists and --force was not given. Like the thesis program
 /// (A.2.2: "If one file with this name already exists in the disk, the execution of GRPVSS
 /// will be terminated."), GRPVSS refuses to overwrite an existing output name.
@@ -30,7 +35,8 @@ class OutputExistsError : public InputError {
 ///   never touched; where hard links are unsupported, renameat2(RENAME_NOREPLACE) is used;
 /// - `force == true`: rename(2) over `path` (atomic replacement).
 /// The directory is then fsync'ed (best effort). The temporary file is removed on every path,
-/// successful or not.
+/// successful or not. `path` kStandardOutput: the temporary file is made in the system's
+/// temporary folder and copied to standard output.
 ///
 /// \throws OutputExistsError when `path` exists and `force` is false.
 /// \throws InputError (file = `path`, line 0) when the directory is missing or not writable,
