@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer targets (fuzz/) in the sanitizer build ./build-asan
-# (scripts/sanitized-build.sh: clang++, ASan + UBSan) and runs each for a bounded time.
+# Builds the libFuzzer targets (fuzz/) into ./build-fuzz (scripts/fuzz-build.sh: clang++,
+# ASan + UBSan) and runs each for a bounded time.
 # Usage: scripts/fuzz.sh [SECONDS_PER_TARGET] [TARGET...]
 # Default 20 s per target (CI); pass e.g. 600 for a longer campaign. The committed seeds in
-# fuzz/corpus/<target>/ are read; new inputs go to build-asan/fuzz-corpus/<target>/ (not committed);
+# fuzz/corpus/<target>/ are read; new inputs go to build-fuzz/corpus/<target>/ (not committed);
 # a crash, leak, UB report, timeout or unexpected exception leaves its reproducer in
-# build-asan/fuzz-artifacts/<target>/ and makes this script fail. docs/reliability.md.
+# build-fuzz/artifacts/<target>/ and makes this script fail. docs/reliability.md.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 seconds="${1:-20}"
@@ -15,11 +15,10 @@ if [ "${#targets[@]}" -eq 0 ]; then
   targets=(robot environment path profile_table certificate certificate_checker
            trajectory_csv trajectory_json urscript krl rapid urdf srdf cell)
 fi
-build_dir="${GRPVSS_ASAN_BUILD_DIR:-$here/build-asan}"
+build_dir="${GRPVSS_FUZZ_BUILD_DIR:-$here/build-fuzz}"
 
-# The fuzz targets live in the sanitizer build; only the targets asked for are built (the
-# program readers' targets do not need the CGAL stage).
-bash "$here/scripts/sanitized-build.sh" "${targets[@]/%/_fuzzer}"
+# Only the targets asked for are built, each with the stages it needs.
+bash "$here/scripts/fuzz-build.sh" "${targets[@]/%/_fuzzer}"
 
 # Leaks are findings; UBSan reports abort (the targets are built with -fno-sanitize-recover).
 export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:allocator_may_return_null=0}"
@@ -27,10 +26,10 @@ export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
 status=0
 summary=()
 for target in "${targets[@]}"; do
-  corpus="$build_dir/fuzz-corpus/$target"
-  artifacts="$build_dir/fuzz-artifacts/$target"
+  corpus="$build_dir/corpus/$target"
+  artifacts="$build_dir/artifacts/$target"
   mkdir -p "$corpus" "$artifacts"
-  log="$build_dir/fuzz-$target.log"
+  log="$build_dir/$target.log"
   echo "fuzz: $target for ${seconds}s" >&2
   # -timeout: one input taking longer than 10 s is a hang; -rss_limit_mb bounds memory.
   if "$build_dir/fuzz/${target}_fuzzer" "$corpus" "$here/fuzz/corpus/$target" \

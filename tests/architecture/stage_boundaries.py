@@ -76,7 +76,8 @@ def main():
             result = subprocess.run(probe_command(entry, probe), cwd=entry["directory"],
                                     capture_output=True, text=True)
             compiled = result.returncode == 0
-            missing = "No such file" in result.stderr
+            # g++ says "No such file or directory", clang "file not found".
+            missing = "No such file" in result.stderr or "file not found" in result.stderr
             ok = compiled if allowed else (not compiled and missing)
             verdict = "ok  " if ok else "FAIL"
             print(f"{verdict} {source} {'may' if allowed else 'must not'} include {header}")
