@@ -513,6 +513,15 @@ struct PointBox {
   }
 };
 
+PointBox box_of_all_points(const std::vector<Eigen::Vector3d>& points) {
+  PointBox box{points.front(), points.front()};
+  for (const Eigen::Vector3d& p : points) {
+    box.lo = box.lo.cwiseMin(p);
+    box.hi = box.hi.cwiseMax(p);
+  }
+  return box;
+}
+
 template <class Indices>
 PointBox box_of_points(const std::vector<Eigen::Vector3d>& points, const Indices& indices) {
   PointBox box{points[*indices.begin()], points[*indices.begin()]};
@@ -600,9 +609,7 @@ void EdgeFaceScan::run() {
   for (const auto& v : ev_) ep_.emplace_back(v.x(), v.y(), v.z());
   // Every crossing point lies on an edge, hence in the box of all of edges_of's vertices: a
   // face whose box misses it has none (exact double compares, before any predicate).
-  std::vector<int> all(ev_.size());
-  for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
-  edges_of_box_ = box_of_points(ev_, all);
+  edges_of_box_ = box_of_all_points(ev_);
   value_.resize(ev_.size());
   have_value_.resize(ev_.size());
   side_.resize(ev_.size());
@@ -619,9 +626,7 @@ void EdgeFaceScan::run() {
 // Only edges whose box meets the box of faces_of's vertices can meet any of its faces: the
 // face loop visits those alone.
 void EdgeFaceScan::collect_near_edges() {
-  std::vector<int> all(fv_.size());
-  for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
-  const PointBox faces_box = box_of_points(fv_, all);
+  const PointBox faces_box = box_of_all_points(fv_);
   edge_box_.resize(edges_.size());
   for (std::size_t e = 0; e < edges_.size(); ++e) {
     edge_box_[e] = box_of_points(ev_, edges_[e]);
