@@ -24,6 +24,48 @@ double reach_up(const Joint& joint) {
   return std::max(abs_sum_up(joint.dh.d, joint.minimum), abs_sum_up(joint.dh.d, joint.maximum));
 }
 
+// Upper bound on |t|_2 of the exact translation of a stored frame: |t^|_1 + its error.
+double translation_norm_up(const Eigen::Isometry3d& X, double translation_error) {
+  namespace r = geometry::rounding;
+  const Eigen::Vector3d t = X.translation();
+  return r::add_up(r::add_up(r::add_up(std::abs(t.x()), std::abs(t.y())), std::abs(t.z())),
+                   translation_error);
+}
+
+// Largest |q| a prismatic joint reaches within its limits (0 for a revolute one).
+double prismatic_travel_up(const Joint& joint) {
+  if (joint.type != JointType::kPrismatic) return 0.0;
+  return std::max(std::abs(joint.minimum), std::abs(joint.maximum));
+}
+
+// The recursion state of proofs/motion-bound.md#lemma-axis-radius in frame m: bounds on the
+// norm, the distance from the z axis and |z| of every hull point carried to frame m.
+struct FrameExtent {
+  double norm = 0.0;
+  double rho = 0.0;
+  double zeta = 0.0;
+};
+
+// Joint m with general frames (proofs/motion-bound.md#lemma-general-axis-radius): the axis
+// radius is rho(t_JC) + |w|, and frame m-1 keeps only a norm bound.
+double general_axis_radius_up(const JointFrames& frames, const FrameExtent& extent) {
+  namespace r = geometry::rounding;
+  const Eigen::Vector3d t = frames.X_JC.translation();
+  const double radial_t =
+      r::add_up(r::add_up(std::abs(t.x()), std::abs(t.y())), frames.X_JC_translation_error);
+  return r::add_up(radial_t, extent.norm);
+}
+
+FrameExtent general_step_up(const Joint& joint, const FrameExtent& extent) {
+  namespace r = geometry::rounding;
+  const JointFrames& frames = *joint.frames;
+  const double norm = r::add_up(
+      r::add_up(translation_norm_up(frames.X_PJ, frames.X_PJ_translation_error),
+                translation_norm_up(frames.X_JC, frames.X_JC_translation_error)),
+      r::add_up(prismatic_travel_up(joint), extent.norm));
+  return {norm, norm, norm};
+}
+
 // R_{jh} for every joint j <= link by the radial/axial recursion of
 // proofs/motion-bound.md#lemma-axis-radius, every operation rounded up (all terms are
 // non-negative, so each rounded result bounds the exact one from above).
@@ -46,10 +88,27 @@ std::vector<double> axis_radii_up(const RobotModel& robot, int link, const HullP
     zeta = std::max(zeta, std::abs(p.z()));
   }
   double rho = std::min(radial, norm);
+  // The exact points lie within hull_point_error of the stored ones (0 for thesis robots).
+  // proof: proofs/cell-geometry.md#lemma-geometry-error
+  if (robot.hull_point_error > 0.0) {
+    norm = r::add_up(norm, robot.hull_point_error);
+    rho = r::add_up(rho, robot.hull_point_error);
+    zeta = r::add_up(zeta, robot.hull_point_error);
+  }
   // Walk down from frame `link`; after applying A_m the point is in frame m-1, and axis m
   // is that frame's z axis.
   for (int m = link; m >= 1; --m) {
     const Joint& joint = robot.joints[m - 1];
+    if (joint.frames) {
+      // proof: proofs/motion-bound.md#lemma-general-axis-radius
+      const FrameExtent extent{norm, rho, zeta};
+      per_joint[m - 1] = general_axis_radius_up(*joint.frames, extent);
+      const FrameExtent next = general_step_up(joint, extent);
+      norm = next.norm;
+      rho = next.rho;
+      zeta = next.zeta;
+      continue;
+    }
     const double a = std::abs(joint.dh.a);
     if (m <= joint_count) {
       per_joint[m - 1] =

@@ -62,13 +62,18 @@ RobotCell::RobotCell(const RobotModel& robot, const Environment& environment,
   const double coordinate_bound = raw_extent + 2.0 * settings.tolerance + 1.0;
   // proof: proofs/fk-rounding.md#fk-rounding (the bound is strict: the lemma's bound is
   // doubled so that every use below may treat it as a strict inequality).
-  placement_error_ = 2.0 * kinematics::forward_kinematics_error_bound(chain_, coordinate_bound);
+  const double fk_bound = kinematics::forward_kinematics_error_bound(chain_, coordinate_bound);
   // proof: proofs/offset-containment.md#rounded-placement
   // Rounded up: the checker decides expansion_radius >= Delta + 2 eps exactly (a nearest
   // rounding can land one ulp below and the certificate is then rejected).
   {
     namespace r = geometry::rounding;
     r::UpwardRoundingScope upward;
+    // The stored hulls and obstacles are within their point errors of the exact ones (0 for
+    // thesis files): one bound for every robot-obstacle distance the run measures.
+    // proof: proofs/cell-geometry.md#lemma-geometry-error
+    placement_error_ = r::mul_up(
+        2.0, r::add_up(fk_bound, r::add_up(robot.hull_point_error, environment.point_error)));
     expansion_radius_ = r::add_up(settings.tolerance, r::mul_up(2.0, placement_error_));
   }
   for (std::size_t i = 0; i < hulls_.size(); ++i) {
@@ -92,6 +97,12 @@ RobotCell::RobotCell(const RobotModel& robot, const Environment& environment,
     obstacle_spheres_W_.push_back(geometry::certified_sphere(obstacles_W_.back()));
   }
   obstacle_index_ = geometry::StaticObstacleIndex(obstacles_W_);
+  allowed_contacts_ = environment.allowed_contacts;
+}
+
+bool RobotCell::contact_allowed(int link, int hull, int obstacle) const {
+  return std::binary_search(allowed_contacts_.begin(), allowed_contacts_.end(),
+                            AllowedContactPair{link, hull, obstacle});
 }
 
 }  // namespace grpvss::certify

@@ -58,10 +58,23 @@ std::optional<CheckedCell> CheckedCell::build(const RobotModel& robot,
   // proof: proofs/fk-rounding.md#fk-rounding (the verifier doubles the bound: strictness)
   const double bound = kinematics::forward_kinematics_error_bound(cell.chain_, largest_coordinate);
   ledger.decided();
-  if (!(exact(header.placement_error) >= 2 * exact(bound))) {
-    ledger.fail("placement_error is smaller than twice the forward-kinematics rounding bound");
+  // proof: proofs/cell-geometry.md#lemma-geometry-error (the stored geometry's own error)
+  if (!(exact(header.placement_error) >= 2 * (exact(bound) + exact(robot.hull_point_error) +
+                                               exact(environment.point_error)))) {
+    ledger.fail(
+        "placement_error is smaller than twice the forward-kinematics rounding bound plus the "
+        "geometry's point errors");
     return std::nullopt;
   }
+  // The pairs the verifier skipped are the inputs' allowed contacts, no more and no fewer.
+  ledger.decided();
+  if (header.allowed_contacts != environment.allowed_contacts) {
+    ledger.fail("the certificate's allowed contacts differ from the inputs' (" +
+                std::to_string(header.allowed_contacts.size()) + " pairs certified, " +
+                std::to_string(environment.allowed_contacts.size()) + " in the inputs)");
+    return std::nullopt;
+  }
+  cell.environment_ = &environment;
   cell.build_obstacles(environment);
   return cell;
 }

@@ -20,6 +20,28 @@ Rational exact_reach(const Joint& joint) {
   return low > high ? low : high;
 }
 
+// |t^|_1 + error >= |t|_2 for the exact translation t of a stored frame.
+Rational exact_translation_norm(const Eigen::Isometry3d& X, double translation_error) {
+  const Eigen::Vector3d t = X.translation();
+  return abs(exact(t.x())) + abs(exact(t.y())) + abs(exact(t.z())) + exact(translation_error);
+}
+
+Rational exact_prismatic_travel(const Joint& joint) {
+  if (joint.type != JointType::kPrismatic) return 0;
+  const Rational low = abs(exact(joint.minimum));
+  const Rational high = abs(exact(joint.maximum));
+  return low > high ? low : high;
+}
+
+// Carries the norm bound of a point in frame m to frame m-1 across a joint with general frames.
+// proof: proofs/motion-bound.md#lemma-general-axis-radius
+Rational exact_general_step(const Joint& joint, const Rational& norm) {
+  const JointFrames& frames = *joint.frames;
+  return exact_translation_norm(frames.X_PJ, frames.X_PJ_translation_error) +
+         exact_translation_norm(frames.X_JC, frames.X_JC_translation_error) +
+         exact_prismatic_travel(joint) + norm;
+}
+
 }  // namespace
 
 // proof: proofs/motion-bound.md#lemma-axis-radius
@@ -44,9 +66,21 @@ mpq_class exact_axis_radius(const RobotModel& robot, int link, const HullPoints&
   }
   if (!radial_candidate_holds) rho = radial_l1;
   rho = smaller(rho, norm);
+  // The exact points lie within hull_point_error of the stored ones.
+  // proof: proofs/cell-geometry.md#lemma-geometry-error
+  const Rational point_error = exact(robot.hull_point_error);
+  norm += point_error;
+  rho += point_error;
+  zeta += point_error;
   // Frames link-1 .. joint: apply A_m = Rot_z Trans_z(d_m) Trans_x(a_m) Rot_x(alpha_m).
   for (int m = link; m > joint; --m) {
     const Joint& joint_m = robot.joints[m - 1];
+    if (joint_m.frames) {
+      norm = exact_general_step(joint_m, norm);
+      rho = norm;
+      zeta = norm;
+      continue;
+    }
     const Rational s = exact(geometry::trig_magnitude_upper(std::sin(joint_m.dh.alpha)));
     const Rational c = exact(geometry::trig_magnitude_upper(std::cos(joint_m.dh.alpha)));
     const Rational a = abs(exact(joint_m.dh.a));
@@ -60,6 +94,12 @@ mpq_class exact_axis_radius(const RobotModel& robot, int link, const HullPoints&
   }
   // Distance from axis `joint` (the z axis of frame joint-1): d_joint and Rot_z do not change it.
   const Joint& joint_j = robot.joints[joint - 1];
+  if (joint_j.frames) {
+    // rho(t_JC) + |w_j|: the motion about the axis and X_PJ keep the distance from it.
+    const Eigen::Vector3d t = joint_j.frames->X_JC.translation();
+    return abs(exact(t.x())) + abs(exact(t.y())) + exact(joint_j.frames->X_JC_translation_error) +
+           norm;
+  }
   const Rational s = exact(geometry::trig_magnitude_upper(std::sin(joint_j.dh.alpha)));
   return abs(exact(joint_j.dh.a)) + smaller(norm, rho + s * zeta);
 }

@@ -110,6 +110,10 @@ class Ibm7545Ik final : public InverseKinematics {
 bool is_ibm7545_structure(const RobotModel& model) {
   if (model.joint_count() != 4) return false;
   const auto& j = model.joints;
+  // Its closed form reads the DH parameters: general frames (a cell's base pose) are not DH.
+  for (const Joint& joint : j) {
+    if (joint.frames) return false;
+  }
   const JointType expected_types[4] = {JointType::kRevolute, JointType::kRevolute,
                                        JointType::kPrismatic, JointType::kRevolute};
   const double expected_alpha[4] = {0.0, kPi, 0.0, 0.0};

@@ -65,6 +65,14 @@ KinematicChain make_chain(const RobotModel& model) {
     link.minimum = joint.minimum;
     link.maximum = joint.maximum;
     link.home = joint.home;
+    if (joint.frames) {
+      link.X_PJ = joint.frames->X_PJ;
+      link.X_JC = joint.frames->X_JC;
+      link.X_PJ_error = {joint.frames->X_PJ_rotation_error, joint.frames->X_PJ_translation_error};
+      link.X_JC_error = {joint.frames->X_JC_rotation_error, joint.frames->X_JC_translation_error};
+      chain.joints.push_back(link);
+      continue;
+    }
     const DhParameters& dh = joint.dh;
     // Standard DH: A = Rot_z(theta) Trans_z(d) Trans_x(a) Rot_x(alpha). The variable sits in
     // Rot_z (revolute) or Trans_z (prismatic); whatever precedes it is X_PJ, the rest X_JC.

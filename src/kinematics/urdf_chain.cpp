@@ -97,7 +97,14 @@ BoundedPoints collision_frame_points(const CollisionDescription& collision) {
 
 BoundedPoints place_in_link_frame(const CollisionDescription& collision,
                                   const BoundedPoints& points_C) {
-  const BoundedProduct X_LC = compose_frame_path(collision.link_to_collision);
+  return transform_points(collision.link_to_collision, points_C);
+}
+
+BoundedPoints transform_points(const FramePath& path, const BoundedPoints& points_C) {
+  return transform_points(compose_frame_path(path), points_C);
+}
+
+BoundedPoints transform_points(const BoundedProduct& X_LC, const BoundedPoints& points_C) {
   BoundedPoints points_L;
   points_L.points.reserve(points_C.points.size());
   double largest = 0.0;

@@ -67,6 +67,14 @@ BoundedPoints collision_frame_points(const CollisionDescription& collision);
 BoundedPoints place_in_link_frame(const CollisionDescription& collision,
                                   const BoundedPoints& points_C);
 
+/// \brief Points of frame C (each within points_C.error of its exact position) carried to
+/// frame L by X_LC = compose_frame_path(path_LC), with the same bound as
+/// place_in_link_frame(). proof: proofs/urdf-frames.md#collision-points
+BoundedPoints transform_points(const FramePath& path_LC, const BoundedPoints& points_C);
+
+/// \brief As above, with the product X_LC already composed.
+BoundedPoints transform_points(const BoundedProduct& X_LC, const BoundedPoints& points_C);
+
 /// \brief collision_frame_points() placed by place_in_link_frame().
 BoundedPoints collision_points_in_link_frame(const CollisionDescription& collision);
 

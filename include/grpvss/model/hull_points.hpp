@@ -6,6 +6,7 @@
 /// drawing the wireframe, never for geometry). The thesis uses 16 points per hull; GRPVSS
 /// accepts any number >= 4 that spans 3-D.
 
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
@@ -18,6 +19,8 @@ struct HullPoints {
   std::vector<Eigen::Vector3d> points;
   /// 1-based line in the input file where the hull's first point stands (for messages).
   int source_line = 0;
+  /// The URDF link whose `<collision>` it is (robot hulls of URDF robots); empty otherwise.
+  std::string name;
 };
 
 }  // namespace grpvss

@@ -7,8 +7,11 @@
 /// joint values in RADIANS, prismatic joint values in length units, velocities per second.
 /// Degrees exist only at the input/output boundary (io/, report/).
 
+#include <optional>
 #include <string>
 #include <vector>
+
+#include <Eigen/Geometry>
 
 #include "grpvss/model/hull_points.hpp"
 
@@ -26,9 +29,27 @@ struct DhParameters {
   double alpha = 0.0;  ///< radians
 };
 
+/// \brief A joint placed by general frames instead of DH parameters (URDF chains, and a
+/// thesis robot on a cell's base pose): frame i sits in frame i-1 at
+/// \f$X_{PJ}\,M(q)\,X_{JC}\f$ with \f$M = \mathrm{Rot}_z(q)\f$ or \f$\mathrm{Trans}_z(q)\f$
+/// (kinematics/kinematic_chain.hpp). The stored transforms are within the given bounds of the
+/// exact ones the input denotes (proofs/urdf-frames.md#frame-steps).
+struct JointFrames {
+  Eigen::Isometry3d X_PJ = Eigen::Isometry3d::Identity();
+  Eigen::Isometry3d X_JC = Eigen::Isometry3d::Identity();
+  double X_PJ_rotation_error = 0.0;     ///< spectral norm of (stored R - exact R)
+  double X_PJ_translation_error = 0.0;  ///< |stored t - exact t|_2, length units
+  double X_JC_rotation_error = 0.0;
+  double X_JC_translation_error = 0.0;
+};
+
 struct Joint {
   JointType type = JointType::kRevolute;
-  DhParameters dh;
+  DhParameters dh;  ///< unused when `frames` is set
+  /// General frames; when set they replace `dh` everywhere (kinematics, motion-bound radii,
+  /// checker). proof: proofs/motion-bound.md#lemma-general-axis-radius
+  std::optional<JointFrames> frames;
+  std::string name;           ///< URDF joint name; empty for thesis files
   double home = 0.0;          ///< joint value at home (rad or length)
   double minimum = 0.0;       ///< lower joint limit
   double maximum = 0.0;       ///< upper joint limit
@@ -38,6 +59,7 @@ struct Joint {
 
 /// \brief Link i is rigidly attached to frame i (link 0 is the base, fixed in the world).
 struct Link {
+  std::string name;               ///< URDF link name of frame i; empty for thesis files
   double thickness = 0.0;         ///< the thesis's D_i (not given for link 0)
   std::vector<HullPoints> hulls;  ///< points in the link frame L_i
 };
@@ -48,8 +70,22 @@ struct RobotModel {
   std::string name;
   std::vector<Joint> joints;  ///< joints 1..N stored at index 0..N-1
   std::vector<Link> links;    ///< links 0..N (size N+1)
+  /// Bound on |stored hull point - exact point| (Euclidean, length units) for every link hull
+  /// point: 0 for thesis files (their points are the model); URDF meshes, primitive shapes
+  /// and frame changes round. proof: proofs/cell-geometry.md#lemma-geometry-error
+  double hull_point_error = 0.0;
 
   int joint_count() const { return static_cast<int>(joints.size()); }
 };
+
+/// \brief How reports call link `index`: its name when it has one ("forearm_link"), else
+/// "link 3".
+inline std::string link_label(const RobotModel& robot, int index) {
+  const auto i = static_cast<std::size_t>(index);
+  if (index >= 0 && i < robot.links.size() && !robot.links[i].name.empty()) {
+    return robot.links[i].name;
+  }
+  return "link " + std::to_string(index);
+}
 
 }  // namespace grpvss
