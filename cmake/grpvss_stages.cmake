@@ -57,13 +57,15 @@ function(grpvss_add_stages)
   grpvss_add_stage(geometry DEPENDS model)
   # The only stage that includes CGAL (each CGAL translation unit costs ~20 s and 1.5 GB).
   grpvss_add_stage(exact DEPENDS geometry PRIVATE_LIBS CGAL::CGAL gmpxx gmp)
+  # A cell file (io) made into the model: URDF chains (kinematics), shapes and meshes (exact).
+  grpvss_add_stage(cell DEPENDS io kinematics exact PRIVATE_LIBS fmt::fmt gmpxx gmp)
   grpvss_add_stage(evidence DEPENDS motion geometry
                    PUBLIC_LIBS nlohmann_json::nlohmann_json PRIVATE_LIBS fmt::fmt)
   # The checker sees the exact predicates, the model, the motion and the certificate format:
   # never the verifier (certify), which it re-checks.
   grpvss_add_stage(checker DEPENDS evidence exact PRIVATE_LIBS gmpxx gmp fmt::fmt)
   grpvss_add_stage(certify DEPENDS evidence exact PRIVATE_LIBS fmt::fmt)
-  grpvss_add_stage(report DEPENDS certify io
+  grpvss_add_stage(report DEPENDS certify io cell
                    PUBLIC_LIBS fmt::fmt PRIVATE_LIBS OpenSSL::Crypto)
   target_compile_definitions(grpvss_report PRIVATE GRPVSS_VERSION="${PROJECT_VERSION}")
   # Everything a user links: `find_package(grpvss)` then `target_link_libraries(x grpvss::grpvss)`.
@@ -71,5 +73,5 @@ function(grpvss_add_stages)
   add_library(grpvss::grpvss ALIAS grpvss_all)
   set_target_properties(grpvss_all PROPERTIES EXPORT_NAME grpvss)
   target_link_libraries(grpvss_all INTERFACE grpvss_report grpvss_checker grpvss_certify
-                                             grpvss_io)
+                                             grpvss_cell grpvss_io)
 endfunction()

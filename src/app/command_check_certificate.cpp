@@ -29,8 +29,7 @@ namespace grpvss::app {
 namespace {
 
 struct CheckArguments {
-  std::string robot_file;
-  std::string environment_file;
+  ModelSources model;
   std::string path_file;
   std::optional<std::string> timing;  ///< unset: the certificate's
   std::optional<std::string> ik;      ///< unset: "auto"
@@ -63,7 +62,7 @@ void refuse_other_ik(const CheckArguments& args, const certify::Certificate& hea
                    fmt::format("'{}' ({})", args.ik.value_or("auto"), ik_name));
 }
 
-void print_text(const certify::CheckReport& report) {
+void print_text(const certify::CheckReport& report, const RobotModel& robot) {
   fmt::print("{}: claim {} ({} inequalities decided exactly)\n",
              report.accepted ? "ACCEPTED" : "REJECTED", to_string(report.claim),
              report.inequalities_checked);
@@ -74,9 +73,9 @@ void print_text(const certify::CheckReport& report) {
   // What the accepted certificate proves beyond its claim (the base, link 0, never moves).
   for (const auto& link : report.motion_clearances) {
     if (link.link == 0) continue;
-    fmt::print("  link {}: stays farther than {} from every obstacle along the motion "
+    fmt::print("  {}: stays farther than {} from every obstacle along the motion "
                "(smallest at steps {}-{})\n",
-               link.link, report::format_lower_bound(link.lower_bound, 4), link.step - 1,
+               link_label(robot, link.link), report::format_lower_bound(link.lower_bound, 4), link.step - 1,
                link.step);
   }
 }
@@ -98,18 +97,22 @@ void print_json(const certify::CheckReport& report) {
 }
 
 int run_check(const CheckArguments& args) {
-  const RobotModel robot = io::read_robot_file(args.robot_file);
-  const Environment environment = io::read_environment_file(args.environment_file);
-  const PathProgram program = io::read_path_file(args.path_file, robot);
+  const ModelInputs model = load_model_inputs(args.model, args.quiet);
+  const RobotModel& robot = model.robot;
+  const Environment& environment = model.environment;
+  PathProgram program = io::read_path_file(args.path_file, robot);
+  convert_path_lengths(program, robot, model.model_units_per_cell_unit);
   certify::CheckOptions options;
   if (!args.profile_table.empty()) {
     options.profile_table = std::make_shared<const motion::ProfileTable>(
         io::read_profile_table_file(args.profile_table));
   }
-  const auto ik = motion::select_ik(parse_ik_choice(args.ik.value_or("auto")), robot, args.robot_file);
+  const auto ik =
+      motion::select_ik(parse_ik_choice(args.ik.value_or("auto")), robot, model.robot_label_file);
   const motion::KinematicsAccess kinematics = motion::make_kinematics_access(robot, ik);
   const report::InputDigests digests =
-      report::digest_input_files(args.robot_file, args.environment_file, args.path_file);
+      report::digest_input_files(model.robot_digest_file, model.environment_digest_file,
+                                 args.path_file);
   options.input_digests = {{"robot", digests.robot.sha256},
                            {"environment", digests.environment.sha256},
                            {"path", digests.path.sha256}};
@@ -138,7 +141,7 @@ int run_check(const CheckArguments& args) {
   if (!check || delivered != announced) throw changed();
   const certify::CheckReport report = check->finish();
   if (args.json && !args.quiet) print_json(report);
-  if (!args.json && !args.quiet) print_text(report);
+  if (!args.json && !args.quiet) print_text(report, robot);
   return report.accepted ? kExitOk : kExitFinding;
 }
 
@@ -148,8 +151,7 @@ void register_check_certificate_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<CheckArguments>();
   auto* command = app.add_subcommand(
       "check-certificate", "Re-verify a certificate exactly from the input files alone");
-  command->add_option("--robot", args->robot_file, "Robot file (thesis A.1.1.1)")->required();
-  command->add_option("--env", args->environment_file, "Environment file (thesis A.1.1.2)")->required();
+  add_model_source_options(*command, args->model);
   command->add_option("--path", args->path_file, "Path file (thesis A.1.3)")->required();
   CLI::Option* timing = command->add_option(
       "--timing", args->timing_text,

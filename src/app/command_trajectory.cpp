@@ -13,7 +13,6 @@
 #include "grpvss/common/input_error.hpp"
 #include "grpvss/io/path_file.hpp"
 #include "grpvss/io/profile_table_file.hpp"
-#include "grpvss/io/robot_file.hpp"
 #include "grpvss/motion/kinematics_adapter.hpp"
 #include "grpvss/motion/profile_table.hpp"
 #include "grpvss/motion/trajectory.hpp"
@@ -24,9 +23,9 @@ namespace grpvss::app {
 namespace {
 
 struct TrajectoryArguments {
-  std::string robot_file;
+  ModelSources model;
   std::string path_file;
-  std::string timing = "independent";
+  std::string timing;  ///< empty: independent for thesis files, synchronized for a cell
   std::string profile_table;
   std::string ik = "auto";
   std::vector<double> at;
@@ -53,22 +52,25 @@ std::vector<double> requested_times(const TrajectoryArguments& args, double tota
 }
 
 int run_trajectory(const TrajectoryArguments& args) {
-  const RobotModel robot = io::read_robot_file(args.robot_file);
-  const PathProgram program = io::read_path_file(args.path_file, robot);
+  const ModelInputs model = load_model_inputs(args.model, false, ObstaclesNeeded::kNo);
+  const RobotModel& robot = model.robot;
+  PathProgram program = io::read_path_file(args.path_file, robot);
+  convert_path_lengths(program, robot, model.model_units_per_cell_unit);
   motion::MotionModel options;
-  options.timing =
-      motion::ptp_timing_from_string(args.timing).value_or(motion::PtpTiming::kIndependent);
+  options.timing = motion::ptp_timing_from_string(args.timing)
+                       .value_or(model.from_cell ? motion::PtpTiming::kSynchronized
+                                                 : motion::PtpTiming::kIndependent);
   if (!args.profile_table.empty())
     options.table = std::make_shared<const motion::ProfileTable>(
         io::read_profile_table_file(args.profile_table));
   options.cp_speed = args.cp_speed;
   options.cp_spacing = args.cp_spacing;
-  const auto ik = motion::select_ik(parse_ik_choice(args.ik), robot, args.robot_file);
+  const auto ik = motion::select_ik(parse_ik_choice(args.ik), robot, model.robot_label_file);
   const motion::Trajectory trajectory =
       motion::Trajectory::plan(robot, program, motion::make_kinematics_access(robot, ik), options);
 
   report::TrajectoryReportSettings settings;
-  settings.robot_file = args.robot_file;
+  settings.robot_file = model.robot_label_file;
   settings.path_file = args.path_file;
   settings.ik_name = ik->name();
   settings.times = requested_times(args, trajectory.duration());
@@ -84,11 +86,16 @@ int run_trajectory(const TrajectoryArguments& args) {
 void register_trajectory_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<TrajectoryArguments>();
   auto* command = app.add_subcommand("trajectory", "Print the joint trajectory of a path");
-  command->add_option("--robot", args->robot_file, "Robot file (thesis A.1.1.1)")->required();
+  command->add_option("--robot", args->model.robot_file, "Robot file (thesis A.1.1.1)");
+  command->add_option("--cell", args->model.cell_file,
+                      "Cell file: its robot (docs/cell-format.md)");
+  command->add_option("--package-path", args->model.package_paths,
+                      "Directory searched for package://NAME/... (repeatable; before the cell's)");
   command->add_option("--path", args->path_file, "Path file (thesis A.1.3)")->required();
-  command->add_option("--timing", args->timing, "PTP joint timing")
-      ->check(CLI::IsMember({"independent", "synchronized"}))
-      ->capture_default_str();
+  command->add_option("--timing", args->timing,
+                      "PTP joint timing (default: independent for thesis files, synchronized "
+                      "for a cell)")
+      ->check(CLI::IsMember({"independent", "synchronized"}));
   command->add_option("--profile-table", args->profile_table,
                       "Motion-time table replacing the ideal trapezoids (docs/trajectories.md)");
   command->add_option("--ik", args->ik, "IK: auto, ibm7545, opw, ur, numeric or plugin:PATH.so (docs/ik.md)")

@@ -16,9 +16,7 @@
 #include "commands.hpp"
 #include "grpvss/certify/verifier.hpp"
 #include "grpvss/common/input_error.hpp"
-#include "grpvss/io/environment_file.hpp"
 #include "grpvss/io/path_file.hpp"
-#include "grpvss/io/robot_file.hpp"
 #include "grpvss/motion/kinematics_adapter.hpp"
 #include "grpvss/report/atomic_output.hpp"
 #include "grpvss/report/certificate_output.hpp"
@@ -52,8 +50,8 @@ std::string output_label(const std::string& path) {
 }
 
 void print_summary(std::FILE* stream, const certify::VerificationRun& run,
-                   const VerifyArguments& args) {
-  fmt::print(stream, "{}", verdict_summary(run.result));
+                   const VerifyArguments& args, const ModelNames& names) {
+  fmt::print(stream, "{}", verdict_summary(run.result, names));
   if (!args.out.empty()) fmt::print(stream, "thesis output file: {}\n", output_label(args.out));
   if (!args.json.empty()) fmt::print(stream, "JSON report: {}\n", output_label(args.json));
   if (!args.certificate.empty()) {
@@ -69,24 +67,27 @@ std::string scratch_location(const VerifyArguments& args) {
 }
 
 int run_verify(const VerifyArguments& args) {
-  const RobotModel robot = io::read_robot_file(args.robot_file);
-  const Environment environment = io::read_environment_file(args.environment_file);
-  const PathProgram program = io::read_path_file(args.path_file, robot);
-  const report::InputDigests digests =
-      report::digest_input_files(args.robot_file, args.environment_file, args.path_file);
-  certify::SetupRequest request = make_setup_request(args);
+  const ModelInputs model = load_model_inputs(model_sources(args), args.quiet);
+  const RobotModel& robot = model.robot;
+  const Environment& environment = model.environment;
+  PathProgram program = io::read_path_file(args.path_file, robot);
+  convert_path_lengths(program, robot, model.model_units_per_cell_unit);
+  const report::InputDigests digests = report::digest_input_files(
+      model.robot_digest_file, model.environment_digest_file, args.path_file);
+  certify::SetupRequest request = make_setup_request(args, model);
   request.path_label = file_label(args.path_file);
   const certify::VerificationSetup setup = certify::resolve_setup(request);
-  const auto ik = motion::select_ik(parse_ik_choice(args.ik), robot, args.robot_file);
+  const auto ik = motion::select_ik(parse_ik_choice(args.ik), robot, model.robot_label_file);
   if (!args.certificate.empty() && setup.run.mode != certify::ResolutionMode::kCertified) {
     throw InputError("--certificate", 0, "--mode certified (thesis mode proves nothing)");
   }
   // Refused before a long run rather than after it; the publication itself still never
   // clobbers (a file that appears meanwhile is refused then).
   const std::vector<RequestedOutput> requested = requested_outputs(args);
-  check_requested_outputs(requested, {args.robot_file, args.environment_file, args.path_file,
-                                    args.profile_table},
-                          args.force);
+  std::vector<std::string> inputs = model.input_files;
+  inputs.push_back(args.path_file);
+  inputs.push_back(args.profile_table);
+  check_requested_outputs(requested, inputs, args.force);
 
   // The outputs are written while the verification runs, in memory independent of the number
   // of steps (docs/reliability.md#resource-bounds); each is published only at its finish().
@@ -138,7 +139,8 @@ int run_verify(const VerifyArguments& args) {
                                           {"ik", ik->name()}});
   }
   if (!args.quiet) {
-    print_summary(writes_to_standard_output(requested) ? stderr : stdout, run, args);
+    print_summary(writes_to_standard_output(requested) ? stderr : stdout, run, args,
+                  ModelNames{&robot, &environment});
   }
   return exit_code_of(run.result.verdict);
 }

@@ -1,6 +1,7 @@
 #include "verify_arguments.hpp"
 
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -27,12 +28,17 @@ CLI::Validator positive_number() {
 }
 
 void add_input_options(CLI::App& command, VerifyArguments& args) {
-  command.add_option("--robot", args.robot_file, "Robot file (thesis A.1.1.1)")->required();
-  command.add_option("--env", args.environment_file, "Environment file (thesis A.1.1.2)")->required();
+  command.add_option("--robot", args.robot_file, "Robot file (thesis A.1.1.1)");
+  command.add_option("--env", args.environment_file, "Environment file (thesis A.1.1.2)");
+  command.add_option("--cell", args.cell_file,
+                     "Cell file: robot (URDF or thesis) and named obstacles (docs/cell-format.md)");
+  command.add_option("--package-path", args.package_paths,
+                     "Directory searched for package://NAME/... (repeatable; before the cell's)");
   command.add_option("--path", args.path_file, "Path file (thesis A.1.3)")->required();
-  command.add_option("--timing", args.timing, "PTP joint timing")
-      ->check(CLI::IsMember({"independent", "synchronized"}))
-      ->capture_default_str();
+  command.add_option("--timing", args.timing,
+                     "PTP joint timing (default: independent for thesis files, synchronized "
+                     "for a cell)")
+      ->check(CLI::IsMember({"independent", "synchronized"}));
   command.add_option("--profile-table", args.profile_table,
                      "Motion-time table replacing the ideal trapezoids (docs/trajectories.md)");
   command.add_option("--ik", args.ik, "IK: auto, ibm7545, opw, ur, numeric or plugin:PATH.so (docs/ik.md)")
@@ -41,8 +47,8 @@ void add_input_options(CLI::App& command, VerifyArguments& args) {
 
 void add_verify_options(CLI::App& command, VerifyArguments& args) {
   add_input_options(command, args);
-  command.add_option("--tolerance", args.tolerance, "Tolerance Delta (> 0, length units)")
-      ->required()
+  command.add_option("--tolerance", args.tolerance,
+                     "Tolerance Delta (> 0, length units; default: the cell's)")
       ->check(positive_number());
   command.add_option("--mode", args.mode, "Step rule: certified, or thesis (never certified)")
       ->check(CLI::IsMember({"certified", "thesis"}))
@@ -52,20 +58,46 @@ void add_verify_options(CLI::App& command, VerifyArguments& args) {
       ->check(CLI::IsMember({"auto", "cube", "rhombicuboctahedron"}))
       ->capture_default_str();
   command.add_option("--cp-speed", args.cp_speed,
-                     "Nominal end-effector speed on CP lines (length units per s)")
-      ->check(positive_number())
-      ->capture_default_str();
+                     "Nominal end-effector speed on CP lines (length units per s; default: the "
+                     "cell's, else 1)")
+      ->check(positive_number());
 }
 
-certify::SetupRequest make_setup_request(const VerifyArguments& args) {
+ModelSources model_sources(const VerifyArguments& args) {
+  return {args.robot_file, args.environment_file, args.cell_file, args.package_paths};
+}
+
+namespace {
+
+// A length given on the command line with a cell is in the cell's unit; converted upward
+// (a tolerance never shrinks by the conversion).
+double to_model_units(double length, const ModelInputs& model) {
+  const double converted = length * model.model_units_per_cell_unit;
+  if (model.model_units_per_cell_unit == 1.0) return converted;
+  return std::nextafter(converted, std::numeric_limits<double>::infinity());
+}
+
+double resolved_tolerance(const VerifyArguments& args, const ModelInputs& model) {
+  if (args.tolerance > 0.0) return to_model_units(args.tolerance, model);
+  if (model.tolerance) return *model.tolerance;
+  throw InputError("--tolerance", 0,
+                   model.from_cell ? "--tolerance, or `tolerance` in the cell file"
+                                   : "--tolerance DELTA (> 0, length units)");
+}
+
+}  // namespace
+
+certify::SetupRequest make_setup_request(const VerifyArguments& args, const ModelInputs& model) {
   certify::SetupRequest request;
-  request.tolerance = args.tolerance;
+  request.tolerance = resolved_tolerance(args, model);
   request.mode = args.mode == "thesis" ? certify::ResolutionMode::kThesis
                                        : certify::ResolutionMode::kCertified;
   request.offset_shape = geometry::offset_shape_from_string(args.offset);  // "auto": unset
-  request.motion.timing =
-      motion::ptp_timing_from_string(args.timing).value_or(motion::PtpTiming::kIndependent);
-  request.motion.cp_speed = args.cp_speed;
+  const motion::PtpTiming default_timing =
+      model.from_cell ? motion::PtpTiming::kSynchronized : motion::PtpTiming::kIndependent;
+  request.motion.timing = motion::ptp_timing_from_string(args.timing).value_or(default_timing);
+  request.motion.cp_speed =
+      args.cp_speed > 0.0 ? args.cp_speed * model.model_units_per_cell_unit : model.cp_speed.value_or(1.0);
   if (!args.profile_table.empty()) {
     request.motion.table = std::make_shared<const motion::ProfileTable>(
         io::read_profile_table_file(args.profile_table));

@@ -7,20 +7,24 @@
 
 #include "grpvss/evidence/setup.hpp"
 #include "grpvss/kinematics/inverse_kinematics.hpp"
+#include "model_inputs.hpp"
 
 namespace grpvss::app {
 
 struct VerifyArguments {
   std::string robot_file;
   std::string environment_file;
+  std::string cell_file;
+  std::vector<std::string> package_paths;
   std::string path_file;
-  double tolerance = 0.0;
+  double tolerance = 0.0;  ///< 0: the cell's (an error without a cell)
   std::string mode = "certified";
   std::string offset = "auto";
-  std::string timing = "independent";
+  /// Empty: independent for thesis files, synchronized for a cell (what controllers do).
+  std::string timing;
   std::string profile_table;
   std::string ik = "auto";
-  double cp_speed = 1.0;
+  double cp_speed = 0.0;  ///< 0: the cell's, else 1 length unit per s
   std::string out;
   std::string json;
   std::string certificate;
@@ -37,8 +41,13 @@ CLI::Validator positive_number();
 void add_verify_options(CLI::App& command, VerifyArguments& args);
 void add_input_options(CLI::App& command, VerifyArguments& args);
 
-/// The CLI's words turned into the typed request, once (reads the profile table file).
-certify::SetupRequest make_setup_request(const VerifyArguments& args);
+/// The model sources the arguments name.
+ModelSources model_sources(const VerifyArguments& args);
+
+/// The CLI's words turned into the typed request, once (reads the profile table file). The
+/// model supplies the defaults a cell sets (tolerance, timing, CP speed) and its units.
+/// \throws InputError("--tolerance", 0, ...) when neither the command line nor the cell gives one.
+certify::SetupRequest make_setup_request(const VerifyArguments& args, const ModelInputs& model);
 /// `--ik`: auto, ibm7545, opw, ur, numeric or plugin:PATH.so. \throws InputError ("--ik", line 0).
 kinematics::IkChoice parse_ik_choice(const std::string& text);
 

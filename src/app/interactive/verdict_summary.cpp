@@ -27,12 +27,12 @@ std::string step_range(int first, int last) {
 
 // "interference: link 4 hull 0 / obstacle 0, steps 2-3 (7.784-8.872 s, clear by 13.054 s),
 // unexpanded collides at step 3"
-std::string episode_line(const certify::InterferenceEpisode& episode) {
+std::string episode_line(const certify::InterferenceEpisode& episode, const ModelNames& names) {
   const std::string cleared =
       episode.cleared_time ? fmt::format(", clear by {:.3f} s", *episode.cleared_time) : "";
   std::string line =
-      fmt::format("interference: link {} hull {} / obstacle {}, {} ({:.3f}-{:.3f} s{}), ",
-                  episode.link, episode.hull, episode.obstacle,
+      fmt::format("interference: {} hull {} / {}, {} ({:.3f}-{:.3f} s{}), ",
+                  names.link(episode.link), episode.hull, names.obstacle(episode.obstacle),
                   step_range(episode.first_step, episode.last_step), episode.first_time,
                   episode.last_time, cleared);
   if (episode.first_collision_step) {
@@ -46,7 +46,16 @@ std::string episode_line(const certify::InterferenceEpisode& episode) {
 
 }  // namespace
 
-std::string verdict_summary(const certify::VerificationResult& result) {
+std::string ModelNames::link(int index) const {
+  return robot != nullptr ? link_label(*robot, index) : fmt::format("link {}", index);
+}
+
+std::string ModelNames::obstacle(int index) const {
+  return environment != nullptr ? obstacle_label(*environment, index)
+                                : fmt::format("obstacle {}", index);
+}
+
+std::string verdict_summary(const certify::VerificationResult& result, const ModelNames& names) {
   const bool certified = result.mode == certify::ResolutionMode::kCertified;
   std::string text = fmt::format("verdict: {}{}\n", certify::to_string(result.verdict),
                                  certified ? "" : " (thesis mode: NOT certified)");
@@ -54,9 +63,17 @@ std::string verdict_summary(const certify::VerificationResult& result) {
                       certify::to_string(result.mode), result.tolerance,
                       last_step_index(result),
                       result.total_cycle_time);
+  if (names.environment != nullptr && !names.environment->allowed_contacts.empty()) {
+    text += "allowed contacts (not verified):";
+    for (const AllowedContactPair& pair : names.environment->allowed_contacts) {
+      text += fmt::format(" {} hull {} / {};", names.link(pair.link), pair.hull,
+                          names.obstacle(pair.obstacle));
+    }
+    text.back() = '\n';
+  }
   if (result.collision_step) text += fmt::format("first collision at step {}\n", *result.collision_step);
   const std::size_t shown = std::min(result.interference_episodes.size(), kEpisodesShown);
-  for (std::size_t i = 0; i < shown; ++i) text += episode_line(result.interference_episodes[i]);
+  for (std::size_t i = 0; i < shown; ++i) text += episode_line(result.interference_episodes[i], names);
   if (result.interference_episodes.size() > shown) {
     text += fmt::format("... and {} more interference episodes (JSON report: "
                         "interference_episodes)\n",
@@ -69,9 +86,10 @@ std::string verdict_summary(const certify::VerificationResult& result) {
   const certify::LinkClearanceSummary* closest = nullptr;  // smallest motion clearance
   for (const certify::LinkClearanceSummary& link : result.link_clearances) {
     if (link.link == 0) continue;
-    text += fmt::format("link {}: smallest certified clearance {} at step {}{}", link.link,
+    text += fmt::format("{}: smallest certified clearance {} at step {}{}", names.link(link.link),
                         report::format_lower_bound(link.min_clearance, 4), link.step,
-                        link.obstacle >= 0 ? fmt::format(" (obstacle {})", link.obstacle) : "");
+                        link.obstacle >= 0 ? fmt::format(" ({})", names.obstacle(link.obstacle))
+                                           : "");
     if (link.min_motion_clearance) {
       text += fmt::format("; along the motion > {} (steps {}-{})",
                           report::format_lower_bound(*link.min_motion_clearance, 4),
@@ -90,10 +108,10 @@ std::string verdict_summary(const certify::VerificationResult& result) {
                           report::format_lower_bound(*closest->min_motion_clearance, 4));
     } else {
       text += fmt::format(
-          "note: along the motion link {} is only proven to stay farther than {} (steps "
+          "note: along the motion {} is only proven to stay farther than {} (steps "
           "{}-{}), less than the tolerance {}: the nominal path is clear, a robot deviating from "
           "it by the tolerance is not proven clear\n",
-          closest->link, report::format_lower_bound(*closest->min_motion_clearance, 4),
+          names.link(closest->link), report::format_lower_bound(*closest->min_motion_clearance, 4),
           closest->motion_step - 1,
           closest->motion_step, result.tolerance);
     }

@@ -6,11 +6,22 @@
 #include <string>
 
 #include "grpvss/evidence/verification_result.hpp"
+#include "grpvss/model/environment.hpp"
+#include "grpvss/model/robot_model.hpp"
 
 namespace grpvss::app {
 
+/// \brief Where the names of links and obstacles come from (indices when absent or unnamed).
+struct ModelNames {
+  const RobotModel* robot = nullptr;
+  const Environment* environment = nullptr;
+  std::string link(int index) const;
+  std::string obstacle(int index) const;
+};
+
 /// "verdict: ...", the mode/tolerance/steps line, the first collision, each error and each
 /// link's smallest certified clearance, one per line.
-std::string verdict_summary(const certify::VerificationResult& result);
+std::string verdict_summary(const certify::VerificationResult& result,
+                            const ModelNames& names = {});
 
 }  // namespace grpvss::app
