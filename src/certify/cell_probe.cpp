@@ -221,6 +221,15 @@ void CellProbe::collect_candidates(HullProbe& hull, HullState& state) {
     cell.obstacle_index().candidates(geometry::Aabb::of_points(placed_expanded_),
                                      state.broadphase_margin, candidates_);
   }
+  // Allowed contacts (a cell's allowed_contacts) are never verified; the certificate lists
+  // them and the checker skips the same pairs.
+  if (!cell.allowed_contacts().empty()) {
+    candidates_.erase(std::remove_if(candidates_.begin(), candidates_.end(),
+                                     [&](int o) {
+                                       return cell.contact_allowed(hull.hull.link, hull.hull.hull, o);
+                                     }),
+                      candidates_.end());
+  }
   // proof: proofs/two-ball-cover.md#corollary-step (obstacles beyond the margin are farther
   // than Delta + margin from every true point of the hull)
   state.radius = add_down(cell.tolerance(), state.broadphase_margin);

@@ -15,6 +15,7 @@ CertificateRecorder::CertificateRecorder(const RobotCell& cell, const RunSetting
   certificate_.cp_deviation_fraction = settings.cp_model.deviation_fraction;
   certificate_.placement_error = cell.placement_error();
   certificate_.expansion_radius = cell.expansion_radius();
+  certificate_.allowed_contacts = cell.allowed_contacts();
 }
 
 StepCertificate CertificateRecorder::certificate_step(const ProbeResult& probe, int index,

@@ -52,6 +52,11 @@ class CheckedCell {
   const std::vector<CheckedHull>& hulls() const { return hulls_; }
   const std::vector<std::vector<Eigen::Vector3d>>& obstacles() const { return obstacles_; }
   const std::vector<Box>& obstacle_boxes() const { return obstacle_boxes_; }
+  /// True when the inputs allow hull `hull` of link `link` to touch obstacle `obstacle`: the
+  /// pair is not checked (the certificate must list the same pairs, build() decides it).
+  bool contact_allowed(int link, int hull, int obstacle) const {
+    return environment_->contact_allowed(link, hull, obstacle);
+  }
 
  private:
   explicit CheckedCell(const RobotModel& robot);
@@ -59,6 +64,7 @@ class CheckedCell {
   void build_obstacles(const Environment& environment);
 
   const RobotModel* robot_;
+  const Environment* environment_ = nullptr;
   kinematics::KinematicChain chain_;
   std::vector<CheckedHull> hulls_;
   std::vector<std::vector<Eigen::Vector3d>> obstacles_;

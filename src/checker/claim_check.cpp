@@ -16,9 +16,12 @@ bool collides_exactly(const CheckedCell& cell, const Eigen::VectorXd& q, CheckLe
   std::vector<Eigen::Vector3d> placed;
   for (const CheckedHull& hull : cell.hulls()) {
     kinematics::place_points(workspace.X_WL[hull.link], hull.raw_L, placed);
-    for (const auto& obstacle : cell.obstacles()) {
+    for (std::size_t o = 0; o < cell.obstacles().size(); ++o) {
+      if (cell.contact_allowed(hull.link, hull.hull, static_cast<int>(o))) continue;
       ledger.decided();
-      if (geometry::classify_exact(placed, obstacle) != geometry::Contact::kSeparated) return true;
+      if (geometry::classify_exact(placed, cell.obstacles()[o]) != geometry::Contact::kSeparated) {
+        return true;
+      }
     }
   }
   return false;

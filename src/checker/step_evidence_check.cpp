@@ -105,6 +105,7 @@ Rational StepEvidenceCheck::proven_radius(const ObstacleProofs& proofs, const Hu
   };
   bool beyond_margin = false;  // some obstacle is accounted for by the broadphase margin
   for (std::size_t o = 0; o < cell_.obstacles().size(); ++o) {
+    if (cell_.contact_allowed(record.link, record.hull, static_cast<int>(o))) continue;
     if (proofs.expanded_radius[o]) {
       lower_to(*proofs.expanded_radius[o]);
     } else if (proofs.expanded_interferes[o]) {

@@ -161,6 +161,13 @@ json certificate_to_json(const Certificate& certificate) {
   document["expansion_radius"] = certificate.expansion_radius;
   document["claim"] = to_string(certificate.claim);
   document["collision_step"] = certificate.collision_step;
+  if (!certificate.allowed_contacts.empty()) {
+    json allowed = json::array();
+    for (const AllowedContactPair& pair : certificate.allowed_contacts) {
+      allowed.push_back({{"link", pair.link}, {"hull", pair.hull}, {"obstacle", pair.obstacle}});
+    }
+    document["allowed_contacts"] = allowed;
+  }
   json errors = json::array();
   for (const PathError& error : certificate.errors) {
     errors.push_back({{"code", error.code}, {"segment", error.segment}, {"step", error.step},
@@ -211,6 +218,14 @@ Certificate certificate_header_from_json(const json& document, const std::string
                                   field<int>(error, "segment", "an error", file),
                                   field<int>(error, "step", "an error", file),
                                   field<std::string>(error, "message", "an error", file)});
+  }
+  if (document.contains("allowed_contacts")) {
+    for (const json& pair : field<json>(document, "allowed_contacts", top, file)) {
+      const std::string where = "an allowed contact";
+      certificate.allowed_contacts.push_back({field<int>(pair, "link", where, file),
+                                              field<int>(pair, "hull", where, file),
+                                              field<int>(pair, "obstacle", where, file)});
+    }
   }
   certificate.inputs = input_names(document, file);
   // Present; its elements are read one by one (segment_certificate_from_json).

@@ -76,6 +76,7 @@ void CertificateStream::finish(const certify::Certificate& certificate,
   head.expansion_radius = certificate.expansion_radius;
   head.claim = certificate.claim;
   head.collision_step = certificate.collision_step;
+  head.allowed_contacts = certificate.allowed_contacts;
   head.errors = certificate.errors;
   nlohmann::json document = certificate_document(head, inputs);
   document["segments"] = streamed_array_placeholder(0);

@@ -97,10 +97,15 @@ nlohmann::json scene_to_json(const certify::VerificationResult& result,
   json links = json::array();
   for (std::size_t link = 0; link < robot.links.size(); ++link) {
     links.push_back({{"link", static_cast<int>(link)}, {"hulls", json::array()}});
+    // Names only where the model has them (thesis reports are unchanged).
+    if (!robot.links[link].name.empty()) links.back()["name"] = robot.links[link].name;
   }
   for (const certify::LinkHull& hull : cell.hulls()) {
     json entry = polytope_json(hull.raw_L, "vertices_L");
     entry["hull"] = hull.hull;
+    const std::string& hull_name = robot.links[static_cast<std::size_t>(hull.link)]
+                                       .hulls[static_cast<std::size_t>(hull.hull)].name;
+    if (!hull_name.empty()) entry["name"] = hull_name;
     entry["expanded"] = polytope_json(hull.expanded_L, "vertices_L");
     links.at(hull.link)["hulls"].push_back(entry);
   }
@@ -108,6 +113,7 @@ nlohmann::json scene_to_json(const certify::VerificationResult& result,
   for (std::size_t o = 0; o < environment.obstacles.size(); ++o) {
     json entry = polytope_json(environment.obstacles[o].points, "vertices_W");
     entry["obstacle"] = static_cast<int>(o);
+    if (environment.has_names()) entry["name"] = obstacle_label(environment, static_cast<int>(o));
     obstacles.push_back(entry);
   }
   SceneStepPoses poses(robot);
@@ -119,13 +125,21 @@ nlohmann::json scene_to_json(const certify::VerificationResult& result,
     start_step.index = 0;
     start = poses.step(start_step);
   }
-  return {{"expansion",
-           {{"radius", finite(cell.expansion_radius(), "expansion radius")},
-            {"shape", geometry::to_string(cell.offset_shape())}}},
-          {"links", links},
-          {"obstacles", obstacles},
-          {"start", start},
-          {"steps", steps}};
+  json scene = {{"expansion",
+                 {{"radius", finite(cell.expansion_radius(), "expansion radius")},
+                  {"shape", geometry::to_string(cell.offset_shape())}}},
+                {"links", links},
+                {"obstacles", obstacles},
+                {"start", start},
+                {"steps", steps}};
+  if (!environment.allowed_contacts.empty()) {
+    json allowed = json::array();
+    for (const AllowedContactPair& pair : environment.allowed_contacts) {
+      allowed.push_back({{"link", pair.link}, {"hull", pair.hull}, {"obstacle", pair.obstacle}});
+    }
+    scene["allowed_contacts"] = allowed;
+  }
+  return scene;
 }
 
 struct SceneStepPoses::Kinematics {

@@ -68,6 +68,10 @@ class RobotCell {
   }
   const geometry::StaticObstacleIndex& obstacle_index() const { return obstacle_index_; }
   const HullRadiusTable& radii() const { return radii_; }
+  /// The environment's allowed contacts (robot hull / obstacle pairs never verified), kept
+  /// by the cell: the probe skips them, the certificate lists them.
+  const std::vector<AllowedContactPair>& allowed_contacts() const { return allowed_contacts_; }
+  bool contact_allowed(int link, int hull, int obstacle) const;
   double tolerance() const { return settings_.tolerance; }
   geometry::OffsetShape offset_shape() const { return settings_.offset_shape; }
   /// Strict upper bound on |computed placed point - exact placed point| for every point the
@@ -93,6 +97,7 @@ class RobotCell {
   std::vector<geometry::ConvexPolytope> obstacle_polytopes_W_;
   std::vector<geometry::CertifiedSphere> obstacle_spheres_W_;
   geometry::StaticObstacleIndex obstacle_index_;
+  std::vector<AllowedContactPair> allowed_contacts_;
 };
 
 /// Largest |coordinate| of any point the verifier places for this robot (hull and offset

@@ -16,6 +16,7 @@
 #include "grpvss/evidence/verification_result.hpp"
 #include "grpvss/geometry/offset_shape.hpp"
 #include "grpvss/geometry/separation_witness.hpp"
+#include "grpvss/model/environment.hpp"
 #include "grpvss/motion/motion_model.hpp"
 #include "grpvss/motion/trajectory.hpp"
 
@@ -76,6 +77,10 @@ struct Certificate {
   double expansion_radius = 0.0;
   Verdict claim = Verdict::kError;  ///< the verdict it supports
   int collision_step = 0;
+  /// Robot hull / obstacle pairs never verified (a cell's allowed contacts), sorted; the
+  /// checker rejects a certificate whose list differs from the inputs'. Written only when
+  /// non-empty (thesis certificates are unchanged).
+  std::vector<AllowedContactPair> allowed_contacts;
   std::vector<SegmentCertificate> segments;
   std::vector<PathError> errors;
   /// What the certificate was made from (the file's "inputs": SHA-256 digests of the robot,
