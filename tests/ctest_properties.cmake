@@ -11,5 +11,10 @@ foreach(test IN LISTS grpvss_tests_TESTS)
     set_tests_properties("${test}" PROPERTIES LABELS heavy)  # shard 0 also runs under ASan
   elseif(test STREQUAL "MotionClearance.TheVerifiersBoundsHoldOnTheOracleCells")
     set_tests_properties("${test}" PROPERTIES LABELS heavy)  # exact distances: Release only
+  elseif(test MATCHES "^(NumericIk\\.RoundTripPuma560|CertifiedQuery\\.RandomSeparatedAndOverlappingPairsAgreeWithExact|MotionClearance\\.TheVerifiersBoundsHoldAlongTheNearMissMotion|ClassifyExact\\.AgreesWithIndependentReferenceOnRandomPairs|TrajectoryCli\\.EveryIkChoiceGivesTheSampleEndJoints)$")
+    # The slowest numeric property tests (1.5-3 min each under the sanitizers): they test
+    # numbers, which the Release suite covers; ASan and UBSan are for memory and UB, which
+    # the many small tests of the same code exercise (docs/reliability.md#ci-time).
+    set_tests_properties("${test}" PROPERTIES LABELS heavy)
   endif()
 endforeach()
