@@ -64,7 +64,7 @@ function(grpvss_add_stages)
   # The checker sees the exact predicates, the model, the motion and the certificate format:
   # never the verifier (certify), which it re-checks.
   grpvss_add_stage(checker DEPENDS evidence exact PRIVATE_LIBS gmpxx gmp fmt::fmt)
-  grpvss_add_stage(certify DEPENDS evidence exact PRIVATE_LIBS fmt::fmt)
+  grpvss_add_stage(certify DEPENDS evidence exact PRIVATE_LIBS fmt::fmt OpenSSL::Crypto)
   grpvss_add_stage(report DEPENDS certify io cell
                    PUBLIC_LIBS fmt::fmt PRIVATE_LIBS OpenSSL::Crypto)
   target_compile_definitions(grpvss_report PRIVATE GRPVSS_VERSION="${PROJECT_VERSION}")

@@ -29,6 +29,7 @@
 #include "interactive/verdict_summary.hpp"
 #include "output_paths.hpp"
 #include "progress_bar.hpp"
+#include "setup_cache_options.hpp"
 #include "verify_arguments.hpp"
 #include "viewer_html_stream.hpp"
 
@@ -64,6 +65,23 @@ void print_summary(std::FILE* stream, const certify::VerificationRun& run,
 // standard output.
 std::string scratch_location(const VerifyArguments& args) {
   return args.json.empty() ? args.html : args.json;
+}
+
+// The robot cell, its link offsets proposed by the set-up cache unless --no-cache (every
+// proposal re-checked exactly by the cell: docs/cache.md). Cache trouble is a note, never an error.
+certify::RobotCell build_cell(const RobotModel& robot, const Environment& environment,
+                              const certify::CellSettings& settings, const VerifyArguments& args) {
+  std::vector<std::string> notes;
+  std::optional<certify::SetupCache> cache;
+  if (auto options = setup_cache_options(args.cache_dir, args.no_cache, notes)) {
+    cache.emplace(std::move(*options));
+  }
+  certify::RobotCell cell(robot, environment, settings, cache ? &*cache : nullptr);
+  if (cache) notes.insert(notes.end(), cache->notes().begin(), cache->notes().end());
+  if (!args.quiet) {
+    for (const std::string& note : notes) fmt::print(stderr, "{}\n", note);
+  }
+  return cell;
 }
 
 int run_verify(const VerifyArguments& args) {
@@ -115,7 +133,7 @@ int run_verify(const VerifyArguments& args) {
     hooks.observers.push_back(&*certificate);
   }
 
-  const certify::RobotCell cell(robot, environment, setup.cell);
+  const certify::RobotCell cell = build_cell(robot, environment, setup.cell, args);
   certify::VerificationRun run;
   {
     ProgressBar bar("verifying", !args.quiet && stderr_is_terminal());
@@ -158,6 +176,10 @@ void register_verify_command(CLI::App& app, int& exit_code) {
                       "Certificate for check-certificate (docs/certificate.md)");
   command->add_flag("--force", args->force, "Overwrite existing output files");
   command->add_flag("--quiet", args->quiet, "Print nothing; the exit code tells the verdict");
+  command->add_option("--cache-dir", args->cache_dir,
+                      "Set-up cache directory (default $XDG_CACHE_HOME/grpvss or "
+                      "~/.cache/grpvss; docs/cache.md)");
+  command->add_flag("--no-cache", args->no_cache, "Build the set-up; read and write no cache");
   command->callback([args, &exit_code] { exit_code = run_verify(*args); });
 }
 

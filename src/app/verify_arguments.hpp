@@ -31,6 +31,8 @@ struct VerifyArguments {
   std::string html;
   bool force = false;
   bool quiet = false;
+  std::string cache_dir;  ///< --cache-dir; empty: the default (docs/cache.md)
+  bool no_cache = false;  ///< --no-cache
 };
 
 /// Accepts a finite number > 0; the message names what was found ("a finite number > 0,

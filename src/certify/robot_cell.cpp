@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "grpvss/exact/convex_polytope.hpp"
+#include "grpvss/exact/offset_recheck.hpp"
 #include "grpvss/exact/polytope_skeleton.hpp"
 #include "grpvss/geometry/directed_rounding.hpp"
 #include "grpvss/kinematics/fk_error_bound.hpp"
@@ -32,6 +33,10 @@ double largest_link_coordinate(const std::vector<LinkHull>& hulls) {
 
 RobotCell::RobotCell(const RobotModel& robot, const Environment& environment,
                      const CellSettings& settings)
+    : RobotCell(robot, environment, settings, nullptr) {}
+
+RobotCell::RobotCell(const RobotModel& robot, const Environment& environment,
+                     const CellSettings& settings, LinkOffsetSource* offsets)
     : robot_(&robot),
       environment_(&environment),
       settings_(settings),
@@ -76,16 +81,7 @@ RobotCell::RobotCell(const RobotModel& robot, const Environment& environment,
         2.0, r::add_up(fk_bound, r::add_up(robot.hull_point_error, environment.point_error)));
     expansion_radius_ = r::add_up(settings.tolerance, r::mul_up(2.0, placement_error_));
   }
-  for (std::size_t i = 0; i < hulls_.size(); ++i) {
-    const geometry::ConvexPolytope expanded =
-        geometry::minkowski_offset(raw_polytopes[i], expansion_radius_, settings.offset_shape);
-    hulls_[i].expanded_L = expanded.vertices();
-    expanded_polytopes_L_.push_back(geometry::ConvexPolytope::from_points(hulls_[i].expanded_L));
-    expanded_skeletons_.push_back(geometry::hull_skeleton(
-        expanded_polytopes_L_.back(), static_cast<int>(hulls_[i].expanded_L.size())));
-    hulls_[i].raw_sphere_L = geometry::certified_sphere(hulls_[i].raw_L);
-    hulls_[i].expanded_sphere_L = geometry::certified_sphere(hulls_[i].expanded_L);
-  }
+  build_offsets(raw_polytopes, coordinate_bound, offsets);
   if (largest_link_coordinate(hulls_) > coordinate_bound) {
     throw std::logic_error("RobotCell: offset vertices exceed the coordinate bound of the FK error");
   }
@@ -103,6 +99,48 @@ RobotCell::RobotCell(const RobotModel& robot, const Environment& environment,
 bool RobotCell::contact_allowed(int link, int hull, int obstacle) const {
   return std::binary_search(allowed_contacts_.begin(), allowed_contacts_.end(),
                             AllowedContactPair{link, hull, obstacle});
+}
+
+// Each offset is a proposal that passed the exact re-check, or built here; either way it
+// contains H (+) B(0, expansion_radius). proof: proofs/offset-containment.md#lemma-cached-offset
+void RobotCell::build_offsets(const std::vector<geometry::ConvexPolytope>& raw_polytopes,
+                              double coordinate_bound, LinkOffsetSource* offsets) {
+  const LinkOffsetInputs inputs{hulls_, settings_.tolerance, expansion_radius_,
+                                settings_.offset_shape};
+  std::optional<std::vector<std::vector<Eigen::Vector3d>>> proposed;
+  if (offsets != nullptr) proposed = offsets->propose(inputs);
+  std::size_t rejected = 0;
+  if (proposed && proposed->size() != hulls_.size()) {
+    rejected = hulls_.size();
+    proposed.reset();
+  }
+  for (std::size_t i = 0; i < hulls_.size(); ++i) {
+    std::optional<geometry::ConvexPolytope> checked;
+    if (proposed) {
+      // Also within the coordinate bound the FK error bound was computed for.
+      if (max_abs_coordinate((*proposed)[i]) <= coordinate_bound) {
+        checked = geometry::recheck_offset((*proposed)[i], raw_polytopes[i], expansion_radius_);
+      }
+      if (checked) hulls_[i].expanded_L = (*proposed)[i];
+      else ++rejected;
+    }
+    if (!checked) {
+      hulls_[i].expanded_L = geometry::minkowski_offset(raw_polytopes[i], expansion_radius_,
+                                                        settings_.offset_shape)
+                                 .vertices();
+      checked = geometry::ConvexPolytope::from_points(hulls_[i].expanded_L);
+    }
+    expanded_polytopes_L_.push_back(std::move(*checked));
+    expanded_skeletons_.push_back(geometry::hull_skeleton(
+        expanded_polytopes_L_.back(), static_cast<int>(hulls_[i].expanded_L.size())));
+    hulls_[i].raw_sphere_L = geometry::certified_sphere(hulls_[i].raw_L);
+    hulls_[i].expanded_sphere_L = geometry::certified_sphere(hulls_[i].expanded_L);
+  }
+  if (offsets != nullptr) {
+    std::vector<std::vector<Eigen::Vector3d>> expanded_L;
+    for (const LinkHull& hull : hulls_) expanded_L.push_back(hull.expanded_L);
+    offsets->adopted(inputs, expanded_L, rejected);
+  }
 }
 
 }  // namespace grpvss::certify

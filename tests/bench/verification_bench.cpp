@@ -13,6 +13,9 @@
 //
 // Counters: steps (simulation steps of the operation), per_step (time / steps), verdict
 // (the Verdict enum value), errors.
+#include <unistd.h>
+
+#include <filesystem>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -21,6 +24,7 @@
 
 #include "certify/cell_probe.hpp"
 #include "grpvss/certify/robot_cell.hpp"
+#include "grpvss/certify/setup_cache.hpp"
 #include "grpvss/certify/verifier.hpp"
 #include "grpvss/io/environment_file.hpp"
 #include "grpvss/io/path_file.hpp"
@@ -175,6 +179,63 @@ void BM_RobotCellSetup(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_RobotCellSetup)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
+
+grpvss::certify::CellSettings cell_settings_of(const benchmark::State& state) {
+  grpvss::certify::CellSettings options;
+  options.tolerance = kTolerance;
+  options.offset_shape = state.range(0) == 0 ? grpvss::geometry::OffsetShape::kRhombicuboctahedron
+                                             : grpvss::geometry::OffsetShape::kCube;
+  return options;
+}
+
+// A set-up cache directory of its own, removed at the end of the benchmark.
+struct BenchCacheDirectory {
+  std::string path = (std::filesystem::temp_directory_path() /
+                      ("grpvss-bench-cache-" + std::to_string(::getpid())))
+                         .string();
+  ~BenchCacheDirectory() { std::filesystem::remove_all(path); }
+};
+
+// The cell of BM_RobotCellSetup from a warm set-up cache (docs/cache.md): read the entry,
+// checksum, parse, and re-check every offset exactly (hull + ball-sum containment) instead of
+// building it. Arg as BM_RobotCellSetup.
+void BM_RobotCellSetupFromCache(benchmark::State& state) {
+  const Operation& op = ptp_operation();
+  const grpvss::certify::CellSettings options = cell_settings_of(state);
+  const BenchCacheDirectory directory;
+  const grpvss::certify::SetupCacheOptions cache_options{directory.path, "bench"};
+  {
+    grpvss::certify::SetupCache cold(cache_options);
+    grpvss::certify::RobotCell warm_up(op.robot, op.environment, options, &cold);
+  }
+  for (auto _ : state) {
+    grpvss::certify::SetupCache cache(cache_options);
+    grpvss::certify::RobotCell cell(op.robot, op.environment, options, &cache);
+    if (!cache.loaded() || !cache.notes().empty()) state.SkipWithError("the entry was not used");
+    benchmark::DoNotOptimize(cell);
+  }
+}
+BENCHMARK(BM_RobotCellSetupFromCache)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
+
+// The cache's own share of BM_RobotCellSetupFromCache: reading, checksumming and parsing the
+// entry (propose), without the exact re-check.
+void BM_SetupCacheRead(benchmark::State& state) {
+  const Operation& op = ptp_operation();
+  const grpvss::certify::CellSettings options = cell_settings_of(state);
+  const BenchCacheDirectory directory;
+  const grpvss::certify::SetupCacheOptions cache_options{directory.path, "bench"};
+  grpvss::certify::SetupCache cold(cache_options);
+  const grpvss::certify::RobotCell cell(op.robot, op.environment, options, &cold);
+  const grpvss::certify::LinkOffsetInputs inputs{cell.hulls(), cell.tolerance(),
+                                                 cell.expansion_radius(), cell.offset_shape()};
+  for (auto _ : state) {
+    grpvss::certify::SetupCache cache(cache_options);
+    auto offsets = cache.propose(inputs);
+    if (!offsets) state.SkipWithError("no entry");
+    benchmark::DoNotOptimize(offsets);
+  }
+}
+BENCHMARK(BM_SetupCacheRead)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 
 // The marching part of the certified operations without the setup: the probes of the
 // configurations the certified run accepted (one probe per step; the real run also probes

@@ -5,6 +5,7 @@
 /// link frame), obstacle hulls and their spheres, the broadphase, the motion-bound radii and
 /// the bound on forward kinematics' rounding error.
 
+#include <optional>
 #include <vector>
 
 #include <Eigen/Core>
@@ -32,6 +33,32 @@ struct LinkHull {
   geometry::CertifiedSphere expanded_sphere_L;
 };
 
+/// \brief Everything that determines a cell's link offsets (minkowski_offset is a function of
+/// these alone): the raw link hulls in the link frame, the expansion radius and the shape.
+struct LinkOffsetInputs {
+  const std::vector<LinkHull>& hulls;  ///< raw_L filled, in hulls() order
+  double tolerance = 0.0;
+  double expansion_radius = 0.0;
+  geometry::OffsetShape offset_shape = geometry::OffsetShape::kRhombicuboctahedron;
+};
+
+/// \brief Where a cell may get its link offsets instead of building them (the set-up cache,
+/// certify/setup_cache.hpp). A proposal is never trusted: the cell re-checks every proposed
+/// offset exactly (geometry::recheck_offset) and builds the ones that fail.
+/// proof: proofs/offset-containment.md#lemma-cached-offset
+class LinkOffsetSource {
+ public:
+  virtual ~LinkOffsetSource() = default;
+  /// Proposed vertices of every hull's offset, in inputs.hulls order; nullopt for none.
+  virtual std::optional<std::vector<std::vector<Eigen::Vector3d>>> propose(
+      const LinkOffsetInputs& inputs) = 0;
+  /// The offsets the cell uses (expanded_L of every hull). `rejected` counts the proposed
+  /// offsets that failed the re-check (all of them when the count of hulls differed).
+  virtual void adopted(const LinkOffsetInputs& inputs,
+                       const std::vector<std::vector<Eigen::Vector3d>>& expanded_L,
+                       std::size_t rejected) = 0;
+};
+
 /// \brief The immutable verification context (model side of the model/workspace split). It
 /// refers to the robot and the environment it was built from: both must outlive it.
 class RobotCell {
@@ -39,6 +66,10 @@ class RobotCell {
   /// \throws InputError-free: inputs are already validated; throws geometry::DegenerateHullError
   ///         only for hulls the readers let through (never for valid files).
   RobotCell(const RobotModel& robot, const Environment& environment, const CellSettings& settings);
+  /// Same cell, with the link offsets proposed by \p offsets (may be null: build them all).
+  /// Proposals that pass the exact re-check give the same cell as building them would.
+  RobotCell(const RobotModel& robot, const Environment& environment, const CellSettings& settings,
+            LinkOffsetSource* offsets);
 
   const RobotModel& robot() const { return *robot_; }
   const Environment& environment() const { return *environment_; }
@@ -83,6 +114,8 @@ class RobotCell {
   double expansion_radius() const { return expansion_radius_; }
 
  private:
+  void build_offsets(const std::vector<geometry::ConvexPolytope>& raw_polytopes,
+                     double coordinate_bound, LinkOffsetSource* offsets);
   const RobotModel* robot_;
   const Environment* environment_;
   CellSettings settings_;
