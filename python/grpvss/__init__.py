@@ -21,7 +21,8 @@ __all__ = [
 ]
 
 #: The verdict for a path that is not qualified (thesis errors 1-6, errors 7-9): exit code 4.
-NOT_QUALIFIED = Verdict.ERROR
+#: ``Verdict.NOT_QUALIFIED`` is the same value; its ``name`` is ``"ERROR"``, as in the reports.
+NOT_QUALIFIED = Verdict.NOT_QUALIFIED
 
 
 class InputError(ValueError):

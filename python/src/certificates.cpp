@@ -1,6 +1,6 @@
 // Certificates: Result.certificate (to_json(), save()) and check_certificate(), which mirrors
 // `grpvss check-certificate`: the checker stage re-verifies the certificate from the inputs
-// alone (src/app/command_check_certificate.cpp does the same steps), with the GIL released.
+// alone through the same certify::check_certificate_file() as the CLI, with the GIL released.
 #include <memory>
 #include <optional>
 #include <string>
@@ -12,8 +12,8 @@
 
 #include "bindings.hpp"
 #include "grpvss/checker/certificate_checker.hpp"
+#include "grpvss/checker/certificate_file_check.hpp"
 #include "grpvss/common/input_error.hpp"
-#include "grpvss/evidence/certificate_file.hpp"
 #include "grpvss/io/profile_table_file.hpp"
 #include "grpvss/motion/kinematics_adapter.hpp"
 #include "grpvss/report/atomic_output.hpp"
@@ -81,26 +81,11 @@ certify::CheckReport check_file(const CheckInputs& inputs, const std::string& ce
   options.input_digests = {{"robot", inputs.robot->sha256},
                            {"environment", inputs.environment->sha256},
                            {"path", inputs.path->sha256}};
-  std::optional<certify::CertificateCheck> check;
-  std::size_t announced = 0;
-  std::size_t delivered = 0;
-  const auto changed = [&] {
-    return InputError(certificate_file, 0, "a certificate that does not change while it is read");
-  };
-  certify::read_certificate_file(
-      certificate_file,
-      [&](const certify::CertificateFileHeader& header) {
-        refuse_other_motion(inputs, header.certificate, ik->name());
-        announced = header.segment_count;
-        check.emplace(robot, inputs.environment->model, inputs.path->program, kinematics,
-                      header.certificate, announced, options);
-      },
-      [&](const certify::SegmentCertificate& segment) {
-        if (delivered++ >= announced) throw changed();
-        check->add_segment(segment);
+  return certify::check_certificate_file(
+      certificate_file, robot, inputs.environment->model, inputs.path->program, kinematics,
+      options, [&](const certify::Certificate& header) {
+        refuse_other_motion(inputs, header, ik->name());
       });
-  if (!check || delivered != announced) throw changed();
-  return check->finish();
 }
 
 void bind_certificate(py::module_& module) {

@@ -98,7 +98,8 @@ void bind_verdict(py::module_& module) {
       .value("COLLISION", certify::Verdict::kCollision)
       .value("WITHIN_TOLERANCE", certify::Verdict::kWithinTolerance)
       .value("UNDECIDED", certify::Verdict::kUndecided)
-      .value("ERROR", certify::Verdict::kError, "the path is not qualified (errors 1-9)");
+      .value("ERROR", certify::Verdict::kError, "the path is not qualified (errors 1-9)")
+      .value("NOT_QUALIFIED", certify::Verdict::kError, "another name of ERROR (exit code 4)");
   module.def("exit_code_of", &exit_code_of, py::arg("verdict"),
              "The exit code `grpvss verify` gives for a verdict");
 }

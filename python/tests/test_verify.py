@@ -129,7 +129,8 @@ def test_a_session_verifies_many_paths_against_one_cell():
     one_shot = grpvss.verify(ROBOT, env("bench-environment-near-miss"), PTP, 0.5)
     assert first.verdict == second.verdict == one_shot.verdict == grpvss.Verdict.CLEAR
     assert first.json_report("t") == second.json_report("t") == one_shot.json_report("t")
-    assert grpvss.NOT_QUALIFIED == grpvss.Verdict.ERROR
+    assert grpvss.NOT_QUALIFIED == grpvss.Verdict.NOT_QUALIFIED == grpvss.Verdict.ERROR
+    assert grpvss.Verdict.NOT_QUALIFIED.name == "ERROR"
 
 
 def test_certificate_save_writes_the_cli_bytes_and_refuses_to_overwrite(tmp_path):
