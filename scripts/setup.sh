@@ -11,6 +11,7 @@ debian_packages=(
   libcli11-dev nlohmann-json3-dev libfmt-dev libssl-dev
   libgtest-dev libgmock-dev libbenchmark-dev bsdutils
   liburdfdom-dev libassimp-dev libtinyxml2-dev libyaml-cpp-dev
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-distributed
 )
 missing=()
 for package in "${debian_packages[@]}"; do

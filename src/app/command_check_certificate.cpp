@@ -13,8 +13,8 @@
 
 #include "commands.hpp"
 #include "grpvss/checker/certificate_checker.hpp"
+#include "grpvss/checker/certificate_file_check.hpp"
 #include "grpvss/common/input_error.hpp"
-#include "grpvss/evidence/certificate_file.hpp"
 #include "grpvss/io/environment_file.hpp"
 #include "grpvss/io/path_file.hpp"
 #include "grpvss/io/profile_table_file.hpp"
@@ -119,27 +119,12 @@ int run_check(const CheckArguments& args) {
 
   // Read and checked one segment at a time: memory independent of the number of steps
   // (docs/reliability.md#resource-bounds).
-  std::optional<certify::CertificateCheck> check;
-  std::size_t announced = 0;
-  std::size_t delivered = 0;
-  const auto changed = [&args] {
-    return InputError(args.certificate_file, 0, "a certificate that does not change while it is read");
-  };
-  certify::read_certificate_file(
-      args.certificate_file,
-      [&](const certify::CertificateFileHeader& header) {
-        refuse_other_timing(args, header.certificate);
-        refuse_other_ik(args, header.certificate, ik->name());
-        announced = header.segment_count;
-        check.emplace(robot, environment, program, kinematics, header.certificate, announced,
-                      options);
-      },
-      [&](const certify::SegmentCertificate& segment) {
-        if (delivered++ >= announced) throw changed();
-        check->add_segment(segment);
+  const certify::CheckReport report = certify::check_certificate_file(
+      args.certificate_file, robot, environment, program, kinematics, options,
+      [&](const certify::Certificate& header) {
+        refuse_other_timing(args, header);
+        refuse_other_ik(args, header, ik->name());
       });
-  if (!check || delivered != announced) throw changed();
-  const certify::CheckReport report = check->finish();
   if (args.json && !args.quiet) print_json(report);
   if (!args.json && !args.quiet) print_text(report, robot);
   return report.accepted ? kExitOk : kExitFinding;

@@ -2,12 +2,16 @@
 # `cmake --install` of the build into a fresh prefix, then a user's project (consumer/) found
 # with find_package(grpvss) and built against that prefix alone; its run and the installed CLI
 # must give the verdict of the sample (COLLISION). Usage: check_install.sh BUILD_DIR SOURCE_DIR
-# CXX_FLAGS LINKER_FLAGS (the flags of the build, so that a sanitizer build links its own).
+# CXX_FLAGS LINKER_FLAGS (the flags of the build, so that a sanitizer build links its own)
+# [PYTHON PYTHON_DIR] (when the Python module is built: `import grpvss` from PREFIX/PYTHON_DIR
+# alone must verify the sample too).
 set -euo pipefail
 build_dir="$1"
 source_dir="$2"
 cxx_flags="$3"
 linker_flags="$4"
+python="${5:-}"
+python_dir="${6:-}"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 cmake --install "$build_dir" --prefix "$work/prefix" >/dev/null
@@ -29,3 +33,15 @@ status=0
   --path "$data/path.txt" --tolerance 0.5 --quiet || status=$?
 [ "$status" = 1 ] || { echo "installed CLI exited $status, expected 1 (COLLISION)" >&2; exit 1; }
 echo "installed CLI: COLLISION (exit 1)"
+if [ -n "$python_dir" ]; then
+  site="$work/prefix/$python_dir"
+  got="$(cd "$work" && PYTHONPATH="$site" "$python" -s -c '
+import sys, _grpvss, grpvss
+site = sys.argv[1]
+assert grpvss.__file__.startswith(site) and _grpvss.__file__.startswith(site), (grpvss.__file__, _grpvss.__file__)
+result = grpvss.verify(sys.argv[2] + "/robot.txt", sys.argv[2] + "/environment.txt", sys.argv[2] + "/path.txt", 0.5)
+print(f"verdict {result.verdict.name}, {result.step_count} steps")
+' "$site" "$data")"
+  echo "installed Python module: $got"
+  [ "$got" = "verdict COLLISION, 24 steps" ] || { echo "unexpected Python result" >&2; exit 1; }
+fi

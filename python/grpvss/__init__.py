@@ -1,0 +1,121 @@
+"""GRPVSS from Python: load the thesis files, forward kinematics, verify paths, certificates.
+
+The native module ``_grpvss`` (pybind11, python/src/) calls the C++ library exactly as the
+``grpvss`` command does; this package adds keyword arguments, file-name conveniences and the
+``InputError`` exception. Units are the library's: lengths in the files' unit, revolute joint
+values in radians. Batches on Dask: :mod:`grpvss.dask`. Documentation: docs/python.md.
+"""
+import os
+import tempfile
+
+import _grpvss as _native
+from _grpvss import (Certificate, CheckedMotionClearance, CheckReport, Environment, Episode,
+                     InterferencePoint, LinkClearance, Path, PathError, Result, Robot, Segment,
+                     Verdict, exit_code_of)
+
+__all__ = [
+    "InputError", "Verdict", "Robot", "Environment", "Path", "Result", "Certificate",
+    "CheckReport", "Episode", "PathError", "LinkClearance", "Segment", "InterferencePoint",
+    "CheckedMotionClearance", "VerificationSession", "load_robot", "load_environment",
+    "load_path", "verify", "check_certificate", "exit_code_of",
+]
+
+#: The verdict for a path that is not qualified (thesis errors 1-6, errors 7-9): exit code 4.
+#: ``Verdict.NOT_QUALIFIED`` is the same value; its ``name`` is ``"ERROR"``, as in the reports.
+NOT_QUALIFIED = Verdict.NOT_QUALIFIED
+
+
+class InputError(ValueError):
+    """Bad input, located in a file: ``file``, ``line`` (0: the file as a whole, or an option
+    such as ``tolerance``), ``expected`` and ``found`` (empty when nothing was found)."""
+
+    def __init__(self, message, file="", line=0, expected="", found=""):
+        super().__init__(message)
+        self.file = file
+        self.line = line
+        self.expected = expected
+        self.found = found
+
+
+def load_robot(file):
+    """Reads a thesis robot file (Appendix A.1.1.1) into a :class:`Robot`."""
+    return _native.load_robot(os.fspath(file))
+
+
+def load_environment(file):
+    """Reads a thesis environment file (Appendix A.1.1.2) into an :class:`Environment`."""
+    return _native.load_environment(os.fspath(file))
+
+
+def load_path(file, robot):
+    """Reads a thesis path file (Appendix A.1.3) for ``robot`` (a :class:`Robot` or a file)."""
+    return _native.load_path(os.fspath(file), _as_robot(robot))
+
+
+def _as_robot(robot):
+    return robot if isinstance(robot, Robot) else load_robot(robot)
+
+
+def _as_environment(environment):
+    return environment if isinstance(environment, Environment) else load_environment(environment)
+
+
+def _as_path(path, robot):
+    if not isinstance(path, Path):
+        return load_path(path, robot)
+    if path.robot is robot:
+        return path
+    if path.robot.sha256 != robot.sha256:
+        raise ValueError(f"{path.file} was loaded for another robot ({path.robot.file})")
+    return load_path(path.file, robot)  # the same robot file, loaded twice
+
+
+class VerificationSession:
+    """The prepared cell: the exact set-up (hulls, tolerance offsets) of one robot in one
+    environment at one tolerance, mode and offset shape, built once. :meth:`verify` runs any
+    number of paths against it, from any number of threads (the GIL is released while a path
+    is verified)."""
+
+    def __init__(self, robot, environment, tolerance, mode="certified", offset="auto"):
+        self._native = _native.Session(_as_robot(robot), _as_environment(environment),
+                                       float(tolerance), mode, offset)
+
+    robot = property(lambda self: self._native.robot)
+    environment = property(lambda self: self._native.environment)
+    tolerance = property(lambda self: self._native.tolerance)
+    mode = property(lambda self: self._native.mode)
+    offset = property(lambda self: self._native.offset)
+
+    def verify(self, path, timing="independent", cp_speed=1.0, ik="auto", profile_table=None):
+        """Verifies ``path`` (a :class:`Path` or a path file) and returns a :class:`Result`.
+        ``timing``, ``cp_speed``, ``ik`` and ``profile_table`` are ``grpvss verify``'s options."""
+        table = os.fspath(profile_table) if profile_table is not None else ""
+        return self._native._verify(_as_path(path, self.robot), timing, float(cp_speed), ik,
+                                    table)
+
+
+def verify(robot, environment, path, tolerance, mode="certified", offset="auto",
+           timing="independent", cp_speed=1.0, ik="auto", profile_table=None):
+    """One verification, as ``grpvss verify`` runs it; arguments are objects or file names."""
+    session = VerificationSession(robot, environment, tolerance, mode=mode, offset=offset)
+    return session.verify(path, timing=timing, cp_speed=cp_speed, ik=ik,
+                          profile_table=profile_table)
+
+
+def check_certificate(robot, environment, path, certificate, timing=None, ik=None,
+                      profile_table=None):
+    """Re-verifies a certificate (a file, or a :class:`Certificate`) exactly from the inputs
+    alone, as ``grpvss check-certificate`` does; returns a :class:`CheckReport`
+    (``accepted``, ``messages``, ``exit_code``, ...). ``timing`` and ``ik``: what the caller
+    expects (unset: the certificate's; another is refused with :class:`InputError`)."""
+    robot = _as_robot(robot)
+    environment = _as_environment(environment)
+    path = _as_path(path, robot)
+    table = os.fspath(profile_table) if profile_table is not None else ""
+    if not isinstance(certificate, Certificate):
+        return _native._check_certificate_file(robot, environment, path, os.fspath(certificate),
+                                               timing, ik, table)
+    with tempfile.TemporaryDirectory(prefix="grpvss-certificate-") as folder:
+        file = os.path.join(folder, "certificate.json")
+        certificate.save(file)
+        return _native._check_certificate_file(robot, environment, path, file, timing, ik, table)

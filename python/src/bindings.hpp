@@ -1,0 +1,103 @@
+#pragma once
+// The Python module `_grpvss` (wrapped by the pure-Python package `grpvss`, python/grpvss/):
+// the types the binding files share and the functions that register each topic.
+// Every verification goes through the library's public API exactly as `grpvss verify` does
+// (io readers, resolve_setup, RobotCell built once, certify::verify); docs/python.md.
+#include <memory>
+#include <string>
+
+#include <pybind11/pybind11.h>
+
+#include "grpvss/kinematics/inverse_kinematics.hpp"
+
+#include "grpvss/certify/robot_cell.hpp"
+#include "grpvss/certify/verifier.hpp"
+#include "grpvss/evidence/setup.hpp"
+#include "grpvss/model/environment.hpp"
+#include "grpvss/model/path_program.hpp"
+#include "grpvss/model/robot_model.hpp"
+
+namespace grpvss::python {
+
+/// A thesis robot file as loaded, with the name and digest the reports record.
+struct LoadedRobot {
+  std::string file;    ///< as the caller named it
+  std::string sha256;  ///< of the bytes at load time
+  RobotModel model;
+};
+
+struct LoadedEnvironment {
+  std::string file;
+  std::string sha256;
+  Environment model;
+};
+
+/// A path file, read for one robot (which fixes N and the joint types).
+struct LoadedPath {
+  std::string file;
+  std::string sha256;
+  PathProgram program;
+  std::shared_ptr<LoadedRobot> robot;
+};
+
+/// The per-run choices that do not change the cell (`grpvss verify`'s --timing, --cp-speed,
+/// --ik, --profile-table).
+struct RunOptions {
+  std::string timing = "independent";
+  double cp_speed = 1.0;
+  std::string ik = "auto";
+  std::string profile_table;  ///< empty: the ideal trapezoids
+};
+
+/// \brief The prepared set-up (a RobotCell: exact hulls and tolerance offsets) for one robot,
+/// environment, tolerance, mode and offset shape: built once, then shared read-only by every
+/// verification against it, from any number of threads.
+class Session {
+ public:
+  Session(std::shared_ptr<LoadedRobot> robot,
+          std::shared_ptr<LoadedEnvironment> environment, double tolerance,
+          const std::string& mode, const std::string& offset);
+
+  const LoadedRobot& robot() const { return *robot_; }
+  const LoadedEnvironment& environment() const { return *environment_; }
+  std::shared_ptr<LoadedRobot> robot_pointer() const { return robot_; }
+  std::shared_ptr<LoadedEnvironment> environment_pointer() const { return environment_; }
+  const certify::RobotCell& cell() const { return *cell_; }
+  const certify::SetupRequest& request() const { return request_; }
+
+ private:
+  std::shared_ptr<LoadedRobot> robot_;
+  std::shared_ptr<LoadedEnvironment> environment_;
+  certify::SetupRequest request_;  ///< tolerance, mode, offset; the motion is per run
+  std::unique_ptr<const certify::RobotCell> cell_;
+};
+
+/// One finished verification: what it ran on (kept alive) and what it produced.
+struct RunRecord {
+  std::shared_ptr<const Session> session;
+  std::shared_ptr<LoadedPath> path;
+  std::string ik_name;
+  certify::VerificationRun run;
+};
+
+/// Reads a `verify`-style word ("certified", "cube", ...) or throws InputError naming `option`.
+certify::ResolutionMode parse_mode(const std::string& text);
+certify::SetupRequest base_request(double tolerance, const std::string& mode,
+                                   const std::string& offset);
+motion::MotionModel parse_motion(const RunOptions& options);
+kinematics::IkChoice parse_ik_choice(const std::string& text);
+
+/// The run's certificate object, None in thesis mode (it proves nothing).
+pybind11::object certificate_of(const std::shared_ptr<RunRecord>& record);
+
+void bind_errors(pybind11::module_& module);
+using RobotClass = pybind11::class_<LoadedRobot, std::shared_ptr<LoadedRobot>>;
+
+/// Registers Robot (returned, for bind_kinematics), Environment, Path and the loaders.
+RobotClass bind_model_loading(pybind11::module_& module);
+void bind_kinematics(RobotClass& robot);
+void bind_verification(pybind11::module_& module);
+void bind_results(pybind11::module_& module);
+void bind_certificates(pybind11::module_& module);
+
+}  // namespace grpvss::python
