@@ -4,9 +4,6 @@
 #include <memory>
 #include <string>
 
-#include "grpvss/io/profile_table_file.hpp"
-#include "grpvss/common/input_error.hpp"
-#include "grpvss/motion/profile_table.hpp"
 
 namespace grpvss::app {
 
@@ -31,7 +28,7 @@ void add_input_options(CLI::App& command, VerifyArguments& args) {
   command.add_option("--env", args.environment_file, "Environment file (thesis A.1.1.2)")->required();
   command.add_option("--path", args.path_file, "Path file (thesis A.1.3)")->required();
   command.add_option("--timing", args.timing, "PTP joint timing")
-      ->check(CLI::IsMember({"independent", "synchronized"}))
+      ->check(CLI::IsMember(batch::timing_choices()))
       ->capture_default_str();
   command.add_option("--profile-table", args.profile_table,
                      "Motion-time table replacing the ideal trapezoids (docs/trajectories.md)");
@@ -45,45 +42,16 @@ void add_verify_options(CLI::App& command, VerifyArguments& args) {
       ->required()
       ->check(positive_number());
   command.add_option("--mode", args.mode, "Step rule: certified, or thesis (never certified)")
-      ->check(CLI::IsMember({"certified", "thesis"}))
+      ->check(CLI::IsMember(batch::mode_choices()))
       ->capture_default_str();
   command.add_option("--offset", args.offset,
                      "Tolerance offset polytope: auto, cube (thesis) or rhombicuboctahedron")
-      ->check(CLI::IsMember({"auto", "cube", "rhombicuboctahedron"}))
+      ->check(CLI::IsMember(batch::offset_choices()))
       ->capture_default_str();
   command.add_option("--cp-speed", args.cp_speed,
                      "Nominal end-effector speed on CP lines (length units per s)")
       ->check(positive_number())
       ->capture_default_str();
-}
-
-certify::SetupRequest make_setup_request(const VerifyArguments& args) {
-  certify::SetupRequest request;
-  request.tolerance = args.tolerance;
-  request.mode = args.mode == "thesis" ? certify::ResolutionMode::kThesis
-                                       : certify::ResolutionMode::kCertified;
-  request.offset_shape = geometry::offset_shape_from_string(args.offset);  // "auto": unset
-  request.motion.timing =
-      motion::ptp_timing_from_string(args.timing).value_or(motion::PtpTiming::kIndependent);
-  request.motion.cp_speed = args.cp_speed;
-  if (!args.profile_table.empty()) {
-    request.motion.table = std::make_shared<const motion::ProfileTable>(
-        io::read_profile_table_file(args.profile_table));
-  }
-  return request;
-}
-
-kinematics::IkChoice parse_ik_choice(const std::string& text) {
-  const std::string plugin_prefix = "plugin:";
-  if (text == "auto") return {kinematics::IkMethod::kAuto, {}};
-  if (text == "numeric") return {kinematics::IkMethod::kNumeric, {}};
-  if (text == "ibm7545") return {kinematics::IkMethod::kIbm7545, {}};
-  if (text == "opw") return {kinematics::IkMethod::kOpw, {}};
-  if (text == "ur") return {kinematics::IkMethod::kUr, {}};
-  if (text.rfind(plugin_prefix, 0) == 0 && text.size() > plugin_prefix.size()) {
-    return {kinematics::IkMethod::kPlugin, text.substr(plugin_prefix.size())};
-  }
-  throw InputError("--ik", 0, "auto, ibm7545, opw, ur, numeric or plugin:PATH.so", "'" + text + "'");
 }
 
 }  // namespace grpvss::app

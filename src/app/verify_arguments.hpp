@@ -5,22 +5,12 @@
 
 #include <CLI/CLI.hpp>
 
-#include "grpvss/evidence/setup.hpp"
-#include "grpvss/kinematics/inverse_kinematics.hpp"
+#include "grpvss/batch/verify_options.hpp"
 
 namespace grpvss::app {
 
-struct VerifyArguments {
-  std::string robot_file;
-  std::string environment_file;
-  std::string path_file;
-  double tolerance = 0.0;
-  std::string mode = "certified";
-  std::string offset = "auto";
-  std::string timing = "independent";
-  std::string profile_table;
-  std::string ik = "auto";
-  double cp_speed = 1.0;
+/// The inputs and choices (shared with `grpvss batch`'s manifests), and the outputs.
+struct VerifyArguments : batch::VerifyOptions {
   std::string out;
   std::string json;
   std::string certificate;
@@ -37,9 +27,8 @@ CLI::Validator positive_number();
 void add_verify_options(CLI::App& command, VerifyArguments& args);
 void add_input_options(CLI::App& command, VerifyArguments& args);
 
-/// The CLI's words turned into the typed request, once (reads the profile table file).
-certify::SetupRequest make_setup_request(const VerifyArguments& args);
-/// `--ik`: auto, ibm7545, opw, ur, numeric or plugin:PATH.so. \throws InputError ("--ik", line 0).
-kinematics::IkChoice parse_ik_choice(const std::string& text);
+// The words turned into the typed request: one implementation for verify and batch.
+using batch::make_setup_request;
+using batch::parse_ik_choice;
 
 }  // namespace grpvss::app
