@@ -105,6 +105,37 @@ JobInputs load_inputs(const BatchJob& job, SharedInputs& shared) {
   return inputs;
 }
 
+/// Finishes and publishes each report the job asked for, recording it in `result.outputs`.
+void publish_reports(const BatchJob& job, const certify::VerificationRun& run,
+                     const JobInputs& inputs, const SharedCell& cell, const std::string& ik_name,
+                     const BatchOptions& options, JobReports& reports, JobResult& result) {
+  const JobOutputs& out = job.outputs;
+  if (reports.thesis_output) {
+    reports.thesis_output->finish(run.result);
+    result.outputs.push_back({"output", out.thesis_output});
+  }
+  if (reports.json_report) {
+    reports.json_report->finish(run.result, cell.cell, inputs.digests, report::utc_timestamp_now());
+    if (!out.json.empty()) result.outputs.push_back({"json", out.json});
+  }
+  if (!out.html.empty()) {
+    options.html_writer(out.html, options.force, inputs.robot->model.name,
+                        [&](report::AtomicOutputFile& file) {
+                          reports.json_report->write_script_safe_report(file);
+                        });
+    result.outputs.push_back({"html", out.html});
+  }
+  if (reports.certificate) {
+    const report::InputDigests& d = inputs.digests;
+    reports.certificate->finish(run.certificate, {{"robot", d.robot.sha256},
+                                                  {"environment", d.environment.sha256},
+                                                  {"path", d.path.sha256},
+                                                  {"ik", ik_name}});
+    result.outputs.push_back({"certificate", out.certificate});
+  }
+}
+
+// `grpvss verify` (app/command_verify.cpp) on the shared cell, with the same report writers.
 void verify_job(const BatchJob& job, SharedInputs& shared, const BatchOptions& options,
                 JobResult& result) {
   const JobInputs inputs = load_inputs(job, shared);
@@ -119,29 +150,7 @@ void verify_job(const BatchJob& job, SharedInputs& shared, const BatchOptions& o
   const certify::VerificationRun run =
       certify::verify(cell->cell, inputs.program, motion::make_kinematics_access(robot, ik),
                       inputs.setup.run, hooks);
-  const JobOutputs& out = job.outputs;
-  if (reports.thesis_output) {
-    reports.thesis_output->finish(run.result);
-    result.outputs.push_back({"output", out.thesis_output});
-  }
-  if (reports.json_report) {
-    reports.json_report->finish(run.result, cell->cell, inputs.digests, report::utc_timestamp_now());
-    if (!out.json.empty()) result.outputs.push_back({"json", out.json});
-  }
-  if (!out.html.empty()) {
-    options.html_writer(out.html, options.force, robot.name, [&](report::AtomicOutputFile& file) {
-      reports.json_report->write_script_safe_report(file);
-    });
-    result.outputs.push_back({"html", out.html});
-  }
-  if (reports.certificate) {
-    const report::InputDigests& d = inputs.digests;
-    reports.certificate->finish(run.certificate, {{"robot", d.robot.sha256},
-                                                  {"environment", d.environment.sha256},
-                                                  {"path", d.path.sha256},
-                                                  {"ik", ik->name()}});
-    result.outputs.push_back({"certificate", out.certificate});
-  }
+  publish_reports(job, run, inputs, *cell, ik->name(), options, reports, result);
   result.verdict = run.result.verdict;
   result.exit_code = verdict_exit_code(run.result.verdict);
   result.steps = reports.counter.steps;

@@ -18,9 +18,10 @@ namespace {
 /// One `key: value` of a job, whatever the manifest's format: the text of a string (or of a
 /// YAML scalar) and, when the value is a number, its value.
 struct RawValue {
-  std::optional<std::string> text;  ///< empty: not a string or scalar
+  std::optional<std::string> text;  ///< empty: not a string, scalar or integer
   std::optional<double> number;     ///< empty: not a number
   std::string kind;                 ///< "a string", "an array", ... for messages
+  bool integer_only = false;        ///< `text` is a JSON integer's: good for `id` alone
 };
 
 struct RawJob {
@@ -92,7 +93,9 @@ void apply_field(BatchJob& job, const std::string& key, const RawValue& value,
     rule->second.set_number(job, *value.number);
     return;
   }
-  if (!value.text) throw InputError(file, job.line, "`" + key + "`: a string", value.kind);
+  if (!value.text || (value.integer_only && key != "id")) {
+    throw InputError(file, job.line, "`" + key + "`: a string", value.kind);
+  }
   const bool is_file = rule->second.kind == KeyRule::Kind::kFile;
   rule->second.set_text(job, is_file ? resolved(*value.text, base) : *value.text);
 }
@@ -139,7 +142,10 @@ RawValue json_value(const nlohmann::json& value) {
   RawValue raw{{}, {}, json_kind(value)};
   if (value.is_string()) raw.text = value.get<std::string>();
   if (value.is_number()) raw.number = value.get<double>();
-  if (value.is_number_integer()) raw.text = value.dump();  // an `id` may be a number
+  if (value.is_number_integer()) {  // an `id` may be a number
+    raw.text = value.dump();
+    raw.integer_only = true;
+  }
   return raw;
 }
 

@@ -101,6 +101,8 @@ TEST(BatchManifest, MissingKeysWrongTypesAndBadChoicesNameTheLine) {
             "cells/m.jsonl:1: expected `tolerance`: a number, found a string");
   EXPECT_EQ(manifest_error(R"({"robot":["r"],"env":"e.txt","path":"p","tolerance":1})"),
             "cells/m.jsonl:1: expected `robot`: a string, found an array");
+  EXPECT_EQ(manifest_error(R"({"robot":"r.txt","env":"e.txt","path":3,"tolerance":1})"),
+            "cells/m.jsonl:1: expected `path`: a string, found a number");
   EXPECT_EQ(manifest_error("{" + kJob + "}\n{" + kJob + R"(,"tolerance":-1})"),
             "cells/m.jsonl:2: expected `tolerance`: a finite number > 0, found -1");
   EXPECT_EQ(manifest_error("{" + kJob + R"(,"mode":"fast"})"),
