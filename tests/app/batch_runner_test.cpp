@@ -182,6 +182,31 @@ TEST_F(BatchRunner, ReportFilesAreWrittenAndListedInTheResult) {
             (std::vector<std::string>{"a.cert", "a.json", "a.out", "ptp.txt"}));
 }
 
+TEST_F(BatchRunner, ProgressCountsEveryJobAndASinkErrorEndsTheBatch) {
+  std::string lines;
+  for (int i = 0; i < 8; ++i) lines += job("bench-environment-near-miss.txt", "ptp.txt", 0.5);
+  const BatchManifest jobs = manifest(lines);
+  BatchOptions options;
+  options.threads = 2;
+  std::vector<std::size_t> done;
+  run_batch(jobs, options, [](const JobResult&) {},
+            [&](std::size_t finished, std::size_t total) {
+              EXPECT_EQ(total, 8u);
+              done.push_back(finished);
+            });
+  EXPECT_EQ(done, (std::vector<std::size_t>{1, 2, 3, 4, 5, 6, 7, 8}));
+
+  options.window_per_thread = 1;
+  std::vector<std::size_t> printed;
+  EXPECT_THROW(run_batch(jobs, options,
+                         [&](const JobResult& result) {
+                           printed.push_back(result.index);
+                           if (result.index == 2) throw std::runtime_error("stdout closed");
+                         }),
+               std::runtime_error);
+  EXPECT_EQ(printed, (std::vector<std::size_t>{0, 1, 2}));  // nothing after the failure
+}
+
 TEST(BatchExitCode, TheWorstFollowsTheDocumentedOrder) {
   const std::vector<int> order{0, 3, 5, 4, 1, 2, 70};  // best to worst
   for (std::size_t i = 0; i < order.size(); ++i) {
