@@ -31,22 +31,21 @@ class OrderedScheduler {
     return next_start_++;
   }
 
-  /// Stores a finished job and emits every result whose predecessors are all emitted.
+  /// Stores a finished job and emits every result whose predecessors are all emitted. After
+  /// a sink failed, nothing more is emitted (the running jobs just finish).
   void finish(JobResult result) {
     std::lock_guard<std::mutex> lock(mutex_);
-    pending_.emplace(result.index, std::move(result));
     ++done_;
-    try {
-      if (progress_) progress_(done_, total_);
-      for (auto first = pending_.begin(); first != pending_.end() && first->first == next_emit_;
-           first = pending_.begin()) {
-        results_(first->second);
-        pending_.erase(first);
-        ++next_emit_;
+    if (!stopped_) {
+      pending_.emplace(result.index, std::move(result));
+      try {
+        if (progress_) progress_(done_, total_);
+        emit_ready();
+      } catch (...) {
+        error_ = std::current_exception();
+        stopped_ = true;
+        pending_.clear();
       }
-    } catch (...) {
-      if (!error_) error_ = std::current_exception();
-      stopped_ = true;
     }
     changed_.notify_all();
   }
@@ -56,6 +55,18 @@ class OrderedScheduler {
   }
 
  private:
+  // Under the lock. A result leaves `pending_` before the sink sees it: a sink that throws
+  // has been given each result at most once.
+  void emit_ready() {
+    for (auto first = pending_.begin(); first != pending_.end() && first->first == next_emit_;
+         first = pending_.begin()) {
+      const JobResult next = std::move(first->second);
+      pending_.erase(first);
+      ++next_emit_;
+      results_(next);
+    }
+  }
+
   std::size_t total_;
   std::size_t window_;
   const ResultSink& results_;
