@@ -68,10 +68,13 @@ function(grpvss_add_stages)
   grpvss_add_stage(report DEPENDS certify io cell
                    PUBLIC_LIBS fmt::fmt PRIVATE_LIBS OpenSSL::Crypto)
   target_compile_definitions(grpvss_report PRIVATE GRPVSS_VERSION="${PROJECT_VERSION}")
+  # Many verifications on all cores, sharing each robot cell read-only (docs/batch.md).
+  grpvss_add_stage(batch DEPENDS report
+                   PRIVATE_LIBS fmt::fmt nlohmann_json::nlohmann_json yaml-cpp Threads::Threads)
   # Everything a user links: `find_package(grpvss)` then `target_link_libraries(x grpvss::grpvss)`.
   add_library(grpvss_all INTERFACE)
   add_library(grpvss::grpvss ALIAS grpvss_all)
   set_target_properties(grpvss_all PROPERTIES EXPORT_NAME grpvss)
-  target_link_libraries(grpvss_all INTERFACE grpvss_report grpvss_checker grpvss_certify
+  target_link_libraries(grpvss_all INTERFACE grpvss_batch grpvss_report grpvss_checker grpvss_certify
                                              grpvss_cell grpvss_io)
 endfunction()

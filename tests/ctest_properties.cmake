@@ -4,6 +4,10 @@ foreach(test IN LISTS grpvss_tests_TESTS)
   if(test MATCHES "^AbsurdInput\\.")
     # Absurd inputs must fail fast: seconds, even under the sanitizers on a loaded machine.
     set_tests_properties("${test}" PROPERTIES TIMEOUT 30)
+  elseif(test STREQUAL "BatchMemory.TenThousandJobsStayUnder500MBAndAgreeWithVerify")
+    # 10,000 verifications (~11 s on 2 cores): a resident-memory bound means nothing under the
+    # sanitizers (shadow memory, quarantine), so Release only, like ResourceBounds.
+    set_tests_properties("${test}" PROPERTIES TIMEOUT 900 LABELS heavy)
   elseif(test MATCHES "^ResourceBounds\\.")
     # The 10,000-obstacle, 100,000-step run: Release only (the sanitizer suite skips the label).
     set_tests_properties("${test}" PROPERTIES TIMEOUT 300 LABELS heavy)

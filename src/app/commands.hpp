@@ -10,6 +10,7 @@ namespace grpvss::app {
 
 void register_trajectory_command(CLI::App& app, int& exit_code);
 void register_verify_command(CLI::App& app, int& exit_code);
+void register_batch_command(CLI::App& app, int& exit_code);
 void register_check_certificate_command(CLI::App& app, int& exit_code);
 void register_expansion_audit_command(CLI::App& app, int& exit_code);
 void register_animate_command(CLI::App& app, int& exit_code);

@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
   int exit_code = grpvss::app::kExitOk;
   grpvss::app::register_trajectory_command(app, exit_code);
   grpvss::app::register_verify_command(app, exit_code);
+  grpvss::app::register_batch_command(app, exit_code);
   grpvss::app::register_check_certificate_command(app, exit_code);
   grpvss::app::register_expansion_audit_command(app, exit_code);
   grpvss::app::register_animate_command(app, exit_code);

@@ -5,9 +5,8 @@
 #include <memory>
 #include <string>
 
-#include "grpvss/io/profile_table_file.hpp"
 #include "grpvss/common/input_error.hpp"
-#include "grpvss/motion/profile_table.hpp"
+
 
 namespace grpvss::app {
 
@@ -38,7 +37,7 @@ void add_input_options(CLI::App& command, VerifyArguments& args) {
   command.add_option("--timing", args.timing,
                      "PTP joint timing (default: independent for thesis files, synchronized "
                      "for a cell)")
-      ->check(CLI::IsMember({"independent", "synchronized"}));
+      ->check(CLI::IsMember(batch::timing_choices()));
   command.add_option("--profile-table", args.profile_table,
                      "Motion-time table replacing the ideal trapezoids (docs/trajectories.md)");
   command.add_option("--ik", args.ik, "IK: auto, ibm7545, opw, ur, numeric or plugin:PATH.so (docs/ik.md)")
@@ -51,11 +50,11 @@ void add_verify_options(CLI::App& command, VerifyArguments& args) {
                      "Tolerance Delta (> 0, length units; default: the cell's)")
       ->check(positive_number());
   command.add_option("--mode", args.mode, "Step rule: certified, or thesis (never certified)")
-      ->check(CLI::IsMember({"certified", "thesis"}))
+      ->check(CLI::IsMember(batch::mode_choices()))
       ->capture_default_str();
   command.add_option("--offset", args.offset,
                      "Tolerance offset polytope: auto, cube (thesis) or rhombicuboctahedron")
-      ->check(CLI::IsMember({"auto", "cube", "rhombicuboctahedron"}))
+      ->check(CLI::IsMember(batch::offset_choices()))
       ->capture_default_str();
   command.add_option("--cp-speed", args.cp_speed,
                      "Nominal end-effector speed on CP lines (length units per s; default: the "
@@ -88,34 +87,12 @@ double resolved_tolerance(const VerifyArguments& args, const ModelInputs& model)
 }  // namespace
 
 certify::SetupRequest make_setup_request(const VerifyArguments& args, const ModelInputs& model) {
-  certify::SetupRequest request;
-  request.tolerance = resolved_tolerance(args, model);
-  request.mode = args.mode == "thesis" ? certify::ResolutionMode::kThesis
-                                       : certify::ResolutionMode::kCertified;
-  request.offset_shape = geometry::offset_shape_from_string(args.offset);  // "auto": unset
-  const motion::PtpTiming default_timing =
-      model.from_cell ? motion::PtpTiming::kSynchronized : motion::PtpTiming::kIndependent;
-  request.motion.timing = motion::ptp_timing_from_string(args.timing).value_or(default_timing);
-  request.motion.cp_speed =
-      args.cp_speed > 0.0 ? args.cp_speed * model.model_units_per_cell_unit : model.cp_speed.value_or(1.0);
-  if (!args.profile_table.empty()) {
-    request.motion.table = std::make_shared<const motion::ProfileTable>(
-        io::read_profile_table_file(args.profile_table));
-  }
-  return request;
-}
-
-kinematics::IkChoice parse_ik_choice(const std::string& text) {
-  const std::string plugin_prefix = "plugin:";
-  if (text == "auto") return {kinematics::IkMethod::kAuto, {}};
-  if (text == "numeric") return {kinematics::IkMethod::kNumeric, {}};
-  if (text == "ibm7545") return {kinematics::IkMethod::kIbm7545, {}};
-  if (text == "opw") return {kinematics::IkMethod::kOpw, {}};
-  if (text == "ur") return {kinematics::IkMethod::kUr, {}};
-  if (text.rfind(plugin_prefix, 0) == 0 && text.size() > plugin_prefix.size()) {
-    return {kinematics::IkMethod::kPlugin, text.substr(plugin_prefix.size())};
-  }
-  throw InputError("--ik", 0, "auto, ibm7545, opw, ur, numeric or plugin:PATH.so", "'" + text + "'");
+  batch::VerifyOptions resolved = args;
+  resolved.tolerance = resolved_tolerance(args, model);
+  if (resolved.timing.empty()) resolved.timing = model.from_cell ? "synchronized" : "independent";
+  resolved.cp_speed = args.cp_speed > 0.0 ? args.cp_speed * model.model_units_per_cell_unit
+                                          : model.cp_speed.value_or(1.0);
+  return batch::make_setup_request(resolved);
 }
 
 }  // namespace grpvss::app

@@ -2,29 +2,25 @@
 // The options `verify` and `check-certificate` share (the checker must replay the same
 // trajectory the verifier certified).
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
-#include "grpvss/evidence/setup.hpp"
-#include "grpvss/kinematics/inverse_kinematics.hpp"
+#include "grpvss/batch/verify_options.hpp"
 #include "model_inputs.hpp"
 
 namespace grpvss::app {
 
-struct VerifyArguments {
-  std::string robot_file;
-  std::string environment_file;
+/// The inputs and choices (shared with `grpvss batch`'s manifests), and the outputs.
+struct VerifyArguments : batch::VerifyOptions {
+  // On the command line a cell may supply these: unset until given (timing "", cp_speed 0,
+  // tolerance 0), resolved by make_setup_request(args, model).
+  VerifyArguments() {
+    timing.clear();
+    cp_speed = 0.0;
+  }
   std::string cell_file;
   std::vector<std::string> package_paths;
-  std::string path_file;
-  double tolerance = 0.0;  ///< 0: the cell's (an error without a cell)
-  std::string mode = "certified";
-  std::string offset = "auto";
-  /// Empty: independent for thesis files, synchronized for a cell (what controllers do).
-  std::string timing;
-  std::string profile_table;
-  std::string ik = "auto";
-  double cp_speed = 0.0;  ///< 0: the cell's, else 1 length unit per s
   std::string out;
   std::string json;
   std::string certificate;
@@ -43,14 +39,16 @@ CLI::Validator positive_number();
 void add_verify_options(CLI::App& command, VerifyArguments& args);
 void add_input_options(CLI::App& command, VerifyArguments& args);
 
+// The words turned into the typed request: one implementation for verify and batch.
+using batch::make_setup_request;
+using batch::parse_ik_choice;
+
 /// The model sources the arguments name.
 ModelSources model_sources(const VerifyArguments& args);
 
-/// The CLI's words turned into the typed request, once (reads the profile table file). The
-/// model supplies the defaults a cell sets (tolerance, timing, CP speed) and its units.
-/// \throws InputError("--tolerance", 0, ...) when neither the command line nor the cell gives one.
+/// The arguments with what the model supplies when they leave it unset (a cell's tolerance,
+/// CP speed and synchronized timing; lengths given with a cell are in its unit), as the typed
+/// request. \throws InputError("--tolerance", 0, ...) when neither gives a tolerance.
 certify::SetupRequest make_setup_request(const VerifyArguments& args, const ModelInputs& model);
-/// `--ik`: auto, ibm7545, opw, ur, numeric or plugin:PATH.so. \throws InputError ("--ik", line 0).
-kinematics::IkChoice parse_ik_choice(const std::string& text);
 
 }  // namespace grpvss::app

@@ -38,6 +38,11 @@ CASES = [
     ("src/certify/verifier.cpp", "grpvss/report/json_report.hpp", False),
     ("src/report/json_report.cpp", "grpvss/certify/robot_cell.hpp", True),
     ("src/report/json_report.cpp", "certify/cell_probe.hpp", False),
+    # The batch runs the verifier and the report writers; nothing before it sees the batch.
+    ("src/batch/batch_runner.cpp", "grpvss/report/json_report_stream.hpp", True),
+    ("src/batch/batch_runner.cpp", "grpvss/certify/verifier.hpp", True),
+    ("src/batch/batch_runner.cpp", "grpvss/checker/certificate_checker.hpp", False),
+    ("src/report/json_report.cpp", "grpvss/batch/batch_runner.hpp", False),
 ]
 
 

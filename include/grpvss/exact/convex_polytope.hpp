@@ -105,8 +105,8 @@ class ConvexPolytope {
   std::vector<std::array<int, 2>> edges_;
   std::vector<std::array<int, 2>> edge_faces_;
   // Display planes and volume: computed by from_points(), on first use for
-  // from_points_like() (the verifier's placed hulls never need them). A lazily filled
-  // cache: GRPVSS is single-threaded; do not share one polytope between threads.
+  // from_points_like() (the verifier's placed hulls never need them). A lazily filled cache:
+  // share between threads only polytopes from from_points() (a RobotCell's; docs/batch.md).
   void ensure_measures() const {
     if (!measures_ready_) compute_measures();
   }

@@ -1,0 +1,190 @@
+#include "batch_job.hpp"
+
+#include <exception>
+#include <optional>
+#include <string>
+
+#include "grpvss/certify/verifier.hpp"
+#include "grpvss/common/input_error.hpp"
+#include "grpvss/io/path_file.hpp"
+#include "grpvss/io/text_file.hpp"
+#include "grpvss/motion/kinematics_adapter.hpp"
+#include "grpvss/report/certificate_output.hpp"
+#include "grpvss/report/file_units.hpp"
+#include "grpvss/report/input_digests.hpp"
+#include "grpvss/report/json_report.hpp"
+#include "grpvss/report/json_report_stream.hpp"
+#include "grpvss/report/thesis_output.hpp"
+
+namespace grpvss::batch {
+namespace {
+
+constexpr int kExitInputError = 2;
+constexpr int kExitInternalError = 70;
+
+std::string file_label(const std::string& path) {
+  const auto slash = path.find_last_of('/');
+  return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+/// Counts the accepted steps (the run keeps none in memory).
+class StepCounter : public certify::VerificationObserver {
+ public:
+  void on_step(const certify::StepRecord&) override { ++steps; }
+  int steps = 0;
+};
+
+/// The report writers one job asked for, each an observer of the run.
+struct JobReports {
+  std::optional<report::ThesisOutputStream> thesis_output;
+  std::optional<report::JsonReportStream> json_report;
+  std::optional<report::CertificateStream> certificate;
+  StepCounter counter;
+};
+
+void attach_reports(const BatchJob& job, const RobotModel& robot, bool force, JobReports& reports,
+                    certify::RunHooks& hooks) {
+  const JobOutputs& out = job.outputs;
+  hooks.observers.push_back(&reports.counter);
+  if (!out.thesis_output.empty()) {
+    reports.thesis_output.emplace(out.thesis_output, force, report::joint_types_of(robot));
+    hooks.observers.push_back(&*reports.thesis_output);
+  }
+  if (!out.json.empty() || !out.html.empty()) {
+    report::JsonReportStream::Outputs outputs;
+    outputs.json_path = out.json;
+    outputs.script_safe = !out.html.empty();
+    outputs.scratch_path = out.json.empty() ? out.html : out.json;
+    outputs.force = force;
+    reports.json_report.emplace(robot, std::move(outputs));
+    hooks.observers.push_back(&*reports.json_report);
+  }
+  if (!out.certificate.empty()) {
+    reports.certificate.emplace(out.certificate, force);
+    hooks.observers.push_back(&*reports.certificate);
+  }
+}
+
+std::optional<SmallestClearance> smallest_clearance(const certify::VerificationResult& result) {
+  std::optional<SmallestClearance> smallest;
+  for (const certify::LinkClearanceSummary& link : result.link_clearances) {
+    if (!smallest || link.min_clearance < smallest->clearance) {
+      smallest = SmallestClearance{link.min_clearance, link.link, link.obstacle, link.step};
+    }
+  }
+  return smallest;
+}
+
+/// Everything the job reads: the shared robot, environment and cell, its own path.
+struct JobInputs {
+  std::shared_ptr<const LoadedRobot> robot;
+  std::shared_ptr<const LoadedEnvironment> environment;
+  PathProgram program;
+  report::InputDigests digests;
+  certify::VerificationSetup setup;
+};
+
+JobInputs load_inputs(const BatchJob& job, SharedInputs& shared) {
+  const VerifyOptions& options = job.options;
+  JobInputs inputs;
+  inputs.robot = shared.robot(options.robot_file);
+  inputs.environment = shared.environment(options.environment_file);
+  const std::string path_text = io::read_text_file(options.path_file);
+  inputs.program = io::parse_path_file(path_text, options.path_file, inputs.robot->model);
+  inputs.digests = {{options.robot_file, inputs.robot->sha256},
+                    {options.environment_file, inputs.environment->sha256},
+                    {options.path_file, report::sha256_hex(path_text)}};
+  VerifyOptions without_table = options;
+  without_table.profile_table.clear();  // read once per batch, below
+  certify::SetupRequest request = make_setup_request(without_table);
+  if (!options.profile_table.empty()) {
+    request.motion.table = shared.profile_table(options.profile_table);
+  }
+  request.path_label = file_label(options.path_file);
+  inputs.setup = certify::resolve_setup(request);
+  return inputs;
+}
+
+/// Finishes and publishes each report the job asked for, recording it in `result.outputs`.
+void publish_reports(const BatchJob& job, const certify::VerificationRun& run,
+                     const JobInputs& inputs, const SharedCell& cell, const std::string& ik_name,
+                     const BatchOptions& options, JobReports& reports, JobResult& result) {
+  const JobOutputs& out = job.outputs;
+  if (reports.thesis_output) {
+    reports.thesis_output->finish(run.result);
+    result.outputs.push_back({"output", out.thesis_output});
+  }
+  if (reports.json_report) {
+    reports.json_report->finish(run.result, cell.cell, inputs.digests, report::utc_timestamp_now());
+    if (!out.json.empty()) result.outputs.push_back({"json", out.json});
+  }
+  if (!out.html.empty()) {
+    options.html_writer(out.html, options.force, inputs.robot->model.name,
+                        [&](report::AtomicOutputFile& file) {
+                          reports.json_report->write_script_safe_report(file);
+                        });
+    result.outputs.push_back({"html", out.html});
+  }
+  if (reports.certificate) {
+    const report::InputDigests& d = inputs.digests;
+    reports.certificate->finish(run.certificate, {{"robot", d.robot.sha256},
+                                                  {"environment", d.environment.sha256},
+                                                  {"path", d.path.sha256},
+                                                  {"ik", ik_name}});
+    result.outputs.push_back({"certificate", out.certificate});
+  }
+}
+
+// `grpvss verify` (app/command_verify.cpp) on the shared cell, with the same report writers.
+void verify_job(const BatchJob& job, SharedInputs& shared, const BatchOptions& options,
+                JobResult& result) {
+  const JobInputs inputs = load_inputs(job, shared);
+  const RobotModel& robot = inputs.robot->model;
+  const auto ik = motion::select_ik(parse_ik_choice(job.options.ik), robot, job.options.robot_file);
+  const std::shared_ptr<const SharedCell> cell =
+      shared.cell(inputs.robot, inputs.environment, inputs.setup.cell);
+  JobReports reports;
+  certify::RunHooks hooks;
+  hooks.keep_steps = false;
+  attach_reports(job, robot, options.force, reports, hooks);
+  const certify::VerificationRun run =
+      certify::verify(cell->cell, inputs.program, motion::make_kinematics_access(robot, ik),
+                      inputs.setup.run, hooks);
+  publish_reports(job, run, inputs, *cell, ik->name(), options, reports, result);
+  result.verdict = run.result.verdict;
+  result.exit_code = verdict_exit_code(run.result.verdict);
+  result.steps = reports.counter.steps;
+  result.smallest_clearance = smallest_clearance(run.result);
+}
+
+}  // namespace
+
+int verdict_exit_code(certify::Verdict verdict) {
+  switch (verdict) {
+    case certify::Verdict::kClear: return 0;
+    case certify::Verdict::kCollision: return 1;
+    case certify::Verdict::kWithinTolerance: return 3;
+    case certify::Verdict::kError: return 4;
+    case certify::Verdict::kUndecided: return 5;
+  }
+  throw std::logic_error("verdict_exit_code: unknown verdict");
+}
+
+JobResult run_job(const BatchJob& job, SharedInputs& shared, const BatchOptions& options) {
+  JobResult result;
+  result.index = job.index;
+  result.line = job.line;
+  result.id = job.id;
+  try {
+    verify_job(job, shared, options, result);
+  } catch (const InputError& error) {
+    result = JobResult{job.index, job.line, job.id, {}, kExitInputError, 0, {}, result.outputs,
+                       JobError{error.file(), error.line(), error.what()}};
+  } catch (const std::exception& error) {
+    result = JobResult{job.index, job.line, job.id, {}, kExitInternalError, 0, {}, result.outputs,
+                       JobError{"", 0, error.what()}};
+  }
+  return result;
+}
+
+}  // namespace grpvss::batch

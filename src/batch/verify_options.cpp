@@ -1,0 +1,101 @@
+#include "grpvss/batch/verify_options.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+
+#include <fmt/core.h>
+
+#include "grpvss/common/input_error.hpp"
+#include "grpvss/io/profile_table_file.hpp"
+#include "grpvss/motion/profile_table.hpp"
+
+namespace grpvss::batch {
+namespace {
+
+bool is_one_of(const std::string& word, const std::vector<std::string>& choices) {
+  return std::find(choices.begin(), choices.end(), word) != choices.end();
+}
+
+std::string listed(const std::vector<std::string>& choices) {
+  std::string text;
+  for (std::size_t i = 0; i < choices.size(); ++i) {
+    if (i > 0) text += i + 1 == choices.size() ? " or " : ", ";
+    text += choices[i];
+  }
+  return text;
+}
+
+void check_word(const std::string& key, const std::string& word,
+                const std::vector<std::string>& choices, const std::string& file, int line) {
+  if (!is_one_of(word, choices)) {
+    throw InputError(file, line, "`" + key + "`: " + listed(choices), "'" + word + "'");
+  }
+}
+
+void check_positive(const std::string& key, double value, const std::string& file, int line) {
+  if (!(std::isfinite(value) && value > 0.0)) {
+    throw InputError(file, line, "`" + key + "`: a finite number > 0", fmt::format("{}", value));
+  }
+}
+
+}  // namespace
+
+const std::vector<std::string>& mode_choices() {
+  static const std::vector<std::string> choices{"certified", "thesis"};
+  return choices;
+}
+
+const std::vector<std::string>& offset_choices() {
+  static const std::vector<std::string> choices{"auto", "cube", "rhombicuboctahedron"};
+  return choices;
+}
+
+const std::vector<std::string>& timing_choices() {
+  static const std::vector<std::string> choices{"independent", "synchronized"};
+  return choices;
+}
+
+void check_verify_options(const VerifyOptions& options, const std::string& file, int line) {
+  check_positive("tolerance", options.tolerance, file, line);
+  check_positive("cp_speed", options.cp_speed, file, line);
+  check_word("mode", options.mode, mode_choices(), file, line);
+  check_word("offset", options.offset, offset_choices(), file, line);
+  check_word("timing", options.timing, timing_choices(), file, line);
+  try {
+    (void)parse_ik_choice(options.ik);
+  } catch (const InputError& error) {
+    throw InputError(file, line, "`ik`: " + error.expected(), error.found());
+  }
+}
+
+certify::SetupRequest make_setup_request(const VerifyOptions& options) {
+  certify::SetupRequest request;
+  request.tolerance = options.tolerance;
+  request.mode = options.mode == "thesis" ? certify::ResolutionMode::kThesis
+                                          : certify::ResolutionMode::kCertified;
+  request.offset_shape = geometry::offset_shape_from_string(options.offset);  // "auto": unset
+  request.motion.timing =
+      motion::ptp_timing_from_string(options.timing).value_or(motion::PtpTiming::kIndependent);
+  request.motion.cp_speed = options.cp_speed;
+  if (!options.profile_table.empty()) {
+    request.motion.table = std::make_shared<const motion::ProfileTable>(
+        io::read_profile_table_file(options.profile_table));
+  }
+  return request;
+}
+
+kinematics::IkChoice parse_ik_choice(const std::string& text) {
+  const std::string plugin_prefix = "plugin:";
+  if (text == "auto") return {kinematics::IkMethod::kAuto, {}};
+  if (text == "numeric") return {kinematics::IkMethod::kNumeric, {}};
+  if (text == "ibm7545") return {kinematics::IkMethod::kIbm7545, {}};
+  if (text == "opw") return {kinematics::IkMethod::kOpw, {}};
+  if (text == "ur") return {kinematics::IkMethod::kUr, {}};
+  if (text.rfind(plugin_prefix, 0) == 0 && text.size() > plugin_prefix.size()) {
+    return {kinematics::IkMethod::kPlugin, text.substr(plugin_prefix.size())};
+  }
+  throw InputError("--ik", 0, "auto, ibm7545, opw, ur, numeric or plugin:PATH.so", "'" + text + "'");
+}
+
+}  // namespace grpvss::batch
