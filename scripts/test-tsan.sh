@@ -19,7 +19,7 @@ cmake -S "$here" -B "$build_dir" -DCMAKE_BUILD_TYPE=Tsan "${launcher[@]}" \
   -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=thread" \
   -DCMAKE_MODULE_LINKER_FLAGS="-fsanitize=thread" \
   -DGRPVSS_BUILD_BENCHMARKS=OFF -DGRPVSS_BUILD_FUZZERS=OFF \
-  -DGRPVSS_TEST_FILTER='/app/batch_|/support/text_files' >/dev/null
+  -DGRPVSS_TEST_FILTER='/app/batch_|/support/text_files|/support/cli_run' >/dev/null
 cmake --build "$build_dir" -j "$jobs" --target grpvss_tests grpvss
 reports="$build_dir/tsan-reports"
 rm -rf "$reports" && mkdir -p "$reports"

@@ -13,6 +13,7 @@
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
+#include "grpvss/batch/verify_options.hpp"
 #include "grpvss/common/input_error.hpp"
 #include "grpvss/io/profile_table_file.hpp"
 #include "grpvss/motion/kinematics_adapter.hpp"
@@ -134,18 +135,13 @@ motion::MotionModel parse_motion(const RunOptions& options) {
   return model;
 }
 
-// The words of `grpvss verify --ik` (src/app/verify_arguments.cpp).
+// The words of `grpvss verify --ik` (batch/verify_options.hpp), errors named after the keyword.
 kinematics::IkChoice parse_ik_choice(const std::string& text) {
-  const std::string plugin_prefix = "plugin:";
-  if (text == "auto") return {kinematics::IkMethod::kAuto, {}};
-  if (text == "numeric") return {kinematics::IkMethod::kNumeric, {}};
-  if (text == "ibm7545") return {kinematics::IkMethod::kIbm7545, {}};
-  if (text == "opw") return {kinematics::IkMethod::kOpw, {}};
-  if (text == "ur") return {kinematics::IkMethod::kUr, {}};
-  if (text.rfind(plugin_prefix, 0) == 0 && text.size() > plugin_prefix.size()) {
-    return {kinematics::IkMethod::kPlugin, text.substr(plugin_prefix.size())};
+  try {
+    return batch::parse_ik_choice(text);
+  } catch (const InputError& error) {
+    throw InputError("ik", 0, error.expected(), error.found());
   }
-  throw InputError("ik", 0, "auto, ibm7545, opw, ur, numeric or plugin:PATH.so", "'" + text + "'");
 }
 
 Session::Session(std::shared_ptr<LoadedRobot> robot,

@@ -23,6 +23,10 @@ struct ModelSources {
 
 /// --robot, --env, --cell, --package-path (either --cell, or --robot with --env).
 void add_model_source_options(CLI::App& command, ModelSources& sources);
+/// The same options into separate fields (`verify`'s arguments keep them apart).
+void add_model_source_options(CLI::App& command, std::string& robot_file,
+                              std::string& environment_file, std::string& cell_file,
+                              std::vector<std::string>& package_paths);
 
 /// \brief The model of a run and what the reports and the certificate bind it to.
 struct ModelInputs {

@@ -27,12 +27,8 @@ CLI::Validator positive_number() {
 }
 
 void add_input_options(CLI::App& command, VerifyArguments& args) {
-  command.add_option("--robot", args.robot_file, "Robot file (thesis A.1.1.1)");
-  command.add_option("--env", args.environment_file, "Environment file (thesis A.1.1.2)");
-  command.add_option("--cell", args.cell_file,
-                     "Cell file: robot (URDF or thesis) and named obstacles (docs/cell-format.md)");
-  command.add_option("--package-path", args.package_paths,
-                     "Directory searched for package://NAME/... (repeatable; before the cell's)");
+  add_model_source_options(command, args.robot_file, args.environment_file, args.cell_file,
+                           args.package_paths);
   command.add_option("--path", args.path_file, "Path file (thesis A.1.3)")->required();
   command.add_option("--timing", args.timing,
                      "PTP joint timing (default: independent for thesis files, synchronized "

@@ -12,32 +12,15 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "support/cli_run.hpp"
 #include "support/text_files.hpp"
 
 namespace {
 
 const std::string kData = std::string(GRPVSS_SOURCE_DIR) + "/data/ibm7545/";
 
-struct CliRun {
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
-
-CliRun run_cli(const std::string& directory, const std::string& arguments) {
-  const std::string out = directory + "/.stdout";
-  const std::string err = directory + "/.stderr";
-  const int status = std::system(("cd " + directory + " && " + GRPVSS_CLI + " " + arguments +
-                                  " > " + out + " 2> " + err)
-                                     .c_str());
-  CliRun run;
-  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  run.out = grpvss::test::read_text_file(out);
-  run.err = grpvss::test::read_text_file(err);
-  std::filesystem::remove(out);
-  std::filesystem::remove(err);
-  return run;
-}
+using grpvss::test::CliRun;
+using grpvss::test::run_cli;
 
 class BatchCli : public ::testing::Test {
  protected:

@@ -13,30 +13,15 @@
 #include <gtest/gtest.h>
 
 #include "app/exit_codes.hpp"
+#include "support/cli_run.hpp"
 #include "support/text_files.hpp"
 
 namespace {
 
 const std::string kCells = std::string(GRPVSS_SOURCE_DIR) + "/tests/data/cells/";
 
-struct CliRun {
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
-
-CliRun run_cli(const std::string& directory, const std::string& arguments) {
-  const std::string out = directory + "/.stdout";
-  const std::string err = directory + "/.stderr";
-  const int status = std::system(("cd " + directory + " && " + GRPVSS_CLI + " " + arguments +
-                                  " > " + out + " 2> " + err)
-                                     .c_str());
-  CliRun run;
-  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  run.out = grpvss::test::read_text_file(out);
-  run.err = grpvss::test::read_text_file(err);
-  return run;
-}
+using grpvss::test::CliRun;
+using grpvss::test::run_cli;
 
 class CellCli : public ::testing::Test {
  protected:

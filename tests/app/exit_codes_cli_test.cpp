@@ -12,33 +12,15 @@
 #include <nlohmann/json.hpp>
 
 #include "app/exit_codes.hpp"
+#include "support/cli_run.hpp"
 #include "support/text_files.hpp"
 
 namespace {
 
 const std::string kData = std::string(GRPVSS_SOURCE_DIR) + "/data/ibm7545/";
 
-struct CliRun {
-  int exit_code = -1;
-  std::string out;  ///< standard output
-  std::string err;  ///< standard error
-};
-
-// Runs `grpvss <arguments>` in `directory`, standard output and standard error kept apart.
-CliRun run_cli(const std::string& directory, const std::string& arguments) {
-  const std::string out = directory + "/.stdout";
-  const std::string err = directory + "/.stderr";
-  const int status = std::system(("cd " + directory + " && " + GRPVSS_CLI + " " + arguments +
-                                  " > " + out + " 2> " + err)
-                                     .c_str());
-  CliRun run;
-  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  run.out = grpvss::test::read_text_file(out);
-  run.err = grpvss::test::read_text_file(err);
-  std::filesystem::remove(out);
-  std::filesystem::remove(err);
-  return run;
-}
+using grpvss::test::CliRun;
+using grpvss::test::run_cli;
 
 // `verify` of `path` (a file in `directory`, or a full path) in `environment` at `tolerance`.
 std::string verify_arguments(const std::string& environment, const std::string& path,
