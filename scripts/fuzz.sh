@@ -23,6 +23,8 @@ bash "$here/scripts/fuzz-build.sh" "${targets[@]/%/_fuzzer}"
 # Leaks are findings; UBSan reports abort (the targets are built with -fno-sanitize-recover).
 export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:allocator_may_return_null=0}"
 export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
+# Leaks inside third-party libraries that are not ours to fix, each listed and explained there.
+export LSAN_OPTIONS="${LSAN_OPTIONS:-suppressions=$here/fuzz/lsan.supp}"
 status=0
 summary=()
 for target in "${targets[@]}"; do
