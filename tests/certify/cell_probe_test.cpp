@@ -210,7 +210,9 @@ TEST(CellProbe, APairTouchingOnlyInTheWorldFrameStillHasItsPoint) {
   for (int k = 0; k < 40; ++k) {
     const Eigen::VectorXd q = test::random_configuration(robot, rng);
     // The world-placed offset, exactly as the probe places it (the cell is obstacle-free).
-    const RobotCell free_cell(robot, Environment{1.0, 0.1, {}}, options);
+    // The cell refers to its environment: it must outlive the cell (no temporary).
+    const Environment free_environment{1.0, 0.1, {}};
+    const RobotCell free_cell(robot, free_environment, options);
     ASSERT_EQ(free_cell.hulls()[quill].link, 4);
     kinematics::Workspace workspace(robot);
     kinematics::forward_kinematics(free_cell.chain(), q, workspace);
@@ -225,7 +227,8 @@ TEST(CellProbe, APairTouchingOnlyInTheWorldFrameStillHasItsPoint) {
         for (double dz : {-1.0, 1.0}) box.points.emplace_back(v.x() + dx, v.y() + dy, v.z() + dz);
       }
     }
-    const RobotCell cell(robot, Environment{1.0, 0.1, {box}}, options);
+    const Environment environment{1.0, 0.1, {box}};
+    const RobotCell cell(robot, environment, options);
     CellProbe probe(cell);
     ProbeResult result;
     probe.probe(q, /*with_points=*/true, result);

@@ -58,8 +58,10 @@ TEST(OffsetRecheck, RejectsAnOffsetBuiltForASmallerRadius) {
   EXPECT_FALSE(recheck_offset(smaller, sample_hull(), 0.5).has_value());
   // Independent witness: the cube offset's x extent is max_x(H) + r' with r' < 0.5, so the
   // point of H (+) B(0, 0.5) farthest along +x lies outside.
+  // (The hull is kept in a variable: a range-for over a temporary's member would dangle.)
+  const ConvexPolytope hull = sample_hull();
   double hull_max = -1e300, offset_max = -1e300;
-  for (const auto& h : sample_hull().vertices()) hull_max = std::max(hull_max, h.x());
+  for (const auto& h : hull.vertices()) hull_max = std::max(hull_max, h.x());
   for (const auto& v : smaller) offset_max = std::max(offset_max, v.x());
   EXPECT_GT(hull_max + 0.5, offset_max);
 }
