@@ -58,37 +58,8 @@ void add_verify_options(CLI::App& command, VerifyArguments& args) {
       ->check(positive_number());
 }
 
-ModelSources model_sources(const VerifyArguments& args) {
-  return {args.robot_file, args.environment_file, args.cell_file, args.package_paths};
-}
-
-namespace {
-
-// A length given on the command line with a cell is in the cell's unit; converted upward
-// (a tolerance never shrinks by the conversion).
-double to_model_units(double length, const ModelInputs& model) {
-  const double converted = length * model.model_units_per_cell_unit;
-  if (model.model_units_per_cell_unit == 1.0) return converted;
-  return std::nextafter(converted, std::numeric_limits<double>::infinity());
-}
-
-double resolved_tolerance(const VerifyArguments& args, const ModelInputs& model) {
-  if (args.tolerance > 0.0) return to_model_units(args.tolerance, model);
-  if (model.tolerance) return *model.tolerance;
-  throw InputError("--tolerance", 0,
-                   model.from_cell ? "--tolerance, or `tolerance` in the cell file"
-                                   : "--tolerance DELTA (> 0, length units)");
-}
-
-}  // namespace
-
 certify::SetupRequest make_setup_request(const VerifyArguments& args, const ModelInputs& model) {
-  batch::VerifyOptions resolved = args;
-  resolved.tolerance = resolved_tolerance(args, model);
-  if (resolved.timing.empty()) resolved.timing = model.from_cell ? "synchronized" : "independent";
-  resolved.cp_speed = args.cp_speed > 0.0 ? args.cp_speed * model.model_units_per_cell_unit
-                                          : model.cp_speed.value_or(1.0);
-  return batch::make_setup_request(resolved);
+  return batch::make_setup_request(batch::resolve_model_defaults(args, model));
 }
 
 }  // namespace grpvss::app

@@ -13,14 +13,6 @@ namespace grpvss::app {
 
 /// The inputs and choices (shared with `grpvss batch`'s manifests), and the outputs.
 struct VerifyArguments : batch::VerifyOptions {
-  // On the command line a cell may supply these: unset until given (timing "", cp_speed 0,
-  // tolerance 0), resolved by make_setup_request(args, model).
-  VerifyArguments() {
-    timing.clear();
-    cp_speed = 0.0;
-  }
-  std::string cell_file;
-  std::vector<std::string> package_paths;
   std::string out;
   std::string json;
   std::string certificate;
@@ -43,8 +35,7 @@ void add_input_options(CLI::App& command, VerifyArguments& args);
 using batch::make_setup_request;
 using batch::parse_ik_choice;
 
-/// The model sources the arguments name.
-ModelSources model_sources(const VerifyArguments& args);
+using batch::model_sources;
 
 /// The arguments with what the model supplies when they leave it unset (a cell's tolerance,
 /// CP speed and synchronized timing; lengths given with a cell are in its unit), as the typed

@@ -65,12 +65,21 @@ void attach_reports(const BatchJob& job, const RobotModel& robot, bool force, Jo
   }
 }
 
-std::optional<SmallestClearance> smallest_clearance(const certify::VerificationResult& result) {
+/// The smallest clearance, named when the model has names (a cell's).
+std::optional<SmallestClearance> smallest_clearance(const certify::VerificationResult& result,
+                                                    const RobotModel& robot,
+                                                    const Environment& environment) {
   std::optional<SmallestClearance> smallest;
   for (const certify::LinkClearanceSummary& link : result.link_clearances) {
     if (!smallest || link.min_clearance < smallest->clearance) {
-      smallest = SmallestClearance{link.min_clearance, link.link, link.obstacle, link.step};
+      smallest = SmallestClearance{link.min_clearance, link.link, link.obstacle, link.step, {}, {}};
     }
+  }
+  if (!smallest) return smallest;
+  const auto link = static_cast<std::size_t>(smallest->link);
+  if (link < robot.links.size()) smallest->link_name = robot.links[link].name;
+  if (smallest->obstacle >= 0 && environment.has_names()) {
+    smallest->obstacle_name = obstacle_label(environment, smallest->obstacle);
   }
   return smallest;
 }
@@ -82,19 +91,38 @@ struct JobInputs {
   PathProgram program;
   report::InputDigests digests;
   certify::VerificationSetup setup;
+  std::vector<io::InputWarning> warnings;
 };
+
+/// The job's robot and environment (a cell file's, or thesis files'), and what the model
+/// supplies to the options left unset.
+cell::ModelInputs load_model(const VerifyOptions& options, SharedInputs& shared, JobInputs& inputs) {
+  if (!options.cell_file.empty()) {
+    const std::shared_ptr<const LoadedCellModel> model = shared.cell_model(model_sources(options));
+    inputs.robot = model->robot;
+    inputs.environment = model->environment;
+    inputs.warnings = model->inputs.warnings;
+    return model->inputs;
+  }
+  inputs.robot = shared.robot(options.robot_file);
+  inputs.environment = shared.environment(options.environment_file);
+  cell::ModelInputs thesis_model;
+  thesis_model.robot_digest_file = options.robot_file;
+  thesis_model.environment_digest_file = options.environment_file;
+  return thesis_model;
+}
 
 JobInputs load_inputs(const BatchJob& job, SharedInputs& shared) {
   const VerifyOptions& options = job.options;
   JobInputs inputs;
-  inputs.robot = shared.robot(options.robot_file);
-  inputs.environment = shared.environment(options.environment_file);
+  const cell::ModelInputs model = load_model(options, shared, inputs);
   const std::string path_text = io::read_text_file(options.path_file);
   inputs.program = io::parse_path_file(path_text, options.path_file, inputs.robot->model);
-  inputs.digests = {{options.robot_file, inputs.robot->sha256},
-                    {options.environment_file, inputs.environment->sha256},
+  cell::convert_path_lengths(inputs.program, inputs.robot->model, model.model_units_per_cell_unit);
+  inputs.digests = {{model.robot_digest_file, inputs.robot->sha256},
+                    {model.environment_digest_file, inputs.environment->sha256},
                     {options.path_file, report::sha256_hex(path_text)}};
-  VerifyOptions without_table = options;
+  VerifyOptions without_table = resolve_model_defaults(options, model);
   without_table.profile_table.clear();  // read once per batch, below
   certify::SetupRequest request = make_setup_request(without_table);
   if (!options.profile_table.empty()) {
@@ -140,7 +168,10 @@ void verify_job(const BatchJob& job, SharedInputs& shared, const BatchOptions& o
                 JobResult& result) {
   const JobInputs inputs = load_inputs(job, shared);
   const RobotModel& robot = inputs.robot->model;
-  const auto ik = motion::select_ik(parse_ik_choice(job.options.ik), robot, job.options.robot_file);
+  result.warnings = inputs.warnings;
+  const std::string& robot_label_file =
+      job.options.cell_file.empty() ? job.options.robot_file : job.options.cell_file;
+  const auto ik = motion::select_ik(parse_ik_choice(job.options.ik), robot, robot_label_file);
   const std::shared_ptr<const SharedCell> cell =
       shared.cell(inputs.robot, inputs.environment, inputs.setup.cell);
   JobReports reports;
@@ -154,7 +185,8 @@ void verify_job(const BatchJob& job, SharedInputs& shared, const BatchOptions& o
   result.verdict = run.result.verdict;
   result.exit_code = verdict_exit_code(run.result.verdict);
   result.steps = reports.counter.steps;
-  result.smallest_clearance = smallest_clearance(run.result);
+  result.smallest_clearance =
+      smallest_clearance(run.result, robot, inputs.environment->model);
 }
 
 }  // namespace
@@ -179,10 +211,10 @@ JobResult run_job(const BatchJob& job, SharedInputs& shared, const BatchOptions&
     verify_job(job, shared, options, result);
   } catch (const InputError& error) {
     result = JobResult{job.index, job.line, job.id, {}, kExitInputError, 0, {}, result.outputs,
-                       JobError{error.file(), error.line(), error.what()}};
+                       JobError{error.file(), error.line(), error.what()}, result.warnings};
   } catch (const std::exception& error) {
     result = JobResult{job.index, job.line, job.id, {}, kExitInternalError, 0, {}, result.outputs,
-                       JobError{"", 0, error.what()}};
+                       JobError{"", 0, error.what()}, result.warnings};
   }
   return result;
 }

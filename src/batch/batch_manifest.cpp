@@ -1,11 +1,13 @@
 #include "grpvss/batch/batch_manifest.hpp"
 
+#include <cmath>
 #include <filesystem>
 #include <functional>
 #include <map>
 #include <optional>
 #include <sstream>
 
+#include <fmt/core.h>
 #include <nlohmann/json.hpp>
 #include <yaml-cpp/yaml.h>
 
@@ -52,6 +54,7 @@ const std::map<std::string, KeyRule>& key_rules() {
       {"id", text_key([](BatchJob& j, const std::string& v) { j.id = v; })},
       {"robot", file_key([](BatchJob& j, const std::string& v) { j.options.robot_file = v; })},
       {"env", file_key([](BatchJob& j, const std::string& v) { j.options.environment_file = v; })},
+      {"cell", file_key([](BatchJob& j, const std::string& v) { j.options.cell_file = v; })},
       {"path", file_key([](BatchJob& j, const std::string& v) { j.options.path_file = v; })},
       {"tolerance", number_key([](BatchJob& j, double v) { j.options.tolerance = v; })},
       {"mode", text_key([](BatchJob& j, const std::string& v) { j.options.mode = v; })},
@@ -100,11 +103,39 @@ void apply_field(BatchJob& job, const std::string& key, const RawValue& value,
   rule->second.set_text(job, is_file ? resolved(*value.text, base) : *value.text);
 }
 
+bool has_key(const RawJob& raw, const std::string& key) {
+  for (const auto& field : raw.fields) {
+    if (field.first == key) return true;
+  }
+  return false;
+}
+
+/// A job names its model by `cell`, or by `robot` and `env` (thesis files, which need
+/// `tolerance`: only a cell can supply it); and a `path`.
 void require_keys(const RawJob& raw, const std::string& file) {
-  for (const char* key : {"robot", "env", "path", "tolerance"}) {
-    bool found = false;
-    for (const auto& field : raw.fields) found = found || field.first == key;
-    if (!found) throw InputError(file, raw.line, std::string("a job with the key `") + key + "`");
+  const bool cell = has_key(raw, "cell");
+  if (cell && (has_key(raw, "robot") || has_key(raw, "env"))) {
+    throw InputError(file, raw.line, "either `cell`, or `robot` with `env`, not both");
+  }
+  const std::vector<const char*> required =
+      cell ? std::vector<const char*>{"path"}
+           : std::vector<const char*>{"robot", "env", "path", "tolerance"};
+  for (const char* key : required) {
+    if (!has_key(raw, key)) {
+      const bool cell_would_do = std::string(key) != "path";
+      throw InputError(file, raw.line, std::string("a job with the key `") + key + "`" +
+                                           (cell_would_do ? " (or a `cell`)" : ""));
+    }
+  }
+  // Present numbers must be numbers > 0 (an absent one is supplied by the cell or a default).
+  for (const char* key : {"tolerance", "cp_speed"}) {
+    for (const auto& field : raw.fields) {
+      const std::optional<double>& number = field.second.number;
+      if (field.first == key && number && !(std::isfinite(*number) && *number > 0.0)) {
+        throw InputError(file, raw.line, std::string("`") + key + "`: a finite number > 0",
+                         fmt::format("{}", *number));
+      }
+    }
   }
 }
 
@@ -232,7 +263,7 @@ std::vector<RawJob> raw_jobs(const std::string& text, const std::string& file) {
 
 const std::vector<std::string>& job_keys() {
   static const std::vector<std::string> keys{
-      "id", "robot", "env", "path", "tolerance", "mode", "offset", "timing", "profile_table",
+      "id", "robot", "env", "cell", "path", "tolerance", "mode", "offset", "timing", "profile_table",
       "ik", "cp_speed", "output", "json", "html", "certificate"};
   return keys;
 }

@@ -42,7 +42,8 @@ std::unordered_set<std::string> input_identities(const BatchManifest& manifest) 
   std::unordered_set<std::string> inputs;
   for (const BatchJob& job : manifest.jobs) {
     const VerifyOptions& o = job.options;
-    for (const std::string* file : {&o.robot_file, &o.environment_file, &o.path_file, &o.profile_table}) {
+    for (const std::string* file :
+         {&o.robot_file, &o.environment_file, &o.cell_file, &o.path_file, &o.profile_table}) {
       if (!file->empty()) inputs.insert(file_identity(*file));
     }
   }

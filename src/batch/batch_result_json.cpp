@@ -19,6 +19,11 @@ std::string job_result_json(const JobResult& result) {
                                   {"link", smallest->link},
                                   {"obstacle", smallest->obstacle < 0 ? Json(nullptr) : Json(smallest->obstacle)},
                                   {"step", smallest->step}};
+    // Names only for named models, so thesis jobs' lines stay as they were.
+    if (!smallest->link_name.empty()) line["smallest_clearance"]["link_name"] = smallest->link_name;
+    if (!smallest->obstacle_name.empty()) {
+      line["smallest_clearance"]["obstacle_name"] = smallest->obstacle_name;
+    }
   }
   Json outputs = Json::object();
   for (const WrittenOutput& output : result.outputs) outputs[output.key] = output.path;
@@ -26,6 +31,13 @@ std::string job_result_json(const JobResult& result) {
   line["error"] = nullptr;
   if (const auto& error = result.error) {
     line["error"] = {{"file", error->file}, {"line", error->line}, {"message", error->message}};
+  }
+  if (!result.warnings.empty()) {
+    Json warnings = Json::array();
+    for (const io::InputWarning& warning : result.warnings) {
+      warnings.push_back({{"file", warning.file}, {"line", warning.line}, {"text", warning.text}});
+    }
+    line["warnings"] = std::move(warnings);
   }
   return line.dump(-1, ' ', false, Json::error_handler_t::replace);
 }

@@ -30,6 +30,22 @@ std::shared_ptr<const motion::ProfileTable> SharedInputs::profile_table(const st
   });
 }
 
+std::shared_ptr<const LoadedCellModel> SharedInputs::cell_model(const cell::ModelSources& sources) {
+  std::string key = sources.cell_file;
+  for (const std::string& directory : sources.package_paths) key += '\n' + directory;
+  return cell_models_.get(key, [&] {
+    const std::string digest = report::sha256_hex(io::read_text_file(sources.cell_file));
+    cell::ModelInputs inputs = cell::load_model_inputs(sources);
+    auto robot = std::make_shared<const LoadedRobot>(LoadedRobot{std::move(inputs.robot), digest});
+    auto environment = std::make_shared<const LoadedEnvironment>(
+        LoadedEnvironment{std::move(inputs.environment), digest});
+    inputs.robot = {};
+    inputs.environment = {};
+    return std::make_shared<const LoadedCellModel>(
+        LoadedCellModel{std::move(robot), std::move(environment), std::move(inputs)});
+  });
+}
+
 std::shared_ptr<const SharedCell> SharedInputs::cell(
     const std::shared_ptr<const LoadedRobot>& robot,
     const std::shared_ptr<const LoadedEnvironment>& environment,

@@ -6,6 +6,7 @@
 #include <string>
 #include <tuple>
 
+#include "grpvss/cell/model_inputs.hpp"
 #include "grpvss/certify/robot_cell.hpp"
 #include "grpvss/evidence/setup.hpp"
 #include "grpvss/model/environment.hpp"
@@ -23,6 +24,15 @@ struct LoadedRobot {
 struct LoadedEnvironment {
   Environment model;
   std::string sha256;
+};
+
+/// A cell file's model: its robot and environment (each digested as the cell file's bytes, as
+/// `grpvss verify --cell` does) and what it supplies besides (tolerance, units, warnings; the
+/// `inputs`' own robot and environment are left empty).
+struct LoadedCellModel {
+  std::shared_ptr<const LoadedRobot> robot;
+  std::shared_ptr<const LoadedEnvironment> environment;
+  cell::ModelInputs inputs;
 };
 
 /// A cell with the models it refers to (RobotCell keeps references: they live here).
@@ -45,6 +55,8 @@ class SharedInputs {
   std::shared_ptr<const LoadedRobot> robot(const std::string& path);
   std::shared_ptr<const LoadedEnvironment> environment(const std::string& path);
   std::shared_ptr<const motion::ProfileTable> profile_table(const std::string& path);
+  /// A cell file's model, loaded once per cell file and package paths.
+  std::shared_ptr<const LoadedCellModel> cell_model(const cell::ModelSources& sources);
   /// The cell for this robot and environment content and these settings.
   std::shared_ptr<const SharedCell> cell(const std::shared_ptr<const LoadedRobot>& robot,
                                          const std::shared_ptr<const LoadedEnvironment>& environment,
@@ -61,6 +73,7 @@ class SharedInputs {
   OnceCache<std::string, LoadedRobot> robots_;
   OnceCache<std::string, LoadedEnvironment> environments_;
   OnceCache<std::string, motion::ProfileTable> tables_;
+  OnceCache<std::string, LoadedCellModel> cell_models_;
   OnceCache<CellKey, SharedCell> cells_;
 };
 

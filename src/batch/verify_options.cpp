@@ -56,17 +56,39 @@ const std::vector<std::string>& timing_choices() {
   return choices;
 }
 
+cell::ModelSources model_sources(const VerifyOptions& options) {
+  return {options.robot_file, options.environment_file, options.cell_file, options.package_paths};
+}
+
 void check_verify_options(const VerifyOptions& options, const std::string& file, int line) {
-  check_positive("tolerance", options.tolerance, file, line);
-  check_positive("cp_speed", options.cp_speed, file, line);
+  if (options.tolerance != 0.0) check_positive("tolerance", options.tolerance, file, line);
+  if (options.cp_speed != 0.0) check_positive("cp_speed", options.cp_speed, file, line);
   check_word("mode", options.mode, mode_choices(), file, line);
   check_word("offset", options.offset, offset_choices(), file, line);
-  check_word("timing", options.timing, timing_choices(), file, line);
+  if (!options.timing.empty()) check_word("timing", options.timing, timing_choices(), file, line);
   try {
     (void)parse_ik_choice(options.ik);
   } catch (const InputError& error) {
     throw InputError(file, line, "`ik`: " + error.expected(), error.found());
   }
+}
+
+VerifyOptions resolve_model_defaults(const VerifyOptions& options, const cell::ModelInputs& model) {
+  VerifyOptions resolved = options;
+  if (options.tolerance > 0.0) {
+    resolved.tolerance = cell::to_model_units(options.tolerance, model);
+  } else if (model.tolerance) {
+    resolved.tolerance = *model.tolerance;
+  } else {
+    throw InputError("--tolerance", 0,
+                     model.from_cell ? "--tolerance, or `tolerance` in the cell file"
+                                     : "--tolerance DELTA (> 0, length units)");
+  }
+  if (resolved.timing.empty()) resolved.timing = model.from_cell ? "synchronized" : "independent";
+  resolved.cp_speed = options.cp_speed > 0.0
+                          ? options.cp_speed * model.model_units_per_cell_unit
+                          : model.cp_speed.value_or(1.0);
+  return resolved;
 }
 
 certify::SetupRequest make_setup_request(const VerifyOptions& options) {

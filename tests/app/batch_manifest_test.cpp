@@ -41,9 +41,9 @@ TEST(BatchManifest, JsonLinesJobsTakeDefaultsAndResolveFilesAgainstTheManifestFo
   EXPECT_EQ(first.options.tolerance, 0.5);
   EXPECT_EQ(first.options.mode, "certified");
   EXPECT_EQ(first.options.offset, "auto");
-  EXPECT_EQ(first.options.timing, "independent");
+  EXPECT_EQ(first.options.timing, "");   // unset: the model decides (independent here)
   EXPECT_EQ(first.options.ik, "auto");
-  EXPECT_EQ(first.options.cp_speed, 1.0);
+  EXPECT_EQ(first.options.cp_speed, 0.0);  // unset: the cell's, else 1
   EXPECT_EQ(first.outputs.json, "cells/out/a.json");
   EXPECT_EQ(first.outputs.html, "");
   const auto& second = manifest.jobs[1];
@@ -83,15 +83,40 @@ TEST(BatchManifest, YamlJobsAreTheSameJobsWithTheirLines) {
 }
 
 TEST(BatchManifest, UnknownKeysAreRefusedWithTheLineAndTheKnownKeys) {
-  EXPECT_EQ(manifest_error("{" + kJob + "}\n{" + kJob + R"(,"cell":"c.yaml"})"),
-            "cells/m.jsonl:2: expected one of the job keys id, robot, env, path, tolerance, mode, "
-            "offset, timing, profile_table, ik, cp_speed, output, json, html, certificate, found "
-            "`cell`");
+  EXPECT_EQ(manifest_error("{" + kJob + "}\n{" + kJob + R"(,"cel":"c.yaml"})"),
+            "cells/m.jsonl:2: expected one of the job keys id, robot, env, cell, path, tolerance, "
+            "mode, offset, timing, profile_table, ik, cp_speed, output, json, html, certificate, "
+            "found `cel`");
   EXPECT_EQ(manifest_error("jobs:\n  - robot: r.txt\n    robt: r.txt\n", "m.yml"),
-            "m.yml:2: expected one of the job keys id, robot, env, path, tolerance, mode, offset, "
-            "timing, profile_table, ik, cp_speed, output, json, html, certificate, found `robt`");
+            "m.yml:2: expected one of the job keys id, robot, env, cell, path, tolerance, mode, "
+            "offset, timing, profile_table, ik, cp_speed, output, json, html, certificate, found "
+            "`robt`");
   EXPECT_EQ(manifest_error("job:\n  - robot: r.txt\n", "m.yml"),
             "m.yml:1: expected the top-level key `jobs`, found `job`");
+}
+
+TEST(BatchManifest, ACellJobNeedsOnlyThePathAndNamesNoThesisFiles) {
+  const auto manifest = parse_batch_manifest(
+      R"({"cell":"ur5e.yaml","path":"p.txt"})" "\n"
+      R"({"cell":"ur5e.yaml","path":"q.txt","tolerance":0.002,"timing":"independent"})" "\n",
+      "cells/m.jsonl");
+  ASSERT_EQ(manifest.jobs.size(), 2u);
+  EXPECT_EQ(manifest.jobs[0].options.cell_file, "cells/ur5e.yaml");
+  EXPECT_EQ(manifest.jobs[0].options.robot_file, "");
+  EXPECT_EQ(manifest.jobs[0].options.tolerance, 0.0);  // unset: the cell's
+  EXPECT_EQ(manifest.jobs[0].options.timing, "");      // unset: synchronized for a cell
+  EXPECT_EQ(manifest.jobs[1].options.tolerance, 0.002);
+  EXPECT_EQ(manifest.jobs[1].options.timing, "independent");
+  EXPECT_EQ(manifest_error(R"({"cell":"c.yaml","robot":"r.txt","path":"p"})"),
+            "cells/m.jsonl:1: expected either `cell`, or `robot` with `env`, not both");
+  EXPECT_EQ(manifest_error(R"({"cell":"c.yaml","tolerance":1})"),
+            "cells/m.jsonl:1: expected a job with the key `path`");
+  EXPECT_EQ(manifest_error(R"({"cell":"c.yaml","path":"p","cp_speed":0})"),
+            "cells/m.jsonl:1: expected `cp_speed`: a finite number > 0, found 0");
+  EXPECT_EQ(manifest_error(R"({"env":"e.txt","path":"p","tolerance":1})"),
+            "cells/m.jsonl:1: expected a job with the key `robot` (or a `cell`)");
+  EXPECT_EQ(manifest_error(R"({"robot":"r.txt","env":"e.txt","path":"p"})"),
+            "cells/m.jsonl:1: expected a job with the key `tolerance` (or a `cell`)");
 }
 
 TEST(BatchManifest, MissingKeysWrongTypesAndBadChoicesNameTheLine) {

@@ -207,6 +207,45 @@ TEST_F(BatchRunner, ProgressCountsEveryJobAndASinkErrorEndsTheBatch) {
   EXPECT_EQ(printed, (std::vector<std::size_t>{0, 1, 2}));  // nothing after the failure
 }
 
+// A manifest `cell` job is `grpvss verify --cell` of the same files: the cell's tolerance and
+// synchronized timing, the same verdicts and step counts (6 and 21, as the CLI prints for
+// data/sixaxis), the smallest clearance named, one cell built for both paths.
+TEST_F(BatchRunner, CellJobsVerifyAsVerifyDoesWithTheCellsDefaultsAndNames) {
+  const std::string six = std::string(GRPVSS_SOURCE_DIR) + "/data/sixaxis/";
+  const BatchManifest jobs = manifest(
+      "{\"cell\":\"" + six + "cell.yaml\",\"path\":\"" + six + "path-clear.txt\"}\n" +
+      "{\"cell\":\"" + six + "cell.yaml\",\"path\":\"" + six + "path-collision.txt\","
+      "\"certificate\":\"c.cert\"}\n");
+  BatchStatistics statistics;
+  const std::vector<std::string> lines = run(jobs, 2, &statistics);
+  ASSERT_EQ(lines.size(), 2u);
+  EXPECT_NE(lines[0].find("\"verdict\":\"CLEAR\",\"exit_code\":0,\"steps\":6,"), std::string::npos)
+      << lines[0];
+  EXPECT_NE(lines[0].find("\"link\":4,\"obstacle\":"), std::string::npos) << lines[0];
+  EXPECT_NE(lines[0].find("\"link_name\":\"link_4\",\"obstacle_name\":\"post\"}"),
+            std::string::npos)
+      << lines[0];
+  EXPECT_NE(lines[1].find("\"verdict\":\"COLLISION\",\"exit_code\":1,\"steps\":21,"),
+            std::string::npos)
+      << lines[1];
+  EXPECT_EQ(statistics.cells_built, 1u);
+  // The certificate binds the cell file as robot and environment, like `verify --cell`.
+  const std::string certificate = grpvss::test::read_text_file(directory_ + "/c.cert");
+  EXPECT_NE(certificate.find("\"timing\": \"synchronized\""), std::string::npos);
+}
+
+TEST_F(BatchRunner, ACellJobWithoutAToleranceAnywhereIsThatJobsError) {
+  std::ofstream(directory_ + "/cell.yaml")
+      << "units: m\nrobot:\n  thesis: " << kData << "robot.txt\nobstacles:\n"
+      << "  - {name: block, box: [1, 1, 1], pose: {xyz: [50, 0, 0]}}\n";
+  const auto lines = run(manifest(R"({"cell":"cell.yaml","path":"ptp.txt"})" "\n"), 1);
+  ASSERT_EQ(lines.size(), 1u);
+  EXPECT_NE(lines[0].find("\"exit_code\":2"), std::string::npos) << lines[0];
+  EXPECT_NE(lines[0].find("expected --tolerance, or `tolerance` in the cell file"),
+            std::string::npos)
+      << lines[0];
+}
+
 TEST(BatchExitCode, TheWorstFollowsTheDocumentedOrder) {
   const std::vector<int> order{0, 3, 5, 4, 1, 2, 70};  // best to worst
   for (std::size_t i = 0; i < order.size(); ++i) {

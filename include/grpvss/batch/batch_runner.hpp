@@ -14,6 +14,7 @@
 
 #include "grpvss/batch/batch_manifest.hpp"
 #include "grpvss/evidence/verification_result.hpp"
+#include "grpvss/io/input_warning.hpp"
 #include "grpvss/report/atomic_output.hpp"
 
 namespace grpvss::batch {
@@ -32,6 +33,8 @@ struct SmallestClearance {
   int link = 0;            ///< 0..N
   int obstacle = -1;       ///< index in the environment; -1 when none was near
   int step = 0;
+  std::string link_name;      ///< the link's name; empty for a thesis robot
+  std::string obstacle_name;  ///< obstacle_label(); empty without names or obstacle
 };
 
 /// One written report file: its key in the manifest (`json`, ...) and its path.
@@ -51,6 +54,8 @@ struct JobResult {
   std::optional<SmallestClearance> smallest_clearance;
   std::vector<WrittenOutput> outputs;
   std::optional<JobError> error;
+  /// The inputs' warnings (a cell's: mesh hulls, units, ...), shown once per job.
+  std::vector<io::InputWarning> warnings;
 };
 
 /// Writes the viewer page (the app's write_viewer_html): the batch stage has no viewer.

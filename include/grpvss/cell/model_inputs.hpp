@@ -1,0 +1,69 @@
+#pragma once
+/// \file
+/// \brief The robot and the obstacles of a run, from thesis files (robot + environment) or a
+/// cell file (docs/cell-format.md): one loader for the command line, batch manifests and the
+/// Python module, with what the reports and the certificate bind the model to and the defaults
+/// a cell supplies (tolerance, CP speed, units of a thesis path file).
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "grpvss/io/input_warning.hpp"
+#include "grpvss/model/environment.hpp"
+#include "grpvss/model/path_program.hpp"
+#include "grpvss/model/robot_model.hpp"
+
+namespace grpvss::cell {
+
+/// \brief Where the model comes from: a cell file, or a thesis robot (and environment) file.
+struct ModelSources {
+  std::string robot_file;
+  std::string environment_file;
+  std::string cell_file;
+  /// `--package-path DIR` (repeatable), searched before the cell's own `package_paths`.
+  std::vector<std::string> package_paths;
+};
+
+/// \brief The model of a run and what the reports and the certificate bind it to.
+struct ModelInputs {
+  RobotModel robot;
+  Environment environment;
+  bool from_cell = false;
+  /// The file that names the robot for messages and IK plugins (the robot or cell file).
+  std::string robot_label_file;
+  /// Files digested as "robot" and "environment" (both the cell file for a cell).
+  std::string robot_digest_file;
+  std::string environment_digest_file;
+  /// Every input file named by the sources (outputs may not overwrite them).
+  std::vector<std::string> input_files;
+  /// Model units per cell unit: a thesis path file used with a cell has its lengths in the
+  /// cell's unit (docs/input-formats.md).
+  double model_units_per_cell_unit = 1.0;
+  /// The cell's tolerance (model units, rounded up), when it gives one.
+  std::optional<double> tolerance;
+  /// The cell's CP speed (model units per s), when it gives one.
+  std::optional<double> cp_speed;
+  /// Every warning of the files read (the library never prints them).
+  std::vector<io::InputWarning> warnings;
+};
+
+/// \brief Which inputs a caller needs besides the robot.
+enum class ObstaclesNeeded { kYes, kNo };
+
+/// \brief Loads the model. With ObstaclesNeeded::kNo a robot file alone is enough (a cell
+/// still loads its obstacles).
+/// \throws InputError for a wrong combination of sources (named as the command line's
+/// `--cell`, `--robot`, `--env`, `--package-path`) or a bad file.
+ModelInputs load_model_inputs(const ModelSources& sources,
+                              ObstaclesNeeded obstacles = ObstaclesNeeded::kYes);
+
+/// \brief Scales the lengths of a thesis path file (prismatic joint values and speeds, world
+/// positions) by `scale` model units per file unit; angles are untouched.
+void convert_path_lengths(PathProgram& program, const RobotModel& robot, double scale);
+
+/// \brief A length given with a cell (in the cell's unit) in model units, rounded up when
+/// converted so that a tolerance never shrinks by the conversion.
+double to_model_units(double length, const ModelInputs& model);
+
+}  // namespace grpvss::cell
