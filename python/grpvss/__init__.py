@@ -1,4 +1,5 @@
-"""GRPVSS from Python: load the thesis files, forward kinematics, verify paths, certificates.
+"""GRPVSS from Python: load cells and the thesis files, forward kinematics, verify paths,
+certificates.
 
 The native module ``_grpvss`` (pybind11, python/src/) calls the C++ library exactly as the
 ``grpvss`` command does; this package adds keyword arguments, file-name conveniences and the
@@ -16,8 +17,8 @@ from _grpvss import (Certificate, CheckedMotionClearance, CheckReport, Environme
 __all__ = [
     "InputError", "Verdict", "Robot", "Environment", "Path", "Result", "Certificate",
     "CheckReport", "Episode", "PathError", "LinkClearance", "Segment", "InterferencePoint",
-    "CheckedMotionClearance", "VerificationSession", "load_robot", "load_environment",
-    "load_path", "verify", "check_certificate", "exit_code_of",
+    "CheckedMotionClearance", "VerificationSession", "Cell", "load_cell", "load_robot",
+    "load_environment", "load_path", "verify", "check_certificate", "exit_code_of",
 ]
 
 #: The verdict for a path that is not qualified (thesis errors 1-6, errors 7-9): exit code 4.
@@ -45,6 +46,59 @@ def load_robot(file):
 def load_environment(file):
     """Reads a thesis environment file (Appendix A.1.1.2) into an :class:`Environment`."""
     return _native.load_environment(os.fspath(file))
+
+
+class Cell:
+    """A cell file (docs/cell-format.md) as ``grpvss verify --cell`` loads it: a URDF or
+    thesis robot on its base with its TCP, named obstacles, and the defaults the cell gives.
+    Lengths are the model's (metres for a URDF robot, whatever the cell's ``units``);
+    ``tolerance`` and ``cp_speed`` are None when the cell gives none. ``warnings``: the
+    inputs' warnings as (file, line, text), which ``grpvss verify`` prints."""
+
+    def __init__(self, file, robot, environment, tolerance, cp_speed, warnings):
+        self.file = file
+        self.robot = robot
+        self.environment = environment
+        self.tolerance = tolerance
+        self.cp_speed = cp_speed
+        self.warnings = list(warnings)
+
+    def session(self, tolerance=None, mode="certified", offset="auto"):
+        """The prepared set-up at ``tolerance`` (default: the cell's) for many paths."""
+        if tolerance is None:
+            tolerance = self.tolerance
+        if tolerance is None:
+            raise InputError(f"{self.file}:0: expected a tolerance (the cell gives none)",
+                             self.file, 0, "a tolerance (the cell gives none)")
+        return VerificationSession(self.robot, self.environment, tolerance, mode=mode,
+                                   offset=offset, cp_speed=self.cp_speed)
+
+    def verify(self, path, tolerance=None, mode="certified", offset="auto", timing=None,
+               cp_speed=None, ik="auto", profile_table=None):
+        """One verification of ``path`` (a :class:`Path` or a thesis path file, lengths in
+        the cell's unit) with the cell's defaults: its tolerance and CP speed, synchronized
+        timing."""
+        return self.session(tolerance, mode=mode, offset=offset).verify(
+            path, timing=timing, cp_speed=cp_speed, ik=ik, profile_table=profile_table)
+
+    def check_certificate(self, path, certificate, timing=None, ik=None, profile_table=None):
+        """:func:`check_certificate` against this cell's robot and obstacles."""
+        return check_certificate(self.robot, self.environment, path, certificate,
+                                 timing=timing, ik=ik, profile_table=profile_table)
+
+    def __repr__(self):
+        return (f"<grpvss.Cell {self.file}: {self.robot.joint_count} joints, "
+                f"{self.environment.obstacle_count} obstacle hulls>")
+
+
+def load_cell(file, package_paths=()):
+    """Reads a cell file (YAML, docs/cell-format.md) and everything it names (URDF, SRDF,
+    meshes, thesis files) into a :class:`Cell`. ``package_paths``: directories searched for
+    ``package://NAME/...`` before the cell's own ``package_paths`` and ROS_PACKAGE_PATH."""
+    file = os.fspath(file)
+    robot, environment, tolerance, cp_speed, warnings = _native._load_cell(
+        file, [os.fspath(p) for p in package_paths])
+    return Cell(file, robot, environment, tolerance, cp_speed, warnings)
 
 
 def load_path(file, robot):
@@ -76,9 +130,11 @@ class VerificationSession:
     number of paths against it, from any number of threads (the GIL is released while a path
     is verified)."""
 
-    def __init__(self, robot, environment, tolerance, mode="certified", offset="auto"):
+    def __init__(self, robot, environment, tolerance, mode="certified", offset="auto",
+                 cp_speed=None):
         self._native = _native.Session(_as_robot(robot), _as_environment(environment),
                                        float(tolerance), mode, offset)
+        self._cp_speed = 1.0 if cp_speed is None else float(cp_speed)
 
     robot = property(lambda self: self._native.robot)
     environment = property(lambda self: self._native.environment)
@@ -86,16 +142,22 @@ class VerificationSession:
     mode = property(lambda self: self._native.mode)
     offset = property(lambda self: self._native.offset)
 
-    def verify(self, path, timing="independent", cp_speed=1.0, ik="auto", profile_table=None):
+    def verify(self, path, timing=None, cp_speed=None, ik="auto", profile_table=None):
         """Verifies ``path`` (a :class:`Path` or a path file) and returns a :class:`Result`.
-        ``timing``, ``cp_speed``, ``ik`` and ``profile_table`` are ``grpvss verify``'s options."""
+        ``timing``, ``cp_speed``, ``ik`` and ``profile_table`` are ``grpvss verify``'s options;
+        unset, timing is synchronized for a cell's robot and independent for a thesis robot
+        file, and the CP speed is the session's (a cell's, else 1)."""
+        if timing is None:
+            timing = "synchronized" if self.robot.from_cell else "independent"
+        if cp_speed is None:
+            cp_speed = self._cp_speed
         table = os.fspath(profile_table) if profile_table is not None else ""
         return self._native._verify(_as_path(path, self.robot), timing, float(cp_speed), ik,
                                     table)
 
 
 def verify(robot, environment, path, tolerance, mode="certified", offset="auto",
-           timing="independent", cp_speed=1.0, ik="auto", profile_table=None):
+           timing=None, cp_speed=None, ik="auto", profile_table=None):
     """One verification, as ``grpvss verify`` runs it; arguments are objects or file names."""
     session = VerificationSession(robot, environment, tolerance, mode=mode, offset=offset)
     return session.verify(path, timing=timing, cp_speed=cp_speed, ik=ik,

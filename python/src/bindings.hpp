@@ -19,11 +19,15 @@
 
 namespace grpvss::python {
 
-/// A thesis robot file as loaded, with the name and digest the reports record.
+/// A robot as loaded (a thesis robot file, or a cell file's robot), with the file name and
+/// digest the reports record.
 struct LoadedRobot {
-  std::string file;    ///< as the caller named it
+  std::string file;    ///< as the caller named it (the cell file for a cell's robot)
   std::string sha256;  ///< of the bytes at load time
   RobotModel model;
+  bool from_cell = false;
+  /// Model units per unit of a thesis path file's lengths (a URDF robot in a cell in mm: 0.001).
+  double path_length_scale = 1.0;
 };
 
 struct LoadedEnvironment {

@@ -2,7 +2,9 @@
 // by the io stage as `grpvss verify` reads them) and the read-only Robot, Environment and Path
 // objects. Revolute joint values are radians here (the files hold degrees).
 #include <memory>
+#include <optional>
 #include <string>
+#include <vector>
 #include <variant>
 
 #include <pybind11/eigen.h>
@@ -10,6 +12,7 @@
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
+#include "grpvss/cell/model_inputs.hpp"
 #include "grpvss/io/environment_file.hpp"
 #include "grpvss/io/path_file.hpp"
 #include "grpvss/io/robot_file.hpp"
@@ -41,9 +44,45 @@ std::shared_ptr<LoadedPath> load_path(const std::string& file,
   auto path = std::make_shared<LoadedPath>();
   path->file = file;
   path->program = io::read_path_file(file, robot->model);
+  cell::convert_path_lengths(path->program, robot->model, robot->path_length_scale);
   path->sha256 = report::sha256_hex_of_file(file);
   path->robot = std::move(robot);
   return path;
+}
+
+/// A cell file read as `grpvss verify --cell` reads it: (robot, environment, tolerance or None,
+/// CP speed or None, warnings as (file, line, text)). Both models carry the cell file's name and
+/// digest, which is what the reports and certificates bind a cell's model to.
+py::tuple load_cell(const std::string& file, const std::vector<std::string>& package_paths) {
+  cell::ModelSources sources;
+  sources.cell_file = file;
+  sources.package_paths = package_paths;
+  cell::ModelInputs inputs = cell::load_model_inputs(sources);
+  const std::string digest = report::sha256_hex_of_file(file);
+  auto robot = std::make_shared<LoadedRobot>();
+  robot->file = file;
+  robot->sha256 = digest;
+  robot->model = std::move(inputs.robot);
+  robot->from_cell = true;
+  robot->path_length_scale = inputs.model_units_per_cell_unit;
+  auto environment = std::make_shared<LoadedEnvironment>();
+  environment->file = file;
+  environment->sha256 = digest;
+  environment->model = std::move(inputs.environment);
+  py::list warnings;
+  for (const io::InputWarning& w : inputs.warnings) warnings.append(py::make_tuple(w.file, w.line, w.text));
+  const auto optional = [](const std::optional<double>& value) -> py::object {
+    return value ? py::object(py::float_(*value)) : py::object(py::none());
+  };
+  return py::make_tuple(robot, environment, optional(inputs.tolerance), optional(inputs.cp_speed),
+                        warnings);
+}
+
+bool has_general_frames(const RobotModel& robot) {
+  for (const Joint& joint : robot.joints) {
+    if (joint.frames) return true;
+  }
+  return false;
 }
 
 const char* joint_type_name(JointType type) {
@@ -59,7 +98,7 @@ const char* segment_kind(const PathSegment& segment) {
 RobotClass bind_robot(py::module_& module) {
   using Robot = LoadedRobot;
   return RobotClass(module, "Robot",
-                                            "A robot loaded from a thesis robot file (A.1.1.1)")
+                                            "A robot loaded from a thesis robot file (A.1.1.1) or a cell file")
       .def_property_readonly("file", [](const Robot& r) { return r.file; })
       .def_property_readonly("sha256", [](const Robot& r) { return r.sha256; })
       .def_property_readonly("name", [](const Robot& r) { return r.model.name; })
@@ -93,8 +132,29 @@ RobotClass bind_robot(py::module_& module) {
                                }
                                return limits;
                              })
+      .def_property_readonly("from_cell", [](const Robot& r) { return r.from_cell; })
+      .def_property_readonly("joint_names",
+                             [](const Robot& r) {
+                               py::list names;
+                               for (const Joint& j : r.model.joints) names.append(j.name);
+                               return names;
+                             },
+                             "URDF joint names (empty strings for a thesis robot)")
+      .def_property_readonly("link_names",
+                             [](const Robot& r) {
+                               py::list names;
+                               for (int i = 0; i < static_cast<int>(r.model.links.size()); ++i) {
+                                 names.append(link_label(r.model, i));
+                               }
+                               return names;
+                             },
+                             "Names of link frames 0..N (URDF link names; 'link i' for thesis robots)")
       .def_property_readonly("dh",
                              [](const Robot& r) {
+                               if (has_general_frames(r.model)) {
+                                 throw py::value_error(r.file + ": a URDF robot's joints have general "
+                                                       "frames (origin, axis), not DH parameters");
+                               }
                                Eigen::MatrixXd dh(r.model.joint_count(), 4);
                                for (int i = 0; i < dh.rows(); ++i) {
                                  const DhParameters& p = r.model.joints[i].dh;
@@ -119,6 +179,15 @@ void bind_environment(py::module_& module) {
       .def_property_readonly("smallest_angle", [](const Env& e) { return e.model.smallest_angle; })
       .def_property_readonly("smallest_thickness",
                              [](const Env& e) { return e.model.smallest_thickness; })
+      .def_property_readonly("obstacle_names",
+                             [](const Env& e) {
+                               py::list names;
+                               for (int i = 0; i < static_cast<int>(e.model.obstacles.size()); ++i) {
+                                 names.append(obstacle_label(e.model, i));
+                               }
+                               return names;
+                             },
+                             "Per obstacle hull: its name ('post', 'fixture part 2') or 'obstacle i'")
       .def("__repr__", [](const Env& e) {
         return "<grpvss.Environment " + e.file + ": " +
                std::to_string(e.model.obstacles.size()) + " obstacles>";
@@ -155,6 +224,8 @@ RobotClass bind_model_loading(py::module_& module) {
              "Reads a thesis robot file. Raises grpvss.InputError on a defect.");
   module.def("load_environment", &load_environment, py::arg("file"),
              "Reads a thesis environment file. Raises grpvss.InputError on a defect.");
+  module.def("_load_cell", &load_cell, py::arg("file"), py::arg("package_paths"),
+             "Reads a cell file. Raises grpvss.InputError on a defect.");
   module.def("load_path", &load_path, py::arg("file"), py::arg("robot"),
              "Reads a thesis path file for `robot`. Raises grpvss.InputError on a defect.");
   return robot;
