@@ -1,4 +1,4 @@
-// `grpvss expansion-audit --robot FILE --tolerance D [--json]`: does each tolerance expansion
+// `grpvss expansion-audit (--robot FILE --tolerance D | --cell CELL) [--json]`: does each tolerance expansion
 // of each link hull contain every point within D of the hull? JSON schema and findings:
 // docs/expansion-audit.md.
 #include <cmath>
@@ -11,7 +11,7 @@
 #include "commands.hpp"
 #include "grpvss/common/input_error.hpp"
 #include "grpvss/exact/expansion_audit.hpp"
-#include "grpvss/io/robot_file.hpp"
+#include "model_inputs.hpp"
 
 namespace grpvss::app {
 namespace {
@@ -37,7 +37,8 @@ nlohmann::ordered_json to_json(const geometry::ExpansionMeasure& m) {
   return j;
 }
 
-nlohmann::ordered_json to_json(const geometry::ExpansionAudit& audit, const std::string& robot_path) {
+nlohmann::ordered_json to_json(const geometry::ExpansionAudit& audit, const std::string& robot_path,
+                               const RobotModel& robot) {
   nlohmann::ordered_json j;
   j["format_version"] = kJsonFormatVersion;
   j["robot"] = robot_path;
@@ -47,6 +48,8 @@ nlohmann::ordered_json to_json(const geometry::ExpansionAudit& audit, const std:
   for (const auto& row : audit.hulls) {
     nlohmann::ordered_json h;
     h["link"] = row.link;
+    const std::string& name = robot.links[static_cast<std::size_t>(row.link)].name;
+    if (!name.empty()) h["link_name"] = name;  // cells only: thesis documents stay as they were
     h["hull"] = row.hull;
     h["source_line"] = row.source_line;
     h["point_count"] = row.point_count;
@@ -61,8 +64,14 @@ nlohmann::ordered_json to_json(const geometry::ExpansionAudit& audit, const std:
   return j;
 }
 
-void print_table(const geometry::ExpansionAudit& audit, const std::string& robot_path) {
+void print_table(const geometry::ExpansionAudit& audit, const std::string& robot_path,
+                 const RobotModel& robot) {
   fmt::print("expansion audit of {} at tolerance D = {}\n", robot_path, audit.tolerance);
+  if (!robot.links.empty() && !robot.links.back().name.empty()) {
+    fmt::print("links:");
+    for (std::size_t i = 0; i < robot.links.size(); ++i) fmt::print(" {} {}", i, robot.links[i].name);
+    fmt::print("; lengths in metres\n");
+  }
   fmt::print("contains = every point within D of the hull is inside the expansion (exact);\n"
              "protrusion > 0: how far the worst such point lies outside, < 0: smallest margin;\n"
              "inflation = volume / volume of the ideal ball sum (Steiner); gap = largest\n"
@@ -93,6 +102,25 @@ void print_table(const geometry::ExpansionAudit& audit, const std::string& robot
   }
 }
 
+/// `--tolerance` as given (with a cell: in its unit, converted upward), > 0.
+double parse_tolerance(const std::string& text, const ModelInputs& model) {
+  double tolerance = 0.0;
+  std::size_t used = 0;
+  try {
+    tolerance = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (text.empty() || used != text.size() || !std::isfinite(tolerance) || !(tolerance > 0.0)) {
+    throw InputError("--tolerance", 0,
+                     text.empty() && model.from_cell
+                         ? "--tolerance, or `tolerance` in the cell file"
+                         : "a finite number > 0",
+                     text);
+  }
+  return cell::to_model_units(tolerance, model);
+}
+
 }  // namespace
 
 void register_expansion_audit_command(CLI::App& app, int& exit_code) {
@@ -102,40 +130,40 @@ void register_expansion_audit_command(CLI::App& app, int& exit_code) {
       "contain every point within the tolerance");
   // Options outlive this function: CLI11 writes them during parse, the callback reads them.
   struct Options {
-    std::string robot_path;
+    ModelSources model;
     std::string tolerance_text;
     bool json = false;
     bool quiet = false;
   };
   auto options = std::make_shared<Options>();
-  command->add_option("--robot", options->robot_path, "Robot file (thesis A.1.1.1 format)")
-      ->required();
+  command->add_option("--robot", options->model.robot_file, "Robot file (thesis A.1.1.1 format)");
+  command->add_option("--cell", options->model.cell_file,
+                      "Cell file: its robot, on its base with its TCP (docs/cell-format.md)");
+  command->add_option("--package-path", options->model.package_paths,
+                      "Directory searched for package://NAME/... (repeatable; before the cell's)");
   command->add_option("--tolerance", options->tolerance_text,
-                      "Tolerance D > 0 (file length units)")
-      ->required();
+                      "Tolerance D > 0 (file length units; with a cell its unit, default its "
+                      "tolerance)");
   command->add_flag("--json", options->json, "Print a JSON document (docs/expansion-audit.md)");
   command->add_flag("--quiet", options->quiet, "Print nothing (the input is still checked)");
   command->callback([&exit_code, options] {
     const std::string& tolerance_text = options->tolerance_text;
-    const std::string& robot_path = options->robot_path;
+    const ModelInputs model = load_model_inputs(options->model, options->quiet, ObstaclesNeeded::kNo);
+    const RobotModel& robot = model.robot;
+    const std::string& robot_path = model.robot_label_file;
     double tolerance = 0.0;
-    std::size_t used = 0;
-    try {
-      tolerance = std::stod(tolerance_text, &used);
-    } catch (const std::exception&) {
-      used = 0;
+    if (tolerance_text.empty() && model.tolerance) {
+      tolerance = *model.tolerance;
+    } else {
+      tolerance = parse_tolerance(tolerance_text, model);
     }
-    if (used != tolerance_text.size() || !std::isfinite(tolerance) || !(tolerance > 0.0)) {
-      throw InputError("--tolerance", 0, "a finite number > 0", tolerance_text);
-    }
-    const RobotModel robot = io::read_robot_file(robot_path);
     const geometry::ExpansionAudit audit = geometry::audit_expansions(robot, tolerance);
     if (options->quiet) {
       // Nothing printed.
     } else if (options->json) {
-      fmt::print("{}\n", to_json(audit, robot_path).dump(2));
+      fmt::print("{}\n", to_json(audit, robot_path, robot).dump(2));
     } else {
-      print_table(audit, robot_path);
+      print_table(audit, robot_path, robot);
     }
     exit_code = kExitOk;
   });

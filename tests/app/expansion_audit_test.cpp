@@ -8,6 +8,7 @@
 #include <fstream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -215,6 +216,31 @@ TEST(ExpansionAuditCli, NonPositiveOrNonNumericToleranceIsAnInputError) {
               2)
         << tolerance;
   }
+}
+
+// A cell's robot (data/sixaxis: URDF, one box mesh per link) is audited on its base with its
+// TCP, at the cell's tolerance (0.005 m) unless --tolerance says otherwise; hulls name their link.
+TEST(ExpansionAuditCli, ACellsRobotIsAuditedAtTheCellsToleranceWithLinkNames) {
+  const std::string cell = std::string(GRPVSS_SOURCE_DIR) + "/data/sixaxis/cell.yaml";
+  const CommandResult r = run_cli("expansion-audit --cell " + cell + " --json");
+  ASSERT_EQ(r.exit_code, 0);
+  const nlohmann::json audit = nlohmann::json::parse(r.out);
+  EXPECT_EQ(audit.at("tolerance").get<double>(), 0.005);
+  ASSERT_EQ(audit.at("hull_count"), 7);
+  const std::vector<std::string> names{"base_link", "link_1", "link_2", "link_3",
+                                       "link_4", "link_5", "tool0"};
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    const nlohmann::json& hull = audit.at("hulls").at(i);
+    EXPECT_EQ(hull.at("link"), static_cast<int>(i));
+    EXPECT_EQ(hull.at("link_name"), names[i]);
+    EXPECT_EQ(hull.at("point_count"), 8);  // the generated box meshes
+    EXPECT_TRUE(expansion(hull, "cube").at("contains_ball_sum").get<bool>());
+    EXPECT_TRUE(expansion(hull, "rhombicuboctahedron").at("contains_ball_sum").get<bool>());
+  }
+  const nlohmann::json at_one_centimetre = nlohmann::json::parse(
+      run_cli("expansion-audit --cell " + cell + " --tolerance 0.01 --json").out);
+  EXPECT_EQ(at_one_centimetre.at("tolerance").get<double>(), 0.01);
+  EXPECT_EQ(run_cli("expansion-audit --cell " + cell + " --robot " + kRobot).exit_code, 2);
 }
 
 }  // namespace
