@@ -99,7 +99,7 @@ TEST_F(CellCli, ARobotBoltedToItsTableIsClearWithTheAllowedContactAndItsCertific
       "--cell " + kCells + "ur5e-bolted.yaml --path " + kCells + "ur5e-clear.txt";
   const CliRun verify = run_cli(dir(), "verify " + inputs + " --certificate c.json");
   ASSERT_EQ(verify.exit_code, grpvss::app::kExitOk) << verify.out << verify.err;
-  EXPECT_NE(verify.out.find("allowed contacts (not verified): base_link hull 0 / table\n"),
+  EXPECT_NE(verify.out.find("allowed contacts (not verified): base_link hull 0 (base_link_inertia) / table\n"),
             std::string::npos)
       << verify.out;
   const CliRun check = run_cli(dir(), "check-certificate " + inputs + " c.json");
@@ -123,7 +123,7 @@ TEST_F(CellCli, WithoutTheAllowedContactTheBaseOnTheTableIsACollision) {
   const CliRun verify =
       run_cli(dir(), "verify --cell " + cell + " --path " + kCells + "ur5e-clear.txt");
   EXPECT_EQ(verify.exit_code, grpvss::app::kExitFinding) << verify.out << verify.err;
-  EXPECT_NE(verify.out.find("interference: base_link hull 0 / table, "), std::string::npos)
+  EXPECT_NE(verify.out.find("interference: base_link hull 0 (base_link_inertia) / table, "), std::string::npos)
       << verify.out;
 }
 

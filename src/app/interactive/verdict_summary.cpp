@@ -4,6 +4,7 @@
 
 #include <fmt/core.h>
 
+#include "grpvss/evidence/certificate.hpp"
 #include "grpvss/report/lower_bound_text.hpp"
 
 namespace grpvss::app {
@@ -32,7 +33,8 @@ std::string episode_line(const certify::InterferenceEpisode& episode, const Mode
       episode.cleared_time ? fmt::format(", clear by {:.3f} s", *episode.cleared_time) : "";
   std::string line =
       fmt::format("interference: {} hull {} / {}, {} ({:.3f}-{:.3f} s{}), ",
-                  names.link(episode.link), episode.hull, names.obstacle(episode.obstacle),
+                  names.link(episode.link), names.hull_suffix(episode.link, episode.hull),
+                  names.obstacle(episode.obstacle),
                   step_range(episode.first_step, episode.last_step), episode.first_time,
                   episode.last_time, cleared);
   if (episode.first_collision_step) {
@@ -48,6 +50,19 @@ std::string episode_line(const certify::InterferenceEpisode& episode, const Mode
 
 std::string ModelNames::link(int index) const {
   return robot != nullptr ? link_label(*robot, index) : fmt::format("link {}", index);
+}
+
+std::string ModelNames::hull_suffix(int link, int hull) const {
+  std::string text = std::to_string(hull);
+  if (robot == nullptr || link < 0 || static_cast<std::size_t>(link) >= robot->links.size()) {
+    return text;
+  }
+  const Link& owner = robot->links[static_cast<std::size_t>(link)];
+  if (hull < 0 || static_cast<std::size_t>(hull) >= owner.hulls.size()) return text;
+  const std::string& declared_by = owner.hulls[static_cast<std::size_t>(hull)].name;
+  // A URDF link merged into this frame (fixed joint, side branch): name the one it came from.
+  if (!declared_by.empty() && declared_by != owner.name) text += " (" + declared_by + ")";
+  return text;
 }
 
 std::string ModelNames::obstacle(int index) const {
@@ -66,8 +81,8 @@ std::string verdict_summary(const certify::VerificationResult& result, const Mod
   if (names.environment != nullptr && !names.environment->allowed_contacts.empty()) {
     text += "allowed contacts (not verified):";
     for (const AllowedContactPair& pair : names.environment->allowed_contacts) {
-      text += fmt::format(" {} hull {} / {};", names.link(pair.link), pair.hull,
-                          names.obstacle(pair.obstacle));
+      text += fmt::format(" {} hull {} / {};", names.link(pair.link),
+                          names.hull_suffix(pair.link, pair.hull), names.obstacle(pair.obstacle));
     }
     text.back() = '\n';
   }
@@ -85,7 +100,12 @@ std::string verdict_summary(const certify::VerificationResult& result, const Mod
   }
   const certify::LinkClearanceSummary* closest = nullptr;  // smallest motion clearance
   for (const certify::LinkClearanceSummary& link : result.link_clearances) {
-    if (link.link == 0) continue;
+    if (link.min_clearance >= certify::kUnboundedRadius) {
+      text += fmt::format("{}: no obstacle to check against (none, or every pair with it is an "
+                          "allowed contact)\n",
+                          names.link(link.link));
+      continue;
+    }
     text += fmt::format("{}: smallest certified clearance {} at step {}{}", names.link(link.link),
                         report::format_lower_bound(link.min_clearance, 4), link.step,
                         link.obstacle >= 0 ? fmt::format(" ({})", names.obstacle(link.obstacle))

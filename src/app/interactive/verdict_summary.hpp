@@ -17,6 +17,8 @@ struct ModelNames {
   const Environment* environment = nullptr;
   std::string link(int index) const;
   std::string obstacle(int index) const;
+  /// "3", or "3 (panda_leftfinger)" when hull 3 of the link came from another URDF link.
+  std::string hull_suffix(int link, int hull) const;
 };
 
 /// "verdict: ...", the mode/tolerance/steps line, the first collision, each error and each
