@@ -11,7 +11,9 @@
 #include <system_error>
 
 #include "commands.hpp"
+#include "grpvss/common/input_error.hpp"
 #include "interactive/session.hpp"
+#include "model_inputs.hpp"
 #include "viewer_html.hpp"
 
 namespace grpvss::app {
@@ -20,6 +22,7 @@ namespace {
 struct InteractiveArguments {
   std::string data_dir;
   int max_invalid = 20;
+  ModelSources cell;  ///< --cell, --package-path
 };
 
 /// The folder holding ibm7545/robot.txt: --data-dir, else $GRPVSS_DATA_DIR, else the `data`
@@ -49,6 +52,12 @@ int run_interactive(const InteractiveArguments& args) {
   settings.max_invalid_answers = args.max_invalid;
   settings.echo_answers = isatty(STDIN_FILENO) == 0;
   settings.render_html = render_viewer_html;
+  if (!args.cell.cell_file.empty()) {
+    settings.cell = load_model_inputs(args.cell, false);
+    settings.cell_file = args.cell.cell_file;
+  } else if (!args.cell.package_paths.empty()) {
+    throw InputError("--package-path", 0, "--package-path only with --cell (a URDF robot)");
+  }
   interactive::Session session(std::cin, std::cout, settings);
   return interactive::exit_code(session.run());
 }
@@ -62,6 +71,11 @@ void register_interactive_command(CLI::App& app, int& exit_code) {
   command->add_option("--data-dir", args->data_dir,
                       "Folder holding ibm7545/robot.txt (default: $GRPVSS_DATA_DIR, else the "
                       "data folder next to the executable)");
+  command->add_option("--cell", args->cell.cell_file,
+                      "Cell file: its robot and named obstacles replace the robot and environment "
+                      "questions (docs/cell-format.md)");
+  command->add_option("--package-path", args->cell.package_paths,
+                      "Directory searched for package://NAME/... (repeatable; before the cell's)");
   command->add_option("--max-invalid", args->max_invalid,
                       "End the session (exit 2) after this many invalid answers in a row")
       ->check(CLI::PositiveNumber)

@@ -396,7 +396,8 @@ struct CliRun {
   std::string out;
 };
 
-CliRun run_cli_with_stdin(const std::string& dir, const std::string& input) {
+CliRun run_cli_with_stdin(const std::string& dir, const std::string& input,
+                          const std::string& options = "") {
   const std::string input_file = dir + "/answers.txt";
   {
     std::FILE* file = std::fopen(input_file.c_str(), "w");
@@ -404,7 +405,7 @@ CliRun run_cli_with_stdin(const std::string& dir, const std::string& input) {
     std::fclose(file);
   }
   const std::string command = "cd '" + dir + "' && GRPVSS_DATA_DIR='" + kDataDir + "' '" +
-                              GRPVSS_CLI + "' interactive < '" + input_file + "' 2>&1";
+                              GRPVSS_CLI + "' interactive " + options + " < '" + input_file + "' 2>&1";
   CliRun result;
   FILE* pipe = popen(command.c_str(), "r");
   if (!pipe) return result;
@@ -444,4 +445,27 @@ TEST(InteractiveCli, PipedStdinRunsTheSessionAndEchoesTheAnswers) {
 }
 
 }  // namespace
+// `interactive --cell`: the cell's robot and obstacles replace the robot and environment
+// questions, its tolerance (0.005 m, printed with its digits) is the default, and the summary
+// names links and obstacles (data/sixaxis: the path through the post).
+TEST(InteractiveCli, ACellReplacesTheRobotAndEnvironmentQuestions) {
+  const std::string dir = test::make_temporary_directory("interactive-cell");
+  const std::string six = std::string(GRPVSS_SOURCE_DIR) + "/data/sixaxis/";
+  const CliRun r = run_cli_with_stdin(
+      dir, join_lines({"1", "", "", "", "1", six + "path-collision.txt", "n", "", "", "", "6"}),
+      "--cell " + six + "cell.yaml");
+  EXPECT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_TRUE(appear_in_order(
+      r.out, {"CELL FILE " + six + "cell.yaml: ROBOT grpvss_sixaxis, 6 JOINTS, IK OPW closed form\n",
+              "CELL FILE " + six + "cell.yaml: 6 OBSTACLE HULLS (pedestal, table, fixture piece 0, "
+                                   "fixture piece 1, fixture piece 2, post)\n",
+              "ENTER THE TOLERANCE VALUE (DEFAULT = 0.005)\n", "THE TOLERANCE VALUE = 0.005\n",
+              "END EFFECTOR POSITION ", "verdict: COLLISION\nmode: certified  tolerance: 0.005  steps: 21 ",
+              "interference: link_4 hull 0 / post, ", "GRPVSS SESSION ENDED\n"}))
+      << r.out;
+  EXPECT_EQ(r.out.find("WHICH ROBOT ARE YOU GOING TO SIMULATE"), std::string::npos) << r.out;
+  const CliRun bad = run_cli_with_stdin(dir, "", "--cell " + dir + "/missing.yaml");
+  EXPECT_EQ(bad.exit_code, 2) << bad.out;
+}
+
 }  // namespace grpvss::app::interactive

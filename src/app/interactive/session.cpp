@@ -105,7 +105,31 @@ void Session::run_from(Stage stage) {
   perform_motion();
 }
 
+void Session::take_cell_robot() {
+  robot_ = settings_.cell->robot;
+  ik_ = motion::select_ik({}, *robot_, settings_.cell_file);
+  cell_.reset();
+  kinematics_ = motion::make_kinematics_access(*robot_, ik_);
+  robot_file_ = settings_.cell_file;
+  if (tolerance_ == 0.0 && settings_.cell->tolerance) tolerance_ = *settings_.cell->tolerance;
+  out_ << fmt::format("CELL FILE {}: ROBOT {}, {} JOINTS, IK {}\n", settings_.cell_file,
+                      robot_->name, robot_->joint_count(), ik_->name());
+}
+
+void Session::take_cell_environment() {
+  environment_ = settings_.cell->environment;
+  cell_.reset();
+  environment_file_ = settings_.cell_file;
+  std::string names;
+  for (int i = 0; i < static_cast<int>(environment_->obstacles.size()); ++i) {
+    names += (i == 0 ? " (" : ", ") + obstacle_label(*environment_, i);
+  }
+  out_ << fmt::format("CELL FILE {}: {} OBSTACLE HULLS{}\n", settings_.cell_file,
+                      environment_->obstacles.size(), names.empty() ? "" : names + ")");
+}
+
 void Session::choose_robot() {
+  if (settings_.cell) return take_cell_robot();
   for (;;) {
     const int option = prompter_.ask_option("WHICH ROBOT ARE YOU GOING TO SIMULATE ?",
                                             {"IBM 7545 ROBOT", "OTHERS"});
@@ -167,6 +191,7 @@ void Session::choose_trajectory_way() {
 }
 
 void Session::choose_environment() {
+  if (settings_.cell) return take_cell_environment();
   std::vector<std::string> lines{"THE VERTICES OF THE OBSTACLES IN THE WORKING",
                                  "ENVIRONMENT SHOULD BE IN A FILE",
                                  "(FORMAT: docs/input-formats.md, THESIS A.1.1.2)",
@@ -196,7 +221,8 @@ void Session::choose_environment() {
 void Session::choose_tolerance() {
   std::vector<std::string> lines{"ENTER THE TOLERANCE VALUE"};
   if (tolerance_ > 0.0) lines.back() += fmt::format(" (DEFAULT = {})", tolerance_);
-  lines.push_back("(SAME LENGTH UNITS AS THE ROBOT FILE, > 0)");
+  lines.push_back(settings_.cell ? "(THE MODEL'S LENGTH UNIT: METRES FOR A URDF ROBOT, > 0)"
+                                 : "(SAME LENGTH UNITS AS THE ROBOT FILE, > 0)");
   const double current = tolerance_;
   tolerance_ = prompter_.ask_until<double>(
       lines, [current](const std::string& answer, std::string& why) -> std::optional<double> {
@@ -210,7 +236,9 @@ void Session::choose_tolerance() {
         return (*numbers)[0];
       });
   if (cell_ && cell_->cell.tolerance() != tolerance_) cell_.reset();
-  out_ << fmt::format("THE TOLERANCE VALUE = {:.2f}\n", tolerance_);
+  // The thesis prints two decimals (inches); a cell's 0.005 m needs its own digits.
+  out_ << (settings_.cell ? fmt::format("THE TOLERANCE VALUE = {}\n", tolerance_)
+                          : fmt::format("THE TOLERANCE VALUE = {:.2f}\n", tolerance_));
 }
 
 std::shared_ptr<const SessionCell> Session::current_cell() {
@@ -237,8 +265,10 @@ void Session::show_configuration() {
   const Eigen::Vector3d p_W = X_WE.translation();
   out_ << "CURRENT CONFIGURATION (HOME)\n"
        << "JOINT VALUES" << joints << '\n'
-       << fmt::format("END EFFECTOR POSITION {:8.2f} {:8.2f} {:8.2f}\n", p_W.x(), p_W.y(),
-                      p_W.z());
+       << (settings_.cell  // metres need four decimals (a tenth of a millimetre)
+               ? fmt::format("END EFFECTOR POSITION {:9.4f} {:9.4f} {:9.4f}\n", p_W.x(), p_W.y(), p_W.z())
+               : fmt::format("END EFFECTOR POSITION {:8.2f} {:8.2f} {:8.2f}\n", p_W.x(), p_W.y(),
+                             p_W.z()));
 }
 
 void Session::change_view() {
@@ -280,6 +310,11 @@ void Session::perform_motion() {
   certify::SetupRequest request;
   request.tolerance = tolerance_;
   request.motion.table = profile_table_;
+  if (settings_.cell) {
+    // What controllers do, as `grpvss verify --cell`; the cell's CP speed when it gives one.
+    request.motion.timing = motion::PtpTiming::kSynchronized;
+    request.motion.cp_speed = settings_.cell->cp_speed.value_or(request.motion.cp_speed);
+  }
   request.path_label = label;
   const certify::RunSettings settings = certify::resolve_setup(request).run;
   try {
@@ -288,7 +323,7 @@ void Session::perform_motion() {
     ++motions_processed_;
     out_ << (report::thesis_reports_collision(run.result) ? "COLLISIONS DETECTED IN THIS PATH\n"
                                                           : "NO COLLISION DETECTED IN THIS PATH\n");
-    out_ << verdict_summary(run.result);
+    out_ << verdict_summary(run.result, ModelNames{&cell->robot, &cell->environment});
     last_digests_ = {{robot_file_, report::sha256_hex_of_file(robot_file_)},
                      {environment_file_, report::sha256_hex_of_file(environment_file_)},
                      path_digest};
@@ -328,6 +363,9 @@ bool Session::choose_path(PathProgram& program, std::string& label,
     const std::vector<TypedSegment> segments = type_path();
     typed_text = path_file_text(segments);
     program = typed_program(segments, *robot_);
+    if (settings_.cell) {
+      cell::convert_path_lengths(program, *robot_, settings_.cell->model_units_per_cell_unit);
+    }
     label = "SCREEN";
     digest = {"(typed at the terminal)", report::sha256_hex(typed_text)};
     return true;
@@ -339,6 +377,9 @@ bool Session::choose_path(PathProgram& program, std::string& label,
                             "ENTER THE FILE NAME"});
     try {
       program = io::read_path_file(file, *robot_);
+      if (settings_.cell) {
+        cell::convert_path_lengths(program, *robot_, settings_.cell->model_units_per_cell_unit);
+      }
       digest = {file, report::sha256_hex_of_file(file)};
       label = base_name(file);
       prompter_.accept();

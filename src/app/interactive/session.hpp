@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "grpvss/cell/model_inputs.hpp"
 #include "grpvss/certify/robot_cell.hpp"
 #include "grpvss/evidence/verification_result.hpp"
 #include "grpvss/kinematics/inverse_kinematics.hpp"
@@ -42,6 +43,10 @@ struct SessionSettings {
   bool echo_answers = false;
   /// The viewer's HTML page writer; without it only the JSON report and the SVG are written.
   HtmlRenderer render_html;
+  /// `--cell`: the cell's robot and obstacles replace the robot and environment questions, its
+  /// tolerance is the default, PTP timing is synchronized, path lengths are in its unit.
+  std::optional<cell::ModelInputs> cell;
+  std::string cell_file;
 };
 
 enum class SessionEnd {
@@ -90,6 +95,8 @@ class Session {
 
   void run_from(Stage stage);
   void choose_robot();
+  void take_cell_robot();
+  void take_cell_environment();
   void choose_trajectory_way();
   void choose_environment();
   void choose_tolerance();
