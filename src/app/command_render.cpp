@@ -1,6 +1,7 @@
 // `grpvss render --report REPORT.json --step K --svg FILE`: the thesis's wireframe picture of
 // one step for a given view (defaults ANGLEX, ANGLEY, ANGLEZ = -75, 0, 170; SCALE 1; window
-// -50..50), interference points as red stars. Reads only the JSON report.
+// -50..50 for a scene of the thesis's size, else fitted to the scene: svg_window.hpp),
+// interference points as red stars. Reads only the JSON report.
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -14,6 +15,7 @@
 #include "grpvss/report/svg_render.hpp"
 #include "output_paths.hpp"
 #include "report_file.hpp"
+#include "interactive/svg_window.hpp"
 
 namespace grpvss::app {
 namespace {
@@ -23,13 +25,17 @@ struct RenderArguments {
   int step = 1;
   std::string svg;
   report::SvgView view;
-  std::vector<double> window{-50.0, 50.0};
+  std::vector<double> window;  ///< empty: default_svg_window() of the report
   bool force = false;
 };
 
 int run_render(RenderArguments args) {
   check_requested_outputs({{"--svg", args.svg}}, {args.report_file}, args.force);
   const nlohmann::json report = read_report_file(args.report_file);
+  if (args.window.empty()) {
+    const std::array<double, 2> fitted = default_svg_window(report);
+    args.window = {fitted[0], fitted[1]};
+  }
   args.view.window_min = args.window.at(0);
   args.view.window_max = args.window.at(1);
   report::write_file_atomically(
@@ -63,10 +69,11 @@ void register_render_command(CLI::App& app, int& exit_code) {
   command->add_option("--shiftx", args->view.shift[0], "Window shift in x (before scaling)");
   command->add_option("--shifty", args->view.shift[1], "Window shift in y (before scaling)");
   command->add_option("--shiftz", args->view.shift[2], "Window shift in z (before scaling)");
-  command->add_option("--window", args->window, "View scope lo,hi in each dimension")
+  command->add_option("--window", args->window,
+                      "View scope lo,hi in each dimension (default: -50,50 for a scene of the "
+                      "thesis's size, else fitted to the scene)")
       ->delimiter(',')
-      ->expected(2)
-      ->capture_default_str();
+      ->expected(2);
   command->add_flag("--force", args->force, "Overwrite an existing output file");
   command->callback([args, &exit_code] {
     if (args->report_file.empty()) throw InputError("render", 0, "a report file (REPORT or --report)");

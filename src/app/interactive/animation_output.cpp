@@ -1,5 +1,7 @@
 #include "interactive/animation_output.hpp"
 
+#include <array>
+
 #include <filesystem>
 #include <system_error>
 
@@ -11,6 +13,8 @@
 #include "grpvss/report/json_report.hpp"
 #include "grpvss/report/scene_json.hpp"
 #include "grpvss/report/svg_render.hpp"
+
+#include "interactive/svg_window.hpp"
 
 namespace grpvss::app::interactive {
 namespace {
@@ -62,7 +66,11 @@ AnimationFiles write_animation(const AnimationRequest& request, const std::strin
   std::string svg;
   files.svg_step = picture_step(request.result);
   if (files.svg_step > 0) {
-    svg = report::render_step_svg(report, files.svg_step, svg_view(request.view), files.json);
+    report::SvgView view = svg_view(request.view);
+    const std::array<double, 2> window = default_svg_window(report);  // the scene's size
+    view.window_min = window[0];
+    view.window_max = window[1];
+    svg = report::render_step_svg(report, files.svg_step, view, files.json);
   }
   std::string html;
   if (render_html) {
