@@ -74,6 +74,12 @@ std::optional<CheckedCell> CheckedCell::build(const RobotModel& robot,
                 std::to_string(environment.allowed_contacts.size()) + " in the inputs)");
     return std::nullopt;
   }
+  // Names are informative: the certificate's must be the inputs' (docs/certificate.md#names).
+  ledger.decided();
+  if (header.names != certificate_names(robot, environment)) {
+    ledger.fail("the certificate's link or obstacle names differ from the inputs'");
+    return std::nullopt;
+  }
   cell.environment_ = &environment;
   cell.build_obstacles(environment);
   return cell;
