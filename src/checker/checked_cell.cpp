@@ -75,8 +75,10 @@ std::optional<CheckedCell> CheckedCell::build(const RobotModel& robot,
     return std::nullopt;
   }
   // Names are informative: the certificate's must be the inputs' (docs/certificate.md#names).
-  ledger.decided();
-  if (header.names != certificate_names(robot, environment)) {
+  // Counted as a decision only where there are names (thesis files' counts are unchanged).
+  const CertificateNames input_names = certificate_names(robot, environment);
+  if (!header.names.empty() || !input_names.empty()) ledger.decided();
+  if (header.names != input_names) {
     ledger.fail("the certificate's link or obstacle names differ from the inputs'");
     return std::nullopt;
   }
