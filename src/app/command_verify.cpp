@@ -115,7 +115,8 @@ int run_verify(const VerifyArguments& args) {
   std::optional<report::JsonReportStream> json_report;
   std::optional<report::CertificateStream> certificate;
   if (!args.out.empty()) {
-    thesis_output.emplace(args.out, args.force, report::joint_types_of(robot));
+    thesis_output.emplace(args.out, args.force, report::joint_types_of(robot),
+                          report::ThesisNames::of(robot, environment));
     hooks.observers.push_back(&*thesis_output);
   }
   if (!args.json.empty() || !args.html.empty()) {

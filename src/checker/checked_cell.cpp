@@ -74,6 +74,14 @@ std::optional<CheckedCell> CheckedCell::build(const RobotModel& robot,
                 std::to_string(environment.allowed_contacts.size()) + " in the inputs)");
     return std::nullopt;
   }
+  // Names are informative: the certificate's must be the inputs' (docs/certificate.md#names).
+  // Counted as a decision only where there are names (thesis files' counts are unchanged).
+  const CertificateNames input_names = certificate_names(robot, environment);
+  if (!header.names.empty() || !input_names.empty()) ledger.decided();
+  if (header.names != input_names) {
+    ledger.fail("the certificate's link or obstacle names differ from the inputs'");
+    return std::nullopt;
+  }
   cell.environment_ = &environment;
   cell.build_obstacles(environment);
   return cell;

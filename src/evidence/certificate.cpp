@@ -168,6 +168,7 @@ json certificate_to_json(const Certificate& certificate) {
     }
     document["allowed_contacts"] = allowed;
   }
+  if (!certificate.names.empty()) document["names"] = certificate_names_to_json(certificate.names);
   json errors = json::array();
   for (const PathError& error : certificate.errors) {
     errors.push_back({{"code", error.code}, {"segment", error.segment}, {"step", error.step},
@@ -226,6 +227,9 @@ Certificate certificate_header_from_json(const json& document, const std::string
                                               field<int>(pair, "hull", where, file),
                                               field<int>(pair, "obstacle", where, file)});
     }
+  }
+  if (document.contains("names")) {
+    certificate.names = certificate_names_from_json(document.at("names"), file);
   }
   certificate.inputs = input_names(document, file);
   // Present; its elements are read one by one (segment_certificate_from_json).

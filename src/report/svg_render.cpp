@@ -70,20 +70,79 @@ class Projector {
   Eigen::Vector3d shift_W_;
 };
 
-/// All edges of one polytope as one SVG path.
+/// The element's name when the report gives one (cells), else "" (thesis reports unchanged).
+std::string name_of(const json& element) {
+  return element.contains("name") ? element.at("name").get<std::string>() : std::string();
+}
+
+/// `<title>` (the browser's hover tooltip) for a named element; "" when `text` is empty.
+std::string title(const std::string& text) {
+  return text.empty() ? std::string() : "<title>" + markup_escape(text) + "</title>";
+}
+
+/// "name (link 3), hull 1" (with the hull's own name after it when it differs) / "name
+/// (obstacle 7)" for a named element, "" without a name.
+std::string link_title(const json& link, const json& hull) {
+  const std::string name = name_of(link);
+  if (name.empty()) return "";
+  const std::string hull_name = name_of(hull);
+  return fmt::format("{} (link {}), hull {}{}", name, link.at("link").get<int>(),
+                     hull.at("hull").get<int>(),
+                     hull_name.empty() || hull_name == name ? "" : " (" + hull_name + ")");
+}
+
+std::string obstacle_title(const json& obstacle) {
+  const std::string name = name_of(obstacle);
+  if (name.empty()) return "";
+  return fmt::format("{} (obstacle {})", name, obstacle.at("obstacle").get<int>());
+}
+
+/// True when some link or obstacle of the scene has a name (a cell's report).
+bool has_names(const json& scene) {
+  for (const json& link : scene.at("links")) {
+    if (link.contains("name")) return true;
+  }
+  for (const json& obstacle : scene.at("obstacles")) {
+    if (obstacle.contains("name")) return true;
+  }
+  return false;
+}
+
+/// "link_4 hull 0 / post" for an interference point when the report has names, else "".
+std::string point_title(const json& scene, const json& point) {
+  if (!has_names(scene)) return "";
+  const json& link = scene.at("links").at(point.at("link").get<std::size_t>());
+  const json& obstacle = scene.at("obstacles").at(point.at("obstacle").get<std::size_t>());
+  if (name_of(link).empty() && name_of(obstacle).empty()) return "";
+  const auto or_index = [](const std::string& name, const char* what, int index) {
+    return name.empty() ? fmt::format("{} {}", what, index) : name;
+  };
+  return fmt::format("{} hull {} / {}", or_index(name_of(link), "link", link.at("link").get<int>()),
+                     point.at("hull").get<int>(),
+                     or_index(name_of(obstacle), "obstacle", obstacle.at("obstacle").get<int>()));
+}
+
+/// An SVG element, with its title as a child when it has one.
+std::string element(const std::string& open, const std::string& title_text) {
+  if (title_text.empty()) return open + "/>\n";
+  return open + ">" + title(title_text) + "</" + open.substr(1, open.find(' ') - 1) + ">\n";
+}
+
+/// All edges of one polytope as one SVG path (titled with its name when it has one).
 std::string edge_path(const std::vector<Eigen::Vector3d>& vertices_W, const json& edges,
-                      const Projector& project, const char* css_class) {
+                      const Projector& project, const char* css_class,
+                      const std::string& title_text) {
   std::string d;
   for (const json& edge : edges) {
     const Eigen::Vector2d a = project(vertices_W.at(edge.at(0).get<std::size_t>()));
     const Eigen::Vector2d b = project(vertices_W.at(edge.at(1).get<std::size_t>()));
     d += fmt::format("M{} {}L{} {}", number(a.x()), number(a.y()), number(b.x()), number(b.y()));
   }
-  return fmt::format("<path class=\"{}\" d=\"{}\"/>\n", css_class, d);
+  return element(fmt::format("<path class=\"{}\" d=\"{}\"", css_class, d), title_text);
 }
 
 /// A five-pointed star centred on c (outer radius 7 px).
-std::string star(const Eigen::Vector2d& c) {
+std::string star(const Eigen::Vector2d& c, const std::string& title_text) {
   std::string points;
   for (int k = 0; k < 10; ++k) {
     const double radius = k % 2 == 0 ? 7.0 : 2.8;
@@ -91,35 +150,54 @@ std::string star(const Eigen::Vector2d& c) {
     if (k > 0) points += ' ';
     points += number(c.x() + radius * std::cos(angle)) + "," + number(c.y() + radius * std::sin(angle));
   }
-  return fmt::format("<polygon class=\"star\" points=\"{}\"/>\n", points);
+  return element(fmt::format("<polygon class=\"star\" points=\"{}\"", points), title_text);
 }
 
-std::string render(const json& report, int step_index, const SvgView& view) {
+/// The step drawn: a record of `steps` with its scene poses, or step 0, the start
+/// configuration (the scene's `start` poses; the report has no interference points there).
+struct StepView {
+  json step;
+  json X_WL;
+};
+
+StepView step_view(const json& report, int step_index) {
   const json& scene = report.at("scene");
+  if (step_index == 0 && scene.contains("start") && !scene.at("start").is_null()) {
+    return {{{"path_time", 0.0}, {"segment", 0}, {"interference_points", json::array()}},
+            scene.at("start").at("X_WL")};
+  }
   const json& steps = report.at("steps");
   std::size_t k = 0;
   while (k < steps.size() && steps.at(k).at("index").get<int>() != step_index) ++k;
   if (k == steps.size()) {
     throw std::out_of_range(fmt::format("step {} is not in the report", step_index));
   }
-  const json& step = steps.at(k);
-  const json& poses = scene.at("steps").at(k).at("X_WL");
+  return {steps.at(k), scene.at("steps").at(k).at("X_WL")};
+}
+
+std::string render(const json& report, int step_index, const SvgView& view) {
+  const json& scene = report.at("scene");
+  const StepView shown = step_view(report, step_index);
+  const json& step = shown.step;
+  const json& poses = shown.X_WL;
   const Projector project(view);
   std::string body;
   for (const json& obstacle : scene.at("obstacles")) {
     std::vector<Eigen::Vector3d> vertices_W;
     for (const json& v : obstacle.at("vertices_W")) vertices_W.push_back(point3(v));
-    body += edge_path(vertices_W, obstacle.at("edges"), project, "obstacle");
+    body += edge_path(vertices_W, obstacle.at("edges"), project, "obstacle", obstacle_title(obstacle));
   }
   for (const json& link : scene.at("links")) {
     const Eigen::Isometry3d X_WL = pose(poses.at(link.at("link").get<std::size_t>()));
     for (const json& hull : link.at("hulls")) {
       std::vector<Eigen::Vector3d> vertices_W;
       for (const json& v : hull.at("vertices_L")) vertices_W.push_back(X_WL * point3(v));
-      body += edge_path(vertices_W, hull.at("edges"), project, "link");
+      body += edge_path(vertices_W, hull.at("edges"), project, "link", link_title(link, hull));
     }
   }
-  for (const json& point : step.at("interference_points")) body += star(project(point3(point.at("point"))));
+  for (const json& point : step.at("interference_points")) {
+    body += star(project(point3(point.at("point"))), point_title(scene, point));
+  }
 
   const int size = view.pixels;
   const int caption = 54;

@@ -36,17 +36,45 @@ std::vector<double> in_file_units(const Eigen::VectorXd& q, const std::vector<Jo
   return joint_values_in_file_units(q, types);
 }
 
+/// "link_4 hull 0 / post": the pair of an interference point, from the run's labels.
+std::string pair_label(const ThesisNames& names, const certify::InterferencePoint& point) {
+  const auto label = [](const std::vector<std::string>& labels, int index, const char* what) {
+    const auto i = static_cast<std::size_t>(index);
+    return index >= 0 && i < labels.size() ? labels[i] : fmt::format("{} {}", what, index);
+  };
+  return fmt::format("{} hull {} / {}", label(names.links, point.link, "link"), point.hull,
+                     label(names.obstacles, point.obstacle, "obstacle"));
+}
+
 }  // namespace
 
+ThesisNames ThesisNames::of(const RobotModel& robot, const Environment& environment) {
+  ThesisNames names;
+  const bool named_link = std::any_of(robot.links.begin(), robot.links.end(),
+                                      [](const Link& link) { return !link.name.empty(); });
+  if (!named_link && !environment.has_names()) return names;
+  for (std::size_t i = 0; i < robot.links.size(); ++i) {
+    names.links.push_back(link_label(robot, static_cast<int>(i)));
+  }
+  for (std::size_t o = 0; o < environment.obstacles.size(); ++o) {
+    names.obstacles.push_back(obstacle_label(environment, static_cast<int>(o)));
+  }
+  return names;
+}
+
 std::string thesis_step_block(const certify::StepRecord& step,
-                              const std::vector<JointType>& joint_types) {
+                              const std::vector<JointType>& joint_types,
+                              const ThesisNames& names) {
   std::string out = fmt::format("IN {}TH STEP, THE JOINT VALUES ARE\n", step.index);
   out += joined(in_file_units(step.q, joint_types), " ") + "\n\n";
   out += fmt::format("THERE ARE {} INTERFERENCE POINTS IN THIS STEP\n\n",
                      step.interference_points.size());
   if (step.interference_points.empty()) return out;
   for (const certify::InterferencePoint& point : step.interference_points) {
-    out += joined({point.p_W.x(), point.p_W.y(), point.p_W.z()}, "\t") + "\n";
+    out += joined({point.p_W.x(), point.p_W.y(), point.p_W.z()}, "\t");
+    // Only a cell's run names the pair: thesis files keep A.3's three numbers.
+    if (!names.empty()) out += "\t" + pair_label(names, point);
+    out += "\n";
   }
   out += "\n";
   return out;
@@ -186,14 +214,15 @@ int total_steps(const certify::VerificationResult& result) {
 }
 
 std::string render_thesis_output(const certify::VerificationResult& result,
-                                 const std::vector<JointType>& joint_types) {
+                                 const std::vector<JointType>& joint_types,
+                                 const ThesisNames& names) {
   std::string out;
   ThesisWriter writer(result, joint_types, [&out](const std::string& text) { out += text; });
   std::size_t steps_written = 0;
   const auto steps_of = [&](int segment) {
     for (const certify::StepRecord& step : result.steps) {
       if (step.segment != segment) continue;
-      out += thesis_step_block(step, joint_types);
+      out += thesis_step_block(step, joint_types, names);
       ++steps_written;
     }
   };
@@ -205,9 +234,9 @@ std::string render_thesis_output(const certify::VerificationResult& result,
 }
 
 ThesisOutputStream::ThesisOutputStream(std::string path, bool force,
-                                       std::vector<JointType> joint_types)
+                                       std::vector<JointType> joint_types, ThesisNames names)
     : path_(std::move(path)), force_(force), joint_types_(std::move(joint_types)),
-      steps_(path_) {}
+      names_(std::move(names)), steps_(path_) {}
 
 ThesisOutputStream::~ThesisOutputStream() = default;
 
@@ -222,7 +251,7 @@ void ThesisOutputStream::on_step(const certify::StepRecord& step) {
     }
     ranges_.push_back({step.segment, steps_.size(), steps_.size()});
   }
-  steps_.append(thesis_step_block(step, joint_types_));
+  steps_.append(thesis_step_block(step, joint_types_, names_));
   ranges_.back().end = steps_.size();
 }
 

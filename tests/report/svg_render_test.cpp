@@ -93,6 +93,52 @@ TEST(SvgRender, ProjectionFollowsTheThesisAngleConvention) {
             std::string::npos);
 }
 
+const std::string kNamedGolden = std::string(GRPVSS_SOURCE_DIR) + "/tests/report/golden/svg_named.svg";
+
+/// small_report() as a cell's report: the link, its hull and the obstacle named (a name that
+/// needs escaping), indices as the verifier writes them, and a start configuration (step 0).
+json named_report() {
+  json report = small_report();
+  json& scene = report["scene"];
+  scene["links"][0]["name"] = "arm<1>";
+  scene["links"][0]["hulls"][0]["hull"] = 0;
+  scene["links"][0]["hulls"][0]["name"] = "arm<1>";
+  scene["obstacles"][0]["obstacle"] = 0;
+  scene["obstacles"][0]["name"] = "post & beam";
+  report["steps"][1]["interference_points"][0]["link"] = 0;
+  report["steps"][1]["interference_points"][0]["hull"] = 0;
+  report["steps"][1]["interference_points"][0]["obstacle"] = 0;
+  json start = identity_pose();
+  start[7] = -30;  // y shifted by -30 at the start
+  scene["start"] = {{"step", 0}, {"X_WL", {start}}};
+  return report;
+}
+
+TEST(SvgRender, NamedLinksObstaclesAndStarsCarryTitlesAndMatchTheGoldenFile) {
+  const std::string svg = render_step_svg(named_report(), 2, SvgView{}, "named.json");
+  EXPECT_EQ(svg, test::read_text_file(kNamedGolden));
+  // <title> children give the browser's hover tooltip: name, index, hull.
+  EXPECT_EQ(count(svg, "<title>arm&lt;1&gt; \\(link 0\\), hull 0</title></path>"), 1);
+  EXPECT_EQ(count(svg, "<title>post &amp; beam \\(obstacle 0\\)</title></path>"), 1);
+  EXPECT_EQ(count(svg, "<title>arm&lt;1&gt; hull 0 / post &amp; beam</title></polygon>"), 1);
+  EXPECT_EQ(count(svg, "<title>"), 3);
+  // Without names (thesis reports) no element has a title: the golden file above stays.
+  EXPECT_EQ(count(render_step_svg(small_report(), 2, SvgView{}, "r"), "<title>"), 0);
+}
+
+TEST(SvgRender, StepZeroIsTheStartConfigurationWhenTheSceneHasOne) {
+  SvgView front;
+  front.angle_x_deg = front.angle_z_deg = 0.0;
+  const std::string start = render_step_svg(named_report(), 0, front, "named.json");
+  // The cube's corner (0, 0, 0) moved to (0, -30, 0): pixel (6 * 50, 6 * (50 + 30)) = (300, 480).
+  EXPECT_NE(start.find("M300.00 480.00L360.00 480.00"), std::string::npos) << start;
+  EXPECT_NE(start.find("step 0 - t = 0.000 s - segment 0 - interference points: 0"),
+            std::string::npos);
+  EXPECT_EQ(count(start, "<polygon class=\"star\""), 0);
+  // A report without a start has no step 0.
+  EXPECT_THROW(render_step_svg(small_report(), 0, front, "r.json"), InputError);
+}
+
 TEST(SvgRender, BadStepsViewsAndReportsAreInputErrors) {
   EXPECT_THROW(render_step_svg(small_report(), 3, SvgView{}, "r.json"), InputError);
   SvgView window;

@@ -1,5 +1,6 @@
 #include "grpvss/report/thesis_output.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <stdexcept>
@@ -173,6 +174,53 @@ TEST(ThesisOutput, ErrorWithoutSegmentPrecedesTheTotals) {
                                             "CHECK THE USER GUIDE FOR DETAILED ERROR DESCRIPTIONS",
                                             "", "TOTAL 1 STEPS IN THIS PATH",
                                             "NO COLLISION DETECTED IN THIS PATH"}));
+}
+
+/// one_step_result() with two interference points: link 1 hull 0 and link 1 hull 1 against
+/// obstacle hull 1 (the second piece of a two-piece shape).
+certify::VerificationResult result_with_points() {
+  auto result = one_step_result();
+  certify::InterferencePoint a;
+  a.link = 1;
+  a.hull = 0;
+  a.obstacle = 1;
+  a.p_W = Eigen::Vector3d(1.0, 2.0, 3.0);
+  certify::InterferencePoint b = a;
+  b.hull = 1;
+  b.p_W = Eigen::Vector3d(-0.001, 0.5, 0.25);
+  result.steps[0].interference_points = {a, b};
+  return result;
+}
+
+TEST(ThesisOutput, ACellRunNamesEachInterferencePointsPairAfterItsNumbers) {
+  RobotModel robot;
+  robot.links.resize(2);
+  robot.links[1].name = "forearm<1>";
+  Environment environment;
+  environment.obstacles.resize(2);
+  environment.names = {"fixture", "fixture"};
+  const ThesisNames names = ThesisNames::of(robot, environment);
+  EXPECT_EQ(names.links, (std::vector<std::string>{"link 0", "forearm<1>"}));
+  EXPECT_EQ(names.obstacles, (std::vector<std::string>{"fixture piece 0", "fixture piece 1"}));
+  const auto lines =
+      test::split_lines(render_thesis_output(result_with_points(), kRevolutePrismatic, names));
+  const auto count = std::find(lines.begin(), lines.end(), "THERE ARE 2 INTERFERENCE POINTS IN THIS STEP");
+  ASSERT_NE(count, lines.end());
+  // A tab and the pair after the three numbers; the file is plain text, nothing escaped.
+  EXPECT_EQ(*(count + 2), "1.00\t2.00\t3.00\tforearm<1> hull 0 / fixture piece 1");
+  EXPECT_EQ(*(count + 3), "0.00\t0.50\t0.25\tforearm<1> hull 1 / fixture piece 1");
+}
+
+TEST(ThesisOutput, WithoutNamesThePointLinesKeepTheThesisThreeNumbers) {
+  RobotModel robot;
+  robot.links.resize(2);
+  Environment environment;
+  environment.obstacles.resize(2);
+  EXPECT_TRUE(ThesisNames::of(robot, environment).empty());
+  const std::string with_empty_names = render_thesis_output(
+      result_with_points(), kRevolutePrismatic, ThesisNames::of(robot, environment));
+  EXPECT_EQ(with_empty_names, render_thesis_output(result_with_points(), kRevolutePrismatic));
+  EXPECT_NE(with_empty_names.find("\n1.00\t2.00\t3.00\n"), std::string::npos);
 }
 
 TEST(ThesisOutput, InconsistentResultsAreLogicErrors) {

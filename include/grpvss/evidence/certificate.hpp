@@ -13,6 +13,7 @@
 #include <Eigen/Core>
 #include <nlohmann/json_fwd.hpp>
 
+#include "grpvss/evidence/certificate_names.hpp"
 #include "grpvss/evidence/verification_result.hpp"
 #include "grpvss/geometry/offset_shape.hpp"
 #include "grpvss/geometry/separation_witness.hpp"
@@ -81,6 +82,9 @@ struct Certificate {
   /// checker rejects a certificate whose list differs from the inputs'. Written only when
   /// non-empty (thesis certificates are unchanged).
   std::vector<AllowedContactPair> allowed_contacts;
+  /// The inputs' link and obstacle names (docs/certificate.md#names): informative, re-derived
+  /// and compared by the checker. Written only when non-empty.
+  CertificateNames names;
   std::vector<SegmentCertificate> segments;
   std::vector<PathError> errors;
   /// What the certificate was made from (the file's "inputs": SHA-256 digests of the robot,

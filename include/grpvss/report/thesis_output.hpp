@@ -16,26 +16,41 @@
 
 #include "grpvss/evidence/verification_observer.hpp"
 #include "grpvss/evidence/verification_result.hpp"
+#include "grpvss/model/environment.hpp"
 #include "grpvss/model/robot_model.hpp"
 #include "grpvss/report/spill_file.hpp"
 
 namespace grpvss::report {
+
+/// \brief The labels an interference-point line names its pair with (docs/thesis-output.md#names):
+/// empty for thesis files (A.3 has no room for them), else one label per link (link_label())
+/// and per obstacle hull (obstacle_label()).
+struct ThesisNames {
+  std::vector<std::string> links;
+  std::vector<std::string> obstacles;
+  bool empty() const { return links.empty() && obstacles.empty(); }
+  /// Empty when neither `robot`'s links nor `environment`'s obstacles have names.
+  static ThesisNames of(const RobotModel& robot, const Environment& environment);
+};
 
 /// \brief Renders `result` in the A.3 layout; `joint_types[i]` is the type of joint i+1
 /// (revolute values and speeds are printed in degrees).
 /// \throws std::logic_error if the result is inconsistent (a joint vector of the wrong size,
 ///         a step whose segment has no record, steps out of order).
 std::string render_thesis_output(const certify::VerificationResult& result,
-                                 const std::vector<JointType>& joint_types);
+                                 const std::vector<JointType>& joint_types,
+                                 const ThesisNames& names = {});
 
 /// Same, with the joint types taken from `robot`.
 std::string render_thesis_output(const certify::VerificationResult& result,
                                  const RobotModel& robot);
 
 /// One step's block: `IN nTH STEP, THE JOINT VALUES ARE`, the values, the interference count
-/// and the points, with their blank lines.
+/// and the points, with their blank lines; with `names`, each point line ends with a tab and
+/// its pair (`link_4 hull 0 / post`).
 std::string thesis_step_block(const certify::StepRecord& step,
-                              const std::vector<JointType>& joint_types);
+                              const std::vector<JointType>& joint_types,
+                              const ThesisNames& names = {});
 
 /// \brief The thesis output file written while the verification runs, memory independent of
 /// the number of steps (docs/reliability.md#resource-bounds): each step's block goes to a
@@ -45,7 +60,8 @@ std::string thesis_step_block(const certify::StepRecord& step,
 class ThesisOutputStream : public certify::VerificationObserver {
  public:
   /// \throws InputError when no scratch file can be created next to `path`.
-  ThesisOutputStream(std::string path, bool force, std::vector<JointType> joint_types);
+  ThesisOutputStream(std::string path, bool force, std::vector<JointType> joint_types,
+                     ThesisNames names = {});
   ~ThesisOutputStream() override;
 
   /// \throws std::logic_error if the indices do not increase or a segment's steps are split.
@@ -65,6 +81,7 @@ class ThesisOutputStream : public certify::VerificationObserver {
   std::string path_;
   bool force_;
   std::vector<JointType> joint_types_;
+  ThesisNames names_;
   SpillFile steps_;
   std::vector<SegmentRange> ranges_;  ///< one per segment with steps, in path order
   int last_index_ = 0;

@@ -5,11 +5,35 @@ import * as THREE from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { buildScene, setPose, starTexture, COLORS } from './scene_builder.js';
 import { drawTimeline, drawClearancePlot, stepClass, LINK_COLORS } from './plots.js';
+import { makeNames } from './names.js';
 
 const report = JSON.parse(document.getElementById('grpvss-report').textContent);
 const $ = (id) => document.getElementById(id);
-const steps = report.steps;
 const scene = report.scene;
+const names = makeNames(scene);
+// Links with hulls (link 0, the base, too when it has hulls in the world): the clearance lists.
+const checkedLinks = scene.links.filter((l) => l.hulls.length > 0).map((l) => l.link);
+
+// The start configuration (step 0) has no record in report.steps; it is drawn from the scene's
+// start poses. Its joint values are the first segment's start, its clearances the ones
+// link_clearances reports at step 0 (others are not in the report: null), its status that of
+// the interference episodes beginning there. Interference points at step 0 are not in the report.
+function startStep() {
+  const first = report.segments.find((s) => s.start_joint_values !== null);
+  const atStart = report.interference_episodes.filter((e) => e.first_step === 0);
+  const links = scene.links.map((l) => {
+    const c = report.link_clearances.find((r) => r.link === l.link && r.step === 0);
+    return { link: l.link, clearance: c ? c.min_clearance : null };
+  });
+  return {
+    index: 0, segment: 0, path_time: 0, start: true, refinement: false,
+    joint_values: first ? first.start_joint_values : [], links, interference_points: [], contacts: [],
+    expanded_interferes: atStart.length > 0, unexpanded_collides: atStart.some((e) => e.first_collision_step === 0),
+  };
+}
+const hasStart = Boolean(scene.start) && report.steps.length > 0;
+const steps = hasStart ? [startStep(), ...report.steps] : report.steps;
+const stepPoses = hasStart ? [scene.start.X_WL, ...scene.steps.map((s) => s.X_WL)] : scene.steps.map((s) => s.X_WL);
 
 function fmt(value, digits = 3) {
   return value === null || value === undefined ? '—' : Number(value).toFixed(digits);
@@ -62,7 +86,7 @@ world.add(stars);
 const bounds = new THREE.Box3();
 function frameCamera() {
   bounds.makeEmpty();
-  for (let s = 0; s < scene.steps.length; s += Math.max(1, Math.floor(scene.steps.length / 40))) {
+  for (let s = 0; s < stepPoses.length; s += Math.max(1, Math.floor(stepPoses.length / 40))) {
     applyPoses(s);
     built.root.updateMatrixWorld(true);
     bounds.expandByObject(built.root);
@@ -114,7 +138,7 @@ const state = {
 };
 
 function applyPoses(index) {
-  const poses = scene.steps[index]?.X_WL ?? scene.start?.X_WL;
+  const poses = stepPoses[index] ?? scene.start?.X_WL;
   if (!poses) return;
   built.links.forEach((group, link) => setPose(group, poses[link]));
 }
@@ -162,7 +186,7 @@ function showStep(index) {
   stars.visible = positions.length > 0;
 
   const units = report.robot.joint_types.map((t) => (t === 'revolute' ? '°' : ''));
-  const poses = scene.steps[state.step].X_WL;
+  const poses = stepPoses[state.step];
   const ee = poses[poses.length - 1];
   const orientation = endEffectorOrientation(ee);
   const kind = stepClass(step);
@@ -172,7 +196,7 @@ function showStep(index) {
     <table>
       <tr><th>Step</th><td id="step-number">${step.index}</td><th>of</th><td>${steps[steps.length - 1].index}</td></tr>
       <tr><th>Time</th><td colspan="3">${fmt(step.path_time, 3)} s</td></tr>
-      <tr><th>Segment</th><td colspan="3">${step.segment} (${escapeHtml(segmentKind(step.segment))})${step.refinement ? ' refined' : ''}</td></tr>
+      <tr><th>Segment</th><td colspan="3">${step.start ? 'start configuration' : `${step.segment} (${escapeHtml(segmentKind(step.segment))})${step.refinement ? ' refined' : ''}`}</td></tr>
       <tr><th>Status</th><td colspan="3">${status}</td></tr>
       <tr><th>Interference points</th><td colspan="3" id="interference-count">${step.interference_points.length}</td></tr>
     </table>
@@ -186,7 +210,8 @@ function showStep(index) {
       <tr><th>approach (z)</th><td>${orientation.approach.map((v) => fmt(v, 3)).join(', ')}</td></tr>
     </table>
     <h3>Link clearance</h3>
-    <table>${step.links.filter((l) => l.link > 0).map((l) => `<tr><th><span class="swatch" style="background:${LINK_COLORS[l.link % LINK_COLORS.length]}"></span>link ${l.link}</th><td>${fmtLowerBound(l.clearance, 4)}</td></tr>`).join('')}</table>`;
+    <table id="step-clearances">${step.links.filter((l) => checkedLinks.includes(l.link)).map((l) => `<tr data-link="${l.link}"><th><span class="swatch" style="background:${LINK_COLORS[l.link % LINK_COLORS.length]}"></span>${escapeHtml(names.link(l.link))}</th><td>${fmtLowerBound(l.clearance, 4)}</td></tr>`).join('')}</table>
+    ${step.start ? '<p class="small">Step 0: the start configuration; the report holds its clearances only where a link\'s smallest clearance is there.</p>' : ''}`;
   $('timeline-range').value = String(state.step);
   redraw2d();
   render();
@@ -194,7 +219,7 @@ function showStep(index) {
 
 function redraw2d() {
   drawTimeline($('timeline'), steps, state.step);
-  drawClearancePlot($('clearance'), steps, state.step, report.robot.joint_count + 1);
+  drawClearancePlot($('clearance'), steps, state.step, checkedLinks, (link) => names.linkShort(link));
 }
 
 function render() {
@@ -254,8 +279,8 @@ function stop() {
 function auditPanel() {
   const verdictClass = report.verdict === 'CLEAR' ? 'ok' : report.verdict === 'WITHIN_TOLERANCE' ? 'warn' : 'bad';
   const inputs = ['robot', 'environment', 'path'].map((k) => `<tr><th>${k}</th><td>${escapeHtml(report.inputs[k].file)}<br><code>${report.inputs[k].sha256}</code></td></tr>`).join('');
-  const clearances = report.link_clearances.filter((c) => c.link > 0)
-    .map((c) => `<tr><th>link ${c.link}</th><td>${fmtLowerBound(c.min_clearance, 4)} at step ${c.step}${c.min_motion_clearance === null
+  const clearances = report.link_clearances.filter((c) => checkedLinks.includes(c.link))
+    .map((c) => `<tr data-link="${c.link}"><th>${escapeHtml(names.link(c.link))}</th><td>${fmtLowerBound(c.min_clearance, 4)} at step ${c.step}${c.obstacle === null ? '' : ` from ${escapeHtml(names.obstacle(c.obstacle))}`}${c.min_motion_clearance === null
       ? '' : `; along the motion &gt; ${fmtLowerBound(c.min_motion_clearance, 4)} (steps ${c.motion_step - 1}–${c.motion_step})`}</td></tr>`).join('');
   const errors = report.errors.map((e) => `<li>error ${e.code} (segment ${e.segment}, step ${e.step}): ${escapeHtml(e.message)}</li>`).join('');
   // One row per interference episode; its button shows the first colliding step (else the first
@@ -265,7 +290,7 @@ function auditPanel() {
   const episodes = report.interference_episodes.map((e) => {
     const collides = e.first_collision_step !== null;
     const target = collides ? e.first_collision_step : e.first_step;
-    return `<tr class="episode"><th><button class="episode-go" data-step="${target}" title="show step ${target}">link ${e.link} hull ${e.hull} / obstacle ${e.obstacle}</button></th>
+    return `<tr class="episode"><th><button class="episode-go" data-step="${target}" title="show step ${target}">${escapeHtml(names.pair(e.link, e.hull, e.obstacle))}</button></th>
       <td>${range(e.first_step, e.last_step)} (${fmt(e.first_time, 2)}–${fmt(e.last_time, 2)} s${e.cleared_time === null
         ? '' : `, <span class="cleared">clear by ${fmt(e.cleared_time, 2)} s</span>`})<br>${collides
         ? `<span class="bad">collides ${range(e.first_collision_step, e.last_collision_step)}</span>`
@@ -295,8 +320,7 @@ function auditPanel() {
     <p class="small">${escapeHtml(report.program.name)} ${escapeHtml(report.program.version)}, report ${escapeHtml(report.schema)}, generated ${escapeHtml(report.generated_at)}</p>`;
 }
 
-// The episode buttons jump to their step (the start configuration, step 0, is not animated: the
-// first step stands for it).
+// The episode buttons jump to their step (step 0 is the start configuration).
 function wireEpisodeButtons() {
   for (const button of document.querySelectorAll('#episodes button.episode-go')) {
     button.addEventListener('click', () => {
@@ -307,6 +331,53 @@ function wireEpisodeButtons() {
     });
   }
 }
+
+// ---- hover: the name of the link hull or obstacle under the pointer ------------------------
+const raycaster = new THREE.Raycaster();
+const pickable = [...built.linkFills, ...built.obstacleFills]; // picked even when drawn as wireframe
+function pickAt(clientX, clientY) {
+  const rect = renderer.domElement.getBoundingClientRect();
+  const ndc = new THREE.Vector2(((clientX - rect.left) / rect.width) * 2 - 1,
+    -((clientY - rect.top) / rect.height) * 2 + 1);
+  raycaster.setFromCamera(ndc, camera);
+  built.root.updateMatrixWorld(true);
+  const hit = raycaster.intersectObjects(pickable, false)[0];
+  return hit ? hit.object.userData : null;
+}
+function showHover(event) {
+  const label = $('hover-label');
+  const data = pickAt(event.clientX, event.clientY);
+  if (!data) { label.hidden = true; return; }
+  const rect = container.getBoundingClientRect();
+  label.textContent = names.hover(data);
+  label.style.left = `${event.clientX - rect.left + 14}px`;
+  label.style.top = `${event.clientY - rect.top + 12}px`;
+  label.hidden = false;
+}
+const sameTarget = (data, target) => (target.obstacle !== undefined
+  ? data.kind === 'obstacle' && data.obstacle === target.obstacle
+  : data.kind === 'link' && data.link === target.link && data.hull === target.hull);
+function visiblePointOf(target) {
+  const object = pickable.find((o) => sameTarget(o.userData, target));
+  if (!object) return null;
+  built.root.updateMatrixWorld(true);
+  const positions = object.geometry.getAttribute('position');
+  const rect = renderer.domElement.getBoundingClientRect();
+  // Candidates: each triangle's centroid, in the world, projected to the page.
+  for (let i = 0; i + 2 < positions.count; i += 3) {
+    const p = new THREE.Vector3();
+    for (let k = 0; k < 3; ++k) p.add(new THREE.Vector3().fromBufferAttribute(positions, i + k));
+    p.divideScalar(3).applyMatrix4(object.matrixWorld).project(camera);
+    if (Math.abs(p.x) > 0.98 || Math.abs(p.y) > 0.98) continue;
+    const x = rect.left + ((p.x + 1) / 2) * rect.width;
+    const y = rect.top + ((1 - p.y) / 2) * rect.height;
+    const data = pickAt(x, y);
+    if (data && sameTarget(data, target)) return { x, y };
+  }
+  return null;
+}
+renderer.domElement.addEventListener('pointermove', showHover);
+renderer.domElement.addEventListener('pointerleave', () => { $('hover-label').hidden = true; });
 
 // ---- wiring --------------------------------------------------------------------------------
 $('title').textContent = `GRPVSS — ${report.robot.name} — ${report.path_file_label}`;
@@ -341,7 +412,10 @@ auditPanel();
 wireEpisodeButtons();
 applyDisplay();
 resize();
-showStep(0);
+// The first view: the first colliding step when the run has one, else the first step (step 0).
+const collisionPosition = report.collision_step === null ? -1 : steps.findIndex((s) => s.index === report.collision_step);
+const openingPosition = collisionPosition >= 0 ? collisionPosition : 0;
+showStep(openingPosition);
 
 // Read-only inspection API for tests and curious users: counts and the current step's state.
 window.grpvssViewer = Object.freeze({
@@ -349,8 +423,13 @@ window.grpvssViewer = Object.freeze({
     linkHulls: built.hullCount,
     obstacles: built.obstacleFills.length,
     links: built.links.length,
-    steps: steps.length,
+    steps: report.steps.length,
+    frames: steps.length, // report.steps plus the start configuration (step 0) when drawn
   }),
+  openingStep: steps[openingPosition]?.index ?? null,
+  /// Page coordinates of a point where `target` ({link, hull} or {obstacle}) is the nearest
+  /// object under the pointer at the current step and camera, or null when none is visible.
+  visiblePointOf(target) { return visiblePointOf(target); },
   state() {
     const step = steps[state.step];
     return {
@@ -366,6 +445,7 @@ window.grpvssViewer = Object.freeze({
       interferenceCountShown: Number($('interference-count')?.textContent ?? NaN),
       verdictShown: $('verdict')?.textContent ?? null,
       episodesShown: document.querySelectorAll('#episodes tr.episode').length,
+      hoverShown: $('hover-label').hidden ? null : $('hover-label').textContent,
     };
   },
 });

@@ -41,7 +41,8 @@ export function drawTimeline(canvas, steps, current) {
   g.fillRect(x(current) - 1, 0, 2, height);
 }
 
-export function drawClearancePlot(canvas, steps, current, linkCount) {
+/// `links`: the link numbers to draw (those with hulls); `labelOf(link)`: the legend's text.
+export function drawClearancePlot(canvas, steps, current, links, labelOf) {
   const { g, width, height } = sizeCanvas(canvas);
   g.clearRect(0, 0, width, height);
   g.fillStyle = '#ffffff';
@@ -54,7 +55,7 @@ export function drawClearancePlot(canvas, steps, current, linkCount) {
   let maxClearance = 0;
   for (const step of steps) {
     for (const link of step.links) {
-      if (link.clearance !== null && link.link > 0) maxClearance = Math.max(maxClearance, link.clearance);
+      if (link.clearance != null && links.includes(link.link)) maxClearance = Math.max(maxClearance, link.clearance);
     }
   }
   maxClearance = maxClearance > 0 ? maxClearance * 1.05 : 1;
@@ -74,24 +75,32 @@ export function drawClearancePlot(canvas, steps, current, linkCount) {
   g.fillText(`${t0.toFixed(1)} s`, left, height - 4);
   g.fillText(`${t1.toFixed(1)} s`, left + plotW, height - 4);
   g.fillText('clearance vs time', left + plotW / 2, height - 4);
-  for (let link = 1; link < linkCount; ++link) {
+  for (const link of links) {
     g.strokeStyle = LINK_COLORS[link % LINK_COLORS.length];
     g.lineWidth = 1.5;
     g.beginPath();
     let pen = false;
     for (const step of steps) {
       const record = step.links[link];
-      if (!record || record.clearance === null) { pen = false; continue; }
+      if (!record || record.clearance == null) { pen = false; continue; }
       const X = px(step.path_time), Y = py(record.clearance);
       if (pen) g.lineTo(X, Y); else g.moveTo(X, Y);
       pen = true;
     }
     g.stroke();
   }
+  // Legend: the links' names (or numbers) in rows from the top left of the plot.
   g.textAlign = 'left';
-  for (let link = 1; link < linkCount; ++link) {
+  let legendX = left + 4, legendY = top + 11;
+  for (const link of links) {
+    const text = labelOf(link);
+    const width = g.measureText(text).width;
+    if (legendX + width > left + plotW - 4 && legendX > left + 4) { legendX = left + 4; legendY += 12; }
+    g.fillStyle = 'rgba(255,255,255,0.85)';  // legible over the curves
+    g.fillRect(legendX - 2, legendY - 9, width + 4, 12);
     g.fillStyle = LINK_COLORS[link % LINK_COLORS.length];
-    g.fillText(`link ${link}`, left + plotW - 4 - (linkCount - link) * 40, top + 11);
+    g.fillText(text, legendX, legendY);
+    legendX += width + 8;
   }
   const X = px(steps[current].path_time);
   g.strokeStyle = '#1d3557';

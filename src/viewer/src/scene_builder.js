@@ -76,6 +76,9 @@ export function buildScene(scene) {
         COLORS.expandedWire, COLORS.expandedFill, 0.28,
       );
       grown.fill.visible = grown.wire.visible = false;
+      // What the pointer names on hover (main.js): link, hull and their names when the report has them.
+      raw.fill.userData = { kind: 'link', link: link.link, hull: hull.hull, linkName: link.name ?? null,
+        hullName: hull.name ?? null };
       group.add(raw.fill, raw.wire, grown.fill, grown.wire);
       linkFills.push(raw.fill);
       linkWires.push(raw.wire);
@@ -90,6 +93,7 @@ export function buildScene(scene) {
   for (const obstacle of scene.obstacles) {
     const shape = polytope(obstacle.vertices_W, obstacle.faces, obstacle.edges,
       COLORS.obstacleWire, COLORS.obstacleFill, 0.75);
+    shape.fill.userData = { kind: 'obstacle', obstacle: obstacle.obstacle, name: obstacle.name ?? null };
     root.add(shape.fill, shape.wire);
     obstacleFills.push(shape.fill);
     obstacleWires.push(shape.wire);

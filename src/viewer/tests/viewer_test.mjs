@@ -57,14 +57,19 @@ try {
   check(counts.links === report.robot.joint_count + 1, `one group per link 0..N (${counts.links})`);
 
   let state = await page.evaluate(() => window.grpvssViewer.state());
-  check(state.step === report.steps[0].index, `starts at the first step (${state.step})`);
+  // The first view is the first colliding step (the IBM 7545 run has one).
+  check(report.collision_step !== null && state.step === report.collision_step,
+    `opens at the first collision step ${report.collision_step} (at ${state.step})`);
   check(state.verdictShown === report.verdict, `verdict shown "${state.verdictShown}" equals the report's "${report.verdict}"`);
   const digestsShown = await page.locator('#audit-panel').innerText();
   check(['robot', 'environment', 'path'].every((k) => digestsShown.includes(report.inputs[k].sha256)),
     'audit panel shows the three input SHA-256 digests');
   // Clearances are proven lower bounds: shown rounded down, never above the report's number.
   const auditText = await page.locator('#audit-panel').innerText();
-  for (const c of report.link_clearances.filter((l) => l.link > 0)) {
+  // Every link with hulls is listed, link 0 (the base) included.
+  const linksWithHulls = report.scene.links.filter((l) => l.hulls.length > 0).map((l) => l.link);
+  check(linksWithHulls.includes(0), 'the IBM 7545 base (link 0) has hulls');
+  for (const c of report.link_clearances.filter((l) => linksWithHulls.includes(l.link))) {
     const match = auditText.match(new RegExp(`link ${c.link}\\s+(-?[0-9.]+) at step`));
     const shown = match ? Number(match[1]) : NaN;
     check(shown <= c.min_clearance && c.min_clearance - shown < 1e-4,
@@ -129,6 +134,15 @@ try {
     await page.screenshot({ path: join(artifactDir, 'viewer-wireframe.png') });
     await page.selectOption('#display', 'both');
   }
+
+  // Step 0 (the start configuration) is reachable: |◀ shows it, → and ← step over it.
+  await page.click('#first');
+  state = await page.evaluate(() => window.grpvssViewer.state());
+  check(state.step === 0 && state.stepIndex === 0, `|◀ shows step 0 (at ${state.step})`);
+  await page.keyboard.press('ArrowRight');
+  await page.keyboard.press('ArrowLeft');
+  state = await page.evaluate(() => window.grpvssViewer.state());
+  check(state.step === 0, `→ then ← returns to step 0 (at ${state.step})`);
 
   // Continuous playback from the first step advances the step.
   await page.click('#first');
