@@ -42,12 +42,13 @@ struct JobReports {
   StepCounter counter;
 };
 
-void attach_reports(const BatchJob& job, const RobotModel& robot, bool force, JobReports& reports,
-                    certify::RunHooks& hooks) {
+void attach_reports(const BatchJob& job, const RobotModel& robot, const Environment& environment,
+                    bool force, JobReports& reports, certify::RunHooks& hooks) {
   const JobOutputs& out = job.outputs;
   hooks.observers.push_back(&reports.counter);
   if (!out.thesis_output.empty()) {
-    reports.thesis_output.emplace(out.thesis_output, force, report::joint_types_of(robot));
+    reports.thesis_output.emplace(out.thesis_output, force, report::joint_types_of(robot),
+                                  report::ThesisNames::of(robot, environment));
     hooks.observers.push_back(&*reports.thesis_output);
   }
   if (!out.json.empty() || !out.html.empty()) {
@@ -177,7 +178,7 @@ void verify_job(const BatchJob& job, SharedInputs& shared, const BatchOptions& o
   JobReports reports;
   certify::RunHooks hooks;
   hooks.keep_steps = false;
-  attach_reports(job, robot, options.force, reports, hooks);
+  attach_reports(job, robot, inputs.environment->model, options.force, reports, hooks);
   const certify::VerificationRun run =
       certify::verify(cell->cell, inputs.program, motion::make_kinematics_access(robot, ik),
                       inputs.setup.run, hooks);

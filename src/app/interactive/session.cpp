@@ -16,6 +16,7 @@
 #include "grpvss/motion/thesis_error.hpp"
 #include "grpvss/motion/trajectory.hpp"
 #include "grpvss/report/atomic_output.hpp"
+#include "grpvss/report/file_units.hpp"
 #include "grpvss/report/thesis_output.hpp"
 #include "interactive/animation_output.hpp"
 #include "interactive/answer_parsing.hpp"
@@ -329,7 +330,10 @@ void Session::perform_motion() {
                      path_digest};
     if (!results_file.empty()) {
       report::write_file_atomically(results_file,
-                                    report::render_thesis_output(run.result, *robot_), false);
+                                    report::render_thesis_output(
+                                        run.result, report::joint_types_of(*robot_),
+                                        report::ThesisNames::of(*robot_, *environment_)),
+                                    false);
       out_ << fmt::format("THE RESULTS ARE STORED IN {}\n", results_file);
       if (!typed_text.empty()) {
         // The typed path, so `grpvss verify --path` can repeat this motion.
