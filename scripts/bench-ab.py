@@ -3,13 +3,15 @@
 docs/performance.md#ab-against-a-starting-commit).
 
 Usage: scripts/bench-ab.py BASE [--build DIR] [--filter REGEX] [--rounds N] [--min-time S]
+                           [--a-binary FILE]
 
 A = grpvss_bench built from commit BASE (exported with `git archive` into
 $TMPDIR/grpvss-ab-<sha>, configured Release with ccache, only the grpvss_bench target);
 B = the current build's grpvss_bench (--build, default ./build). The two binaries run in
 --rounds interleaved rounds (A B, B A, A B, ...) with the same filter; the table gives the
 median (and range) of the CPU time per benchmark and B / A. The default filter is the thesis
-Table 3 operations (thesis-format inputs).
+Table 3 operations (thesis-format inputs). --a-binary FILE uses an A binary built earlier
+(BASE then only labels it).
 """
 import argparse
 import json
@@ -49,7 +51,7 @@ def run_once(binary, bench_filter, min_time):
     with tempfile.NamedTemporaryFile(suffix=".json") as out:
         subprocess.run([binary, f"--benchmark_filter={bench_filter}", f"--benchmark_min_time={min_time}",
                         f"--benchmark_out={out.name}", "--benchmark_out_format=json"],
-                       check=True, stdout=subprocess.DEVNULL)
+                       check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         results = json.load(open(out.name))
     scale = {"ns": 1e-3, "us": 1.0, "ms": 1e3, "s": 1e6}
     return {e["name"]: e["cpu_time"] * scale[e["time_unit"]] for e in results["benchmarks"]}
@@ -63,8 +65,12 @@ def main():
     parser.add_argument("--rounds", type=int, default=8)
     parser.add_argument("--min-time", default="0.5")
     parser.add_argument("--jobs", type=int, default=int(os.environ.get("GRPVSS_JOBS", "2")))
+    parser.add_argument("--a-binary")
     args = parser.parse_args()
-    a_binary, sha = build_base(args.base, args.jobs)
+    if args.a_binary:
+        a_binary, sha = args.a_binary, args.base
+    else:
+        a_binary, sha = build_base(args.base, args.jobs)
     b_binary = os.path.join(args.build, "tests", "grpvss_bench")
     print(f"# A = {sha[:12]}, B = {b_binary}; load average %.1f %.1f %.1f" % os.getloadavg())
     samples = {"A": {}, "B": {}}

@@ -79,7 +79,8 @@ void robot_label(benchmark::State& state) {
 
 // One certified configuration: CellProbe::probe (every link hull placed, its offset decided
 // against the candidates of the broadphase, a certified clearance per hull). Args: robot,
-// obstacles. Counter per_config.
+// obstacles. Counters: per_config; hulls, hull_vertices and offset_vertices (summed over the
+// robot's link hulls and their tolerance offsets: what each probe places and scans).
 void BM_RobotConfigurationGrpvss(benchmark::State& state) {
   const auto qs = configurations(state.range(0), state.range(1));
   BenchCell& bench = bench_cell(state.range(0), state.range(1), 5);
@@ -92,6 +93,14 @@ void BM_RobotConfigurationGrpvss(benchmark::State& state) {
     }
   }
   per_item(state, qs.size(), "per_config");
+  double hull_vertices = 0, offset_vertices = 0;
+  for (const auto& hull : bench.cell->hulls()) {
+    hull_vertices += hull.raw_L.size();
+    offset_vertices += hull.expanded_L.size();
+  }
+  state.counters["hulls"] = bench.cell->hulls().size();
+  state.counters["hull_vertices"] = hull_vertices;
+  state.counters["offset_vertices"] = offset_vertices;
   robot_label(state);
 }
 
