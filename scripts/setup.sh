@@ -12,6 +12,7 @@ debian_packages=(
   libgtest-dev libgmock-dev libbenchmark-dev bsdutils
   liburdfdom-dev libassimp-dev libtinyxml2-dev libyaml-cpp-dev
   pybind11-dev python3-dev python3-numpy python3-pytest python3-distributed
+  libfcl-dev  # benchmark-only: the FCL peers of tests/bench (docs/performance.md)
 )
 missing=()
 for package in "${debian_packages[@]}"; do
