@@ -74,8 +74,11 @@ std::optional<CheckedCell> CheckedCell::build(const RobotModel& robot,
                 std::to_string(environment.allowed_contacts.size()) + " in the inputs)");
     return std::nullopt;
   }
-  // The pairs verified for self-collision are the inputs', no more and no fewer.
-  ledger.decided();
+  // The pairs verified for self-collision are the inputs', no more and no fewer (counted only
+  // when there are some: two empty lists are no inequality, and thesis checks keep their count).
+  const bool any_self_pairs =
+      !header.self_collision_pairs.empty() || !robot.self_collision_pairs.empty();
+  if (any_self_pairs) ledger.decided();
   if (header.self_collision_pairs != robot.self_collision_pairs) {
     ledger.fail("the certificate's self-collision pairs differ from the inputs' (" +
                 std::to_string(header.self_collision_pairs.size()) + " pairs certified, " +
