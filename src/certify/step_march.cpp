@@ -56,12 +56,15 @@ CertifiedMarch::CertifiedMarch(const RobotCell& cell, const RunSettings& setting
       proposal_weights_.push_back(cell.radii().motion_bound_weight(hull.link, hull.hull, joint));
     }
   }
-  // A self pair proposes like one more hull: bound M_a + M_b, radius its distance d.
+  // A self pair proposes like one more hull: its relative bound (hull b in link a's frame,
+  // joints a+1..b; transition_judge.cpp), radius its distance d.
   const auto joints = static_cast<std::size_t>(robot.joint_count());
   for (const SelfPairHulls& pair : cell.self_pairs()) {
+    const LinkHull& a = cell.hulls()[static_cast<std::size_t>(pair.a)];
     for (std::size_t j = 0; j < joints; ++j) {
-      proposal_weights_.push_back(proposal_weights_[static_cast<std::size_t>(pair.a) * joints + j] +
-                                  proposal_weights_[static_cast<std::size_t>(pair.b) * joints + j]);
+      const bool moves_b_in_a = static_cast<int>(j) >= a.link;  // joint j + 1 > link a
+      proposal_weights_.push_back(
+          moves_b_in_a ? proposal_weights_[static_cast<std::size_t>(pair.b) * joints + j] : 0.0);
     }
   }
 }

@@ -23,10 +23,13 @@ std::vector<Rational> check_self_pair_evidence(
     const std::vector<std::vector<Eigen::Vector3d>>& placed_raw, CheckLedger& ledger,
     const std::string& where);
 
-/// \brief Decides M_a + M_b < d_k + d_{k+1} for every self pair with the hulls' verified motion
-/// bounds (`hull_bounds`, nullopt where none is proven). A failing pair fails the ledger when
-/// the transition claims to be certified; either way it makes it uncertified in `facts`.
-void check_self_pair_transition(const CheckedCell& cell, const TransitionRecord& claimed,
+/// \brief Decides min(M_a + M_b, M_b|a) < d_k + d_{k+1} for every self pair, M_a and M_b the
+/// hulls' verified motion bounds (`hull_bounds`, nullopt where none is proven), M_b|a the exact
+/// joint-sum bound of hull b over joints a+1..b (its motion in link a's frame). A failing pair
+/// fails the ledger when the transition claims to be certified; either way it makes it
+/// uncertified in `facts`.
+void check_self_pair_transition(const CheckedCell& cell, const StepCertificate& from,
+                                const StepCertificate& to, const TransitionRecord& claimed,
                                 const std::vector<std::optional<Rational>>& hull_bounds,
                                 const std::vector<Rational>& distance_from,
                                 const std::vector<Rational>& distance_to, CheckLedger& ledger,

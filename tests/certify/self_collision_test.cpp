@@ -18,7 +18,9 @@
 
 #include <gtest/gtest.h>
 
+#include "certify/cell_probe.hpp"
 #include "certify/self_pair_probe.hpp"
+#include "certify/transition_judge.hpp"
 #include "grpvss/cell/load_cell.hpp"
 #include "grpvss/certify/robot_cell.hpp"
 #include "grpvss/certify/verifier.hpp"
@@ -308,6 +310,86 @@ bool reference_self_contact(const RobotCell& cell, const Eigen::VectorXd& q) {
     }
   }
   return false;
+}
+
+// proofs/two-ball-cover.md#relative-frame: hull b seen from link a's frame moves by joints
+// a+1..b only, and no farther than M_b|a; turning the arm about joint 1 alone moves no pair of
+// links 1..6 relative to each other.
+TEST(RelativeMotionLemma, InLinkAsFrameHullBTravelsAtMostItsBoundOverTheJointsBetween) {
+  const cell::LoadedCell loaded = cell::load_cell(kCells + "ur5e-self.yaml");
+  CellSettings settings;
+  settings.tolerance = loaded.tolerance;
+  const RobotCell cell(loaded.robot, loaded.environment, settings);
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  kinematics::Workspace workspace(cell.robot());
+  for (int trial = 0; trial < 20; ++trial) {
+    Eigen::VectorXd q0(6), q1(6);
+    for (int j = 0; j < 6; ++j) {
+      q0[j] = 2.0 * u(rng);
+      q1[j] = q0[j] + 0.5 * u(rng);
+    }
+    for (const SelfPairHulls& pair : cell.self_pairs()) {
+      const LinkHull& a = cell.hulls()[static_cast<std::size_t>(pair.a)];
+      const LinkHull& b = cell.hulls()[static_cast<std::size_t>(pair.b)];
+      Eigen::VectorXd relative = q1 - q0;
+      relative.head(a.link).setZero();
+      const double bound = cell.radii().hull_motion_bound(b.link, b.hull, relative);
+      // Every vertex's sampled path in link a's frame (joint-linear motion).
+      double longest = 0.0;
+      for (const Eigen::Vector3d& v : b.raw_L) {
+        double length = 0.0;
+        Eigen::Vector3d previous;
+        for (int k = 0; k <= 200; ++k) {
+          kinematics::forward_kinematics(cell.chain(), q0 + (q1 - q0) * (k / 200.0), workspace);
+          const Eigen::Vector3d p_A = workspace.X_WL[static_cast<std::size_t>(a.link)].inverse() *
+                                      (workspace.X_WL[static_cast<std::size_t>(b.link)] * v);
+          if (k > 0) length += (p_A - previous).norm();
+          previous = p_A;
+        }
+        longest = std::max(longest, length);
+      }
+      EXPECT_LE(longest, bound * (1 + 1e-9) + 1e-12) << "trial " << trial;
+      if (a.link >= 1) {
+        // Joint 1 alone: hull b does not move in link a's frame.
+        Eigen::VectorXd joint_one = Eigen::VectorXd::Zero(6);
+        joint_one[0] = 1.0;
+        joint_one.head(a.link).setZero();
+        EXPECT_EQ(cell.radii().hull_motion_bound(b.link, b.hull, joint_one), 0.0);
+      }
+    }
+  }
+}
+
+TEST(SelfCollision, TheStepRuleHoldsEachPairToItsRelativeBound) {
+  const cell::LoadedCell loaded = cell::load_cell(kCells + "ur5e-self.yaml");
+  CellSettings settings;
+  settings.tolerance = loaded.tolerance;
+  const RobotCell cell(loaded.robot, loaded.environment, settings);
+  CellProbe probe(cell);
+  ProbeResult from, to;
+  Eigen::VectorXd q(6);
+  q << 0, -1.5708, 1.5708, 0, 0, 0;
+  probe.probe(q, false, from);
+  q[0] += 0.5;  // joint 1 only
+  probe.probe(q, false, to);
+  const TransitionRecord record = judge_transition(cell, from, to, false, false);
+  ASSERT_EQ(record.self_pair_motion_bounds.size(), cell.self_pairs().size());
+  for (std::size_t p = 0; p < cell.self_pairs().size(); ++p) {
+    const LinkHull& a = cell.hulls()[static_cast<std::size_t>(cell.self_pairs()[p].a)];
+    const LinkHull& b = cell.hulls()[static_cast<std::size_t>(cell.self_pairs()[p].b)];
+    if (a.link >= 1) {
+      EXPECT_EQ(record.self_pair_motion_bounds[p], 0.0);
+    } else {
+      // The base stands still: b's bound in the base frame is its world bound M_b.
+      EXPECT_EQ(record.self_pair_motion_bounds[p],
+                record.hull_motion_bounds[static_cast<std::size_t>(cell.self_pairs()[p].b)]);
+      EXPECT_GT(record.self_pair_motion_bounds[p], 0.0);
+    }
+    EXPECT_EQ(record.self_pair_allowances[p],
+              allowance_down(from.self_pairs[p].distance, to.self_pairs[p].distance));
+    EXPECT_GE(b.link - a.link, 2);
+  }
 }
 
 TEST(SelfCollision, AnExactReferenceAgreesOnRandomUr5ePaths) {
