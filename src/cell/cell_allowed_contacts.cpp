@@ -61,13 +61,12 @@ std::vector<AllowedContactPair> resolve_allowed_contacts(const CellDescription& 
       }
     }
     const std::string pair = contact.first + " / " + contact.second;
+    // Two links: a self-contact, resolved with the SRDF (cell_self_collision.hpp).
+    if (first_obstacles.empty() && second_obstacles.empty()) continue;
     if (first_obstacles.empty() == second_obstacles.empty()) {
       warnings.push_back({cell.source, contact.line,
-                          first_obstacles.empty()
-                              ? "allowed contact " + pair + " is between two links: self-contact "
-                                                            "is not verified yet, nothing to allow"
-                              : "allowed contact " + pair + " is between two obstacles: they "
-                                                            "never move, nothing to allow"});
+                          "allowed contact " + pair + " is between two obstacles: they "
+                                                      "never move, nothing to allow"});
       continue;
     }
     const std::vector<HullRef>& hulls = first_obstacles.empty() ? first_hulls : second_hulls;

@@ -12,8 +12,8 @@
 namespace grpvss::cell {
 
 /// \brief Every hull of the named link (the URDF link that declares it, or the chain link's
-/// frame) with every piece of the named obstacle, sorted. A pair of two links (self-contact,
-/// not verified yet) or two obstacles (they never move) is noted in a warning.
+/// frame) with every piece of the named obstacle, sorted. A pair of two obstacles (they never
+/// move) is noted in a warning; a pair of two links is a self-contact (cell_self_collision.hpp).
 /// \throws InputError(cell file, line, ...) for a name that is neither a link nor an obstacle.
 std::vector<AllowedContactPair> resolve_allowed_contacts(const CellDescription& cell,
                                                          const RobotModel& robot,

@@ -10,6 +10,7 @@
 #include "cell_allowed_contacts.hpp"
 #include "cell_environment.hpp"
 #include "cell_robot.hpp"
+#include "cell_self_collision.hpp"
 #include "grpvss/io/cell_file.hpp"
 #include "grpvss/io/length_unit.hpp"
 
@@ -73,15 +74,6 @@ void warn_about_sizes(const LoadedCell& cell, std::vector<io::InputWarning>& war
   }
 }
 
-// What the cell states that this loader does not apply yet: said, never silently dropped.
-void warn_about_unapplied(const CellDescription& cell, std::vector<io::InputWarning>& warnings) {
-  if (!cell.robot.srdf.empty()) {
-    warnings.push_back({cell.robot.srdf, 0,
-                        "the SRDF's disabled collisions concern self-collision, which is not "
-                        "verified yet"});
-  }
-}
-
 double rounded_up_tolerance(double tolerance, double scale) {
   const double converted = tolerance * scale;
   return scale == 1.0 ? converted
@@ -101,9 +93,9 @@ LoadedCell load_cell(CellDescription description, std::vector<io::InputWarning> 
   cell.environment = load_cell_environment(description, scale, warnings);
   cell.environment.allowed_contacts =
       resolve_allowed_contacts(description, cell.robot, cell.environment, warnings);
+  resolve_self_collision(description, cell.robot, warnings);
   if (description.tolerance) cell.tolerance = rounded_up_tolerance(*description.tolerance, scale);
   cell.description = std::move(description);
-  warn_about_unapplied(cell.description, warnings);
   warn_about_sizes(cell, warnings);
   cell.warnings = std::move(warnings);
   return cell;

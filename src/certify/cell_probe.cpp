@@ -78,6 +78,7 @@ int ProbeResult::link_nearest_obstacle(const RobotCell& cell, int link) const {
 CellProbe::CellProbe(const RobotCell& cell)
     : cell_(&cell),
       workspace_(cell.robot()),
+      self_pairs_(cell),
       warm_normals_(cell.hulls().size() * cell.obstacles_W().size()),
       has_warm_normal_(cell.hulls().size() * cell.obstacles_W().size(), 0),
       climb_hints_(cell.hulls().size() * cell.obstacles_W().size(), 0),
@@ -107,9 +108,11 @@ void CellProbe::probe(const Eigen::VectorXd& q, bool with_points, ProbeResult& o
   out.interference_points.clear();
   out.any_expanded_interference = false;
   out.any_collision = false;
+  out.any_self_collision = false;
   kinematics::forward_kinematics(cell_->chain(), q, workspace_);
   out.X_WL = workspace_.X_WL;
   for (int i = 0; i < static_cast<int>(cell_->hulls().size()); ++i) probe_hull(i, with_points, out);
+  if (self_pairs_.probe(out.X_WL, out.self_pairs)) out.any_self_collision = out.any_collision = true;
   sort_points(out);
 }
 

@@ -17,6 +17,7 @@
 #include "grpvss/evidence/verification_result.hpp"
 #include "grpvss/geometry/separation_witness.hpp"
 #include "grpvss/kinematics/forward_kinematics.hpp"
+#include "self_pair_probe.hpp"
 
 namespace grpvss::certify {
 
@@ -54,8 +55,11 @@ struct ProbeResult {
   std::vector<HullState> hulls;  ///< index = RobotCell::hulls() index
   std::vector<PairEvidence> evidence;
   std::vector<InterferencePoint> interference_points;  ///< filled only when requested
+  /// One per RobotCell::self_pairs() entry, in that order (empty without self pairs).
+  std::vector<SelfPairEvidence> self_pairs;
   bool any_expanded_interference = false;
-  bool any_collision = false;
+  bool any_collision = false;       ///< with an obstacle or (any_self_collision) of the robot
+  bool any_self_collision = false;  ///< two hulls of a self pair meet
 
   /// Smallest hull radius of a link (the link's certified clearance at this configuration).
   double link_radius(const RobotCell& cell, int link) const;
@@ -122,6 +126,7 @@ class CellProbe {
 
   const RobotCell* cell_;
   kinematics::Workspace workspace_;
+  SelfPairProbe self_pairs_;
   std::vector<Eigen::Vector3d> placed_expanded_;
   std::vector<Eigen::Vector3d> placed_raw_;
   std::vector<Eigen::Vector3d> placed_obstacle_L_;

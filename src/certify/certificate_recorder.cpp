@@ -17,6 +17,7 @@ CertificateRecorder::CertificateRecorder(const RobotCell& cell, const RunSetting
   certificate_.expansion_radius = cell.expansion_radius();
   certificate_.allowed_contacts = cell.allowed_contacts();
   certificate_.names = certificate_names(cell.robot(), cell.environment());
+  certificate_.self_collision_pairs = cell.robot().self_collision_pairs;
 }
 
 StepCertificate CertificateRecorder::certificate_step(const ProbeResult& probe, int index,
@@ -41,6 +42,9 @@ StepCertificate CertificateRecorder::certificate_step(const ProbeResult& probe, 
     step.hulls[evidence.hull_index].evidence.push_back({evidence.obstacle, evidence.expanded,
                                                         evidence.separated, evidence.witness,
                                                         evidence.lower_bound});
+  }
+  for (const SelfPairEvidence& pair : probe.self_pairs) {
+    step.self_pairs.push_back({pair.separated, pair.witness, pair.lower_bound});
   }
   return step;
 }

@@ -65,4 +65,30 @@ void InterferenceEpisodeTracker::add(const StepRecord& step) {
   open_ = std::move(still_open);
 }
 
+std::vector<SelfCollisionPair> self_contacts(const RobotCell& cell, const ProbeResult& probe) {
+  std::vector<SelfCollisionPair> contacts;
+  for (std::size_t p = 0; p < probe.self_pairs.size(); ++p) {
+    if (probe.self_pairs[p].contact) contacts.push_back(cell.robot().self_collision_pairs[p]);
+  }
+  return contacts;
+}
+
+void SelfCollisionEpisodeTracker::add(const StepRecord& step) {
+  std::map<SelfCollisionPair, std::size_t> still_open;
+  for (const SelfCollisionPair& pair : step.self_contacts) {
+    const auto open = open_.find(pair);
+    std::size_t index = 0;
+    if (open != open_.end()) {
+      index = open->second;
+    } else {
+      index = episodes_.size();
+      episodes_.push_back({pair, step.index, step.index, step.path_time, step.path_time});
+    }
+    episodes_[index].last_step = step.index;
+    episodes_[index].last_time = step.path_time;
+    still_open.emplace(pair, index);
+  }
+  open_ = std::move(still_open);
+}
+
 }  // namespace grpvss::certify

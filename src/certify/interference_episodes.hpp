@@ -31,4 +31,19 @@ class InterferenceEpisodeTracker {
   std::map<PairKey, std::size_t> open_;  ///< pairs interfering at the last step -> episode
 };
 
+/// \brief The self-collision pairs whose hulls meet in \p probe, in the cell's pair order.
+std::vector<SelfCollisionPair> self_contacts(const RobotCell& cell, const ProbeResult& probe);
+
+/// \brief Builds the self-collision episodes (runs of consecutive steps at which one pair's
+/// hulls meet) from the steps in path order.
+class SelfCollisionEpisodeTracker {
+ public:
+  void add(const StepRecord& step);
+  const std::vector<SelfCollisionEpisode>& episodes() const { return episodes_; }
+
+ private:
+  std::vector<SelfCollisionEpisode> episodes_;
+  std::map<SelfCollisionPair, std::size_t> open_;
+};
+
 }  // namespace grpvss::certify

@@ -94,6 +94,22 @@ RobotCell::RobotCell(const RobotModel& robot, const Environment& environment,
   }
   obstacle_index_ = geometry::StaticObstacleIndex(obstacles_W_);
   allowed_contacts_ = environment.allowed_contacts;
+  self_pairs_ = self_pair_hulls(robot, hulls_);
+}
+
+std::vector<SelfPairHulls> self_pair_hulls(const RobotModel& robot,
+                                           const std::vector<LinkHull>& hulls) {
+  std::vector<SelfPairHulls> pairs;
+  const auto index_of = [&hulls](int link, int hull) {
+    for (std::size_t i = 0; i < hulls.size(); ++i) {
+      if (hulls[i].link == link && hulls[i].hull == hull) return static_cast<int>(i);
+    }
+    throw std::logic_error("RobotCell: a self-collision pair names a hull the robot lacks");
+  };
+  for (const SelfCollisionPair& pair : robot.self_collision_pairs) {
+    pairs.push_back({index_of(pair.link_a, pair.hull_a), index_of(pair.link_b, pair.hull_b)});
+  }
+  return pairs;
 }
 
 bool RobotCell::contact_allowed(int link, int hull, int obstacle) const {

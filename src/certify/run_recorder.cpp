@@ -41,6 +41,7 @@ StepRecord RunRecorder::make_record(const ProbeResult& probe, int segment, doubl
   }
   step.interference_points = probe.interference_points;
   step.contacts = interfering_pairs(cell_, probe);
+  step.self_contacts = self_contacts(cell_, probe);
   step.expanded_interferes = probe.any_expanded_interference;
   step.unexpanded_collides = probe.any_collision;
   return step;
@@ -115,6 +116,7 @@ void RunRecorder::track_summaries(const StepRecord& step) {
   }
   any_expanded_ |= step.expanded_interferes;
   episodes_.add(step);
+  self_episodes_.add(step);
 }
 
 void RunRecorder::add_error(int code, int segment, std::string message) {
@@ -133,6 +135,7 @@ const Eigen::VectorXd& RunRecorder::last_q() const {
 VerificationResult RunRecorder::finish() {
   result_.link_clearances = clearances_;
   result_.interference_episodes = episodes_.episodes();
+  result_.self_collision_episodes = self_episodes_.episodes();
   if (result_.collision_step) {
     result_.verdict = Verdict::kCollision;
   } else if (!result_.errors.empty()) {

@@ -52,6 +52,7 @@ class RunRecorder {
   bool any_uncertified_ = false;
   std::vector<LinkClearanceSummary> clearances_;
   InterferenceEpisodeTracker episodes_;
+  SelfCollisionEpisodeTracker self_episodes_;
 };
 
 }  // namespace grpvss::certify

@@ -56,6 +56,17 @@ CertifiedMarch::CertifiedMarch(const RobotCell& cell, const RunSettings& setting
       proposal_weights_.push_back(cell.radii().motion_bound_weight(hull.link, hull.hull, joint));
     }
   }
+  // A self pair proposes like one more hull: its relative bound (hull b in link a's frame,
+  // joints a+1..b; transition_judge.cpp), radius its distance d.
+  const auto joints = static_cast<std::size_t>(robot.joint_count());
+  for (const SelfPairHulls& pair : cell.self_pairs()) {
+    const LinkHull& a = cell.hulls()[static_cast<std::size_t>(pair.a)];
+    for (std::size_t j = 0; j < joints; ++j) {
+      const bool moves_b_in_a = static_cast<int>(j) >= a.link;  // joint j + 1 > link a
+      proposal_weights_.push_back(
+          moves_b_in_a ? proposal_weights_[static_cast<std::size_t>(pair.b) * joints + j] : 0.0);
+    }
+  }
 }
 
 void CertifiedMarch::begin_segment(const SegmentPath& path) {
@@ -132,12 +143,18 @@ CertifiedMarch::Trial CertifiedMarch::next_trial(const SegmentPath& path) {
 
 // The PTP proposal of step_proposal.hpp, from this march's state.
 double CertifiedMarch::predicted_ptp_step(const SegmentPath& path, double max_step) const {
-  const bool has_trend = previous_radii_.size() == cell_.hulls().size();
-  std::vector<ProposalHull> hulls(cell_.hulls().size());
-  for (std::size_t i = 0; i < hulls.size(); ++i) {
+  const std::size_t hull_count = cell_.hulls().size();
+  const bool has_trend = previous_radii_.size() == hull_count + current_.self_pairs.size();
+  std::vector<ProposalHull> hulls(hull_count + current_.self_pairs.size());
+  for (std::size_t i = 0; i < hull_count; ++i) {
     hulls[i].radius = current_.hulls[i].radius;
     hulls[i].expanded_interferes = current_.hulls[i].expanded_interferes;
-    if (has_trend) hulls[i].previous_radius = previous_radii_[i];
+  }
+  for (std::size_t p = 0; p < current_.self_pairs.size(); ++p) {
+    hulls[hull_count + p].radius = current_.self_pairs[p].distance;
+  }
+  for (std::size_t i = 0; has_trend && i < hulls.size(); ++i) {
+    hulls[i].previous_radius = previous_radii_[i];
   }
   const motion::PtpMotion& ptp = *path.segment().ptp;
   const double s = s_;
@@ -241,6 +258,7 @@ CertifiedMarch::Outcome CertifiedMarch::shrink_or_pass_uncertified(
 void CertifiedMarch::keep_trend(double taken) {
   previous_radii_.clear();
   for (const HullState& hull : current_.hulls) previous_radii_.push_back(hull.radius);
+  for (const SelfPairEvidence& pair : current_.self_pairs) previous_radii_.push_back(pair.distance);
   previous_step_ = taken;
 }
 

@@ -13,6 +13,12 @@ double transition_slack(const TransitionRecord& transition) {
       slack = std::min(slack, transition.hull_allowances[i] / transition.hull_motion_bounds[i]);
     }
   }
+  for (std::size_t p = 0; p < transition.self_pair_motion_bounds.size(); ++p) {
+    if (transition.self_pair_motion_bounds[p] > 0.0) {
+      slack = std::min(slack,
+                       transition.self_pair_allowances[p] / transition.self_pair_motion_bounds[p]);
+    }
+  }
   return slack;
 }
 
@@ -22,6 +28,12 @@ double basic_resolution_slack(const TransitionRecord& transition, double two_del
     const double bound = transition.hull_motion_bounds[i];
     if (bound > 0.0) {
       slack = std::min(slack, std::max(transition.hull_allowances[i], two_delta) / bound);
+    }
+  }
+  for (std::size_t p = 0; p < transition.self_pair_motion_bounds.size(); ++p) {
+    const double bound = transition.self_pair_motion_bounds[p];
+    if (bound > 0.0) {
+      slack = std::min(slack, std::max(transition.self_pair_allowances[p], two_delta) / bound);
     }
   }
   return slack;

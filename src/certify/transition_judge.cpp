@@ -1,5 +1,8 @@
 #include "transition_judge.hpp"
 
+#include <algorithm>
+#include <limits>
+
 #include "joint_linear_motion_bound.hpp"
 #include "grpvss/geometry/directed_rounding.hpp"
 
@@ -32,6 +35,41 @@ GoverningTerm governing_term(const HullState& from, const HullState& to, double 
 
 }  // namespace
 
+// Both hulls move: their relative motion bound (rounded up) must stay below d_k + d_{k+1}
+// (rounded down). It is the smaller of M_a + M_b and the bound of hull b in link a's frame,
+// where only joints a+1..b move it (the arm swinging both about joint 1 moves neither relative
+// to the other). proof: proofs/two-ball-cover.md#lemma-relative-motion,
+// proofs/two-ball-cover.md#relative-frame
+double self_pair_motion_bound(const RobotCell& cell, const SelfPairHulls& pair,
+                              const TransitionRecord& record, const Eigen::VectorXd& dq) {
+  namespace r = geometry::rounding;
+  const LinkHull& a = cell.hulls()[static_cast<std::size_t>(pair.a)];
+  const LinkHull& b = cell.hulls()[static_cast<std::size_t>(pair.b)];
+  const double both = r::nearest_mode_add_up(record.hull_motion_bounds[static_cast<std::size_t>(pair.a)],
+                                             record.hull_motion_bounds[static_cast<std::size_t>(pair.b)]);
+  Eigen::VectorXd relative = dq;
+  relative.head(a.link).setZero();  // joints 1..a move link a's frame, not b within it
+  return std::min(both, cell.radii().hull_motion_bound(b.link, b.hull, relative));
+}
+
+void judge_self_pairs(const RobotCell& cell, const ProbeResult& from, const ProbeResult& to,
+                      TransitionRecord& record) {
+  const std::vector<SelfPairHulls>& pairs = cell.self_pairs();
+  const Eigen::VectorXd dq = to.q - from.q;
+  for (std::size_t p = 0; p < pairs.size(); ++p) {
+    const auto a = static_cast<std::size_t>(pairs[p].a);
+    const auto b = static_cast<std::size_t>(pairs[p].b);
+    const double bound = self_pair_motion_bound(cell, pairs[p], record, dq);
+    const double allowance = allowance_down(from.self_pairs[p].distance, to.self_pairs[p].distance);
+    if (!(bound < allowance)) {
+      record.certified = false;
+      record.governing[a] = record.governing[b] = GoverningTerm::kUncertified;
+    }
+    record.self_pair_motion_bounds.push_back(bound);
+    record.self_pair_allowances.push_back(allowance);
+  }
+}
+
 double allowance_down(double radius_k, double radius_k1) {
   namespace r = geometry::rounding;
   r::UpwardRoundingScope upward;
@@ -59,6 +97,7 @@ TransitionRecord judge_transition(const RobotCell& cell, const ProbeResult& from
     record.hull_allowances.push_back(allowance);
     record.governing.push_back(governing);
   }
+  judge_self_pairs(cell, from, to, record);
   return record;
 }
 
@@ -69,6 +108,12 @@ TransitionRecord beside_collisions(const TransitionRecord& transition, const Pro
     if (from.hulls[i].raw_collides || to.hulls[i].raw_collides) {
       beside.hull_allowances[i] = allowance_down(from.hulls[i].radius_beside_collisions,
                                                  to.hulls[i].radius_beside_collisions);
+    }
+  }
+  // A self pair in contact at an end is not held either.
+  for (std::size_t p = 0; p < beside.self_pair_allowances.size(); ++p) {
+    if (from.self_pairs[p].contact || to.self_pairs[p].contact) {
+      beside.self_pair_allowances[p] = std::numeric_limits<double>::infinity();
     }
   }
   return beside;

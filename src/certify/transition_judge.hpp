@@ -20,6 +20,12 @@ TransitionRecord judge_transition(const RobotCell& cell, const ProbeResult& from
                                   const ProbeResult& to, bool cut_by_segment_end,
                                   bool joint_linear);
 
+/// \brief Appends to `record` (its hull bounds filled) every self pair's M_a + M_b and
+/// d_k + d_{k+1}, and uncertifies it unless M_a + M_b < d_k + d_{k+1} for every pair.
+/// proof: proofs/two-ball-cover.md#lemma-relative-motion
+void judge_self_pairs(const RobotCell& cell, const ProbeResult& from, const ProbeResult& to,
+                      TransitionRecord& record);
+
 /// \brief The transition as the step decision sees it inside a collision: a hull that collides
 /// at an end of the step is held only against the obstacles it does not collide with
 /// (radius_beside_collisions). The recorded allowances stay r_k + r_{k+1}, which the checker

@@ -11,6 +11,7 @@
 #include "claim_facts.hpp"
 #include "grpvss/motion/cp_line.hpp"
 #include "grpvss/motion/trajectory.hpp"
+#include "self_pair_check.hpp"
 #include "step_evidence_check.hpp"
 #include "transition_check.hpp"
 
@@ -155,7 +156,7 @@ void Checker::check_segment(const SegmentCertificate& segment,
       segment.steps.front().parameter != 0.0) {
     facts_.coverage_complete = false;  // fine for a path stopped by an error; not for a safety claim
   }
-  std::vector<Rational> previous_radius;
+  std::vector<Rational> previous_radius, previous_distance;
   std::vector<std::vector<Eigen::Vector3d>> previous_placed, placed;
   const StepCertificate* previous = nullptr;
   for (std::size_t k = 0; k < segment.steps.size(); ++k) {
@@ -176,12 +177,19 @@ void Checker::check_segment(const SegmentCertificate& segment,
       ledger_.fail(where + ": the configuration is not the trajectory's at this parameter");
     }
     std::vector<Rational> radius = steps_->check(step, where, placed);
+    std::vector<Rational> distance =
+        check_self_pair_evidence(*cell_, certificate_, step, placed, ledger_, where);
     if (previous != nullptr) {
+      const std::string where_transition = where_segment + " steps " +
+                                           std::to_string(previous->step) + "-" +
+                                           std::to_string(step.step);
       transitions_->check(*previous, step, previous_radius, radius, previous_placed, placed, cp,
-                          where_segment + " steps " + std::to_string(previous->step) + "-" +
-                              std::to_string(step.step));
+                          where_transition);
+      check_self_pair_transition(*cell_, *previous, step, previous->to_next, transitions_->hull_bounds(),
+                                 previous_distance, distance, ledger_, facts_, where_transition);
     }
     previous_radius = std::move(radius);
+    previous_distance = std::move(distance);
     std::swap(previous_placed, placed);
     previous = &step;
     if (step.step == certificate_.collision_step) facts_.collision_step_q = step.q;

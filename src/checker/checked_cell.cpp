@@ -82,6 +82,18 @@ std::optional<CheckedCell> CheckedCell::build(const RobotModel& robot,
     ledger.fail("the certificate's link or obstacle names differ from the inputs'");
     return std::nullopt;
   }
+  // The pairs verified for self-collision are the inputs', no more and no fewer (counted only
+  // when there are some: two empty lists are no inequality, and thesis checks keep their count).
+  const bool any_self_pairs =
+      !header.self_collision_pairs.empty() || !robot.self_collision_pairs.empty();
+  if (any_self_pairs) ledger.decided();
+  if (header.self_collision_pairs != robot.self_collision_pairs) {
+    ledger.fail("the certificate's self-collision pairs differ from the inputs' (" +
+                std::to_string(header.self_collision_pairs.size()) + " pairs certified, " +
+                std::to_string(robot.self_collision_pairs.size()) + " in the inputs)");
+    return std::nullopt;
+  }
+  if (!cell.index_self_pairs(ledger)) return std::nullopt;
   cell.environment_ = &environment;
   cell.build_obstacles(environment);
   return cell;
@@ -116,6 +128,25 @@ bool CheckedCell::build_hulls(const Certificate& header, CheckLedger& ledger,
                                      largest_abs_coordinate(checked.expanded_L)});
       hulls_.push_back(std::move(checked));
     }
+  }
+  return true;
+}
+
+bool CheckedCell::index_self_pairs(CheckLedger& ledger) {
+  const auto index_of = [this](int link, int hull) {
+    for (std::size_t i = 0; i < hulls_.size(); ++i) {
+      if (hulls_[i].link == link && hulls_[i].hull == hull) return static_cast<int>(i);
+    }
+    return -1;
+  };
+  for (const SelfCollisionPair& pair : robot_->self_collision_pairs) {
+    const int a = index_of(pair.link_a, pair.hull_a);
+    const int b = index_of(pair.link_b, pair.hull_b);
+    if (a < 0 || b < 0) {
+      ledger.fail("a self-collision pair names a hull the robot does not have");
+      return false;
+    }
+    self_pairs_.emplace_back(a, b);
   }
   return true;
 }

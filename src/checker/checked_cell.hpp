@@ -5,6 +5,7 @@
 // forward-kinematics rounding bound.
 
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -57,11 +58,15 @@ class CheckedCell {
   bool contact_allowed(int link, int hull, int obstacle) const {
     return environment_->contact_allowed(link, hull, obstacle);
   }
+  /// The inputs' self-collision pairs (robot().self_collision_pairs, the certificate's list:
+  /// build() decides it) as (hull a, hull b) indices into hulls().
+  const std::vector<std::pair<int, int>>& self_pairs() const { return self_pairs_; }
 
  private:
   explicit CheckedCell(const RobotModel& robot);
   bool build_hulls(const Certificate& header, CheckLedger& ledger, double& largest_coordinate);
   void build_obstacles(const Environment& environment);
+  bool index_self_pairs(CheckLedger& ledger);
 
   const RobotModel* robot_;
   const Environment* environment_ = nullptr;
@@ -69,6 +74,7 @@ class CheckedCell {
   std::vector<CheckedHull> hulls_;
   std::vector<std::vector<Eigen::Vector3d>> obstacles_;
   std::vector<Box> obstacle_boxes_;
+  std::vector<std::pair<int, int>> self_pairs_;
 };
 
 }  // namespace grpvss::certify

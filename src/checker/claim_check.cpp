@@ -9,13 +9,34 @@
 namespace grpvss::certify {
 namespace {
 
-// The robot at `q` touches some obstacle, decided exactly on its raw hulls.
+// Two hulls of a self-collision pair meet at the placement `placed`, decided exactly.
+bool self_collides_exactly(const CheckedCell& cell,
+                           const std::vector<std::vector<Eigen::Vector3d>>& placed,
+                           CheckLedger& ledger) {
+  for (const auto& [a, b] : cell.self_pairs()) {
+    ledger.decided();
+    if (geometry::classify_exact(placed[static_cast<std::size_t>(a)],
+                                 placed[static_cast<std::size_t>(b)]) !=
+        geometry::Contact::kSeparated) {
+      return true;
+    }
+  }
+  return false;
+}
+
+// The robot at `q` touches some obstacle or itself, decided exactly on its raw hulls.
 bool collides_exactly(const CheckedCell& cell, const Eigen::VectorXd& q, CheckLedger& ledger) {
   kinematics::Workspace workspace(cell.robot());
   kinematics::forward_kinematics(cell.chain(), q, workspace);
-  std::vector<Eigen::Vector3d> placed;
-  for (const CheckedHull& hull : cell.hulls()) {
-    kinematics::place_points(workspace.X_WL[hull.link], hull.raw_L, placed);
+  std::vector<std::vector<Eigen::Vector3d>> placed_hulls(cell.hulls().size());
+  for (std::size_t i = 0; i < cell.hulls().size(); ++i) {
+    const CheckedHull& hull = cell.hulls()[i];
+    kinematics::place_points(workspace.X_WL[hull.link], hull.raw_L, placed_hulls[i]);
+  }
+  if (self_collides_exactly(cell, placed_hulls, ledger)) return true;
+  for (std::size_t i = 0; i < cell.hulls().size(); ++i) {
+    const CheckedHull& hull = cell.hulls()[i];
+    const std::vector<Eigen::Vector3d>& placed = placed_hulls[i];
     for (std::size_t o = 0; o < cell.obstacles().size(); ++o) {
       if (cell.contact_allowed(hull.link, hull.hull, static_cast<int>(o))) continue;
       ledger.decided();

@@ -18,6 +18,7 @@ void TransitionCheck::check(const StepCertificate& from, const StepCertificate& 
                             bool joint_linear, const std::string& where) {
   const TransitionRecord& claimed = from.to_next;
   const std::vector<CheckedHull>& hulls = cell_.hulls();
+  hull_bounds_.clear();
   // A step with the wrong joint count was already rejected by the step check; reading its q
   // here would run past the vector (found reviewing for the checker fuzz target).
   const int joints = cell_.robot().joint_count();
@@ -32,6 +33,7 @@ void TransitionCheck::check(const StepCertificate& from, const StepCertificate& 
     return;
   }
   bool certified = true;
+  hull_bounds_.assign(hulls.size(), std::nullopt);
   for (std::size_t i = 0; i < hulls.size(); ++i) {
     const CheckedHull& hull = hulls[i];
     const std::string hull_where = where + " hull " + std::to_string(i);
@@ -54,6 +56,7 @@ void TransitionCheck::check(const StepCertificate& from, const StepCertificate& 
         certified = false;
       }
     }
+    hull_bounds_[i] = bound;  // the exact bound, or the recorded one the chord check proved
     if (!(exact(claimed.hull_allowances[i]) <= allowance)) {
       ledger_.fail(hull_where + ": the recorded allowance exceeds r_k + r_k+1");
       certified = false;

@@ -32,6 +32,10 @@ class TransitionCheck {
              const std::vector<std::vector<Eigen::Vector3d>>& placed_to, bool joint_linear,
              const std::string& where);
 
+  /// Per hull, the motion bound the last check() proved (>= every point's path length over
+  /// the transition); nullopt where none was proven, empty when the record was unusable.
+  const std::vector<std::optional<Rational>>& hull_bounds() const { return hull_bounds_; }
+
  private:
   /// The exact joint-sum bound M_h of the hull over the transition.
   Rational joint_sum_bound(const CheckedHull& hull, const StepCertificate& from,
@@ -50,6 +54,7 @@ class TransitionCheck {
   CheckLedger& ledger_;
   ClaimFacts& facts_;
   MotionClearances& clearances_;
+  std::vector<std::optional<Rational>> hull_bounds_;
 };
 
 }  // namespace grpvss::certify

@@ -98,6 +98,33 @@ Eigen::VectorXd vector_field(const json& object, const char* key, const std::str
   return Eigen::Map<const Eigen::VectorXd>(values.data(), static_cast<Eigen::Index>(values.size()));
 }
 
+json self_pair_to_json(const SelfPairRecord& record) {
+  json item = {{"separated", record.separated}};
+  if (record.separated) {
+    item["normal"] = {record.witness.normal.x(), record.witness.normal.y(),
+                      record.witness.normal.z()};
+    item["offset_a"] = record.witness.offset_a;
+    item["offset_b"] = record.witness.offset_b;
+    item["lower_bound"] = record.lower_bound;
+  }
+  return item;
+}
+
+SelfPairRecord self_pair_from_json(const json& item, const std::string& where,
+                                   const std::string& file) {
+  SelfPairRecord record;
+  record.separated = field<bool>(item, "separated", where, file);
+  if (record.separated) {
+    const auto normal = field<std::vector<double>>(item, "normal", where, file);
+    if (normal.size() != 3) throw InputError(file, 0, "a 3-vector normal in " + where);
+    record.witness.normal = {normal[0], normal[1], normal[2]};
+    record.witness.offset_a = field<double>(item, "offset_a", where, file);
+    record.witness.offset_b = field<double>(item, "offset_b", where, file);
+    record.lower_bound = field<double>(item, "lower_bound", where, file);
+  }
+  return record;
+}
+
 }  // namespace
 
 json certificate_step_to_json(const StepCertificate& step) {
@@ -127,6 +154,11 @@ json certificate_step_to_json(const StepCertificate& step) {
                {"parameter", step.parameter},
                {"q", vector_to_json(step.q)},
                {"hulls", hulls}};
+  if (!step.self_pairs.empty()) {
+    json pairs = json::array();
+    for (const SelfPairRecord& record : step.self_pairs) pairs.push_back(self_pair_to_json(record));
+    item["self_pairs"] = pairs;
+  }
   if (!step.to_next.hull_motion_bounds.empty()) {
     json governing = json::array();
     for (GoverningTerm term : step.to_next.governing) governing.push_back(to_string(term));
@@ -134,6 +166,10 @@ json certificate_step_to_json(const StepCertificate& step) {
                        {"hull_motion_bounds", step.to_next.hull_motion_bounds},
                        {"hull_allowances", step.to_next.hull_allowances},
                        {"governing", governing}};
+    if (!step.to_next.self_pair_motion_bounds.empty()) {
+      item["to_next"]["self_pair_motion_bounds"] = step.to_next.self_pair_motion_bounds;
+      item["to_next"]["self_pair_allowances"] = step.to_next.self_pair_allowances;
+    }
   }
   return item;
 }
@@ -169,6 +205,14 @@ json certificate_to_json(const Certificate& certificate) {
     document["allowed_contacts"] = allowed;
   }
   if (!certificate.names.empty()) document["names"] = certificate_names_to_json(certificate.names);
+  if (!certificate.self_collision_pairs.empty()) {
+    json pairs = json::array();
+    for (const SelfCollisionPair& pair : certificate.self_collision_pairs) {
+      pairs.push_back({{"link_a", pair.link_a}, {"hull_a", pair.hull_a},
+                       {"link_b", pair.link_b}, {"hull_b", pair.hull_b}});
+    }
+    document["self_collision_pairs"] = pairs;
+  }
   json errors = json::array();
   for (const PathError& error : certificate.errors) {
     errors.push_back({{"code", error.code}, {"segment", error.segment}, {"step", error.step},
@@ -231,6 +275,14 @@ Certificate certificate_header_from_json(const json& document, const std::string
   if (document.contains("names")) {
     certificate.names = certificate_names_from_json(document.at("names"), file);
   }
+  if (document.contains("self_collision_pairs")) {
+    for (const json& pair : field<json>(document, "self_collision_pairs", top, file)) {
+      const std::string where = "a self-collision pair";
+      certificate.self_collision_pairs.push_back(
+          {field<int>(pair, "link_a", where, file), field<int>(pair, "hull_a", where, file),
+           field<int>(pair, "link_b", where, file), field<int>(pair, "hull_b", where, file)});
+    }
+  }
   certificate.inputs = input_names(document, file);
   // Present; its elements are read one by one (segment_certificate_from_json).
   if (!document.contains("segments")) throw InputError(file, 0, "field 'segments' in " + top);
@@ -273,6 +325,11 @@ SegmentCertificate segment_certificate_from_json(const json& segment_json, const
       }
       step.hulls.push_back(std::move(hull));
     }
+    if (step_json.contains("self_pairs")) {
+      for (const json& pair_json : field<json>(step_json, "self_pairs", step_where, file)) {
+        step.self_pairs.push_back(self_pair_from_json(pair_json, step_where, file));
+      }
+    }
     if (step_json.contains("to_next")) {
       const json& next = step_json.at("to_next");
       step.to_next.certified = field<bool>(next, "certified", step_where, file);
@@ -282,6 +339,12 @@ SegmentCertificate segment_certificate_from_json(const json& segment_json, const
           field<std::vector<double>>(next, "hull_allowances", step_where, file);
       for (const auto& name : field<std::vector<std::string>>(next, "governing", step_where, file)) {
         step.to_next.governing.push_back(governing_from_string(name, file));
+      }
+      if (next.contains("self_pair_motion_bounds")) {
+        step.to_next.self_pair_motion_bounds =
+            field<std::vector<double>>(next, "self_pair_motion_bounds", step_where, file);
+        step.to_next.self_pair_allowances =
+            field<std::vector<double>>(next, "self_pair_allowances", step_where, file);
       }
     }
     segment.steps.push_back(std::move(step));

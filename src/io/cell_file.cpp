@@ -70,7 +70,7 @@ void read_units(const CellYaml& yaml, const YAML::Node& root, CellDescription& c
 CellDescription read_cell(CellYaml& yaml, const YAML::Node& root) {
   yaml.require_keys(root, "the cell",
                     {"units", "robot", "obstacles", "allowed_contacts", "tolerance", "motion",
-                     "thesis_constants"});
+                     "thesis_constants", "self_collision"});
   CellDescription cell;
   cell.source = yaml.file_name();
   read_units(yaml, root, cell);
@@ -84,6 +84,11 @@ CellDescription read_cell(CellYaml& yaml, const YAML::Node& root) {
   if (const YAML::Node tolerance = root["tolerance"]) {
     cell.tolerance = yaml.positive(tolerance, "tolerance");
     cell.tolerance_line = yaml_line(tolerance);
+  }
+  if (const YAML::Node self_collision = root["self_collision"]) {
+    const std::string text = self_collision.IsScalar() ? self_collision.Scalar() : "";
+    if (text != "true" && text != "false") yaml.fail(self_collision, "self_collision", "true or false");
+    cell.self_collision = text == "true";
   }
   if (const YAML::Node motion = root["motion"]) cell.motion = read_motion(yaml, motion);
   if (const YAML::Node constants = root["thesis_constants"]) {

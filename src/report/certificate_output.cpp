@@ -78,6 +78,7 @@ void CertificateStream::finish(const certify::Certificate& certificate,
   head.collision_step = certificate.collision_step;
   head.allowed_contacts = certificate.allowed_contacts;
   head.names = certificate.names;
+  head.self_collision_pairs = certificate.self_collision_pairs;
   head.errors = certificate.errors;
   nlohmann::json document = certificate_document(head, inputs);
   document["segments"] = streamed_array_placeholder(0);

@@ -162,7 +162,7 @@ class JsonWriter {
     for (const auto& point : record.interference_points) points.push_back(interference_point(point));
     json contacts = json::array();
     for (const auto& pair : record.contacts) contacts.push_back(contact(pair));
-    return {{"index", record.index},
+    json item = {{"index", record.index},
             {"segment", record.segment},
             {"path_time", finite(record.path_time, "path_time")},
             {"segment_parameter", finite(record.segment_parameter, "segment_parameter")},
@@ -174,6 +174,41 @@ class JsonWriter {
             {"expanded_interferes", record.expanded_interferes},
             {"unexpanded_collides", record.unexpanded_collides},
             {"refinement", record.refinement}};
+    // Only with self-collision: reports of robots without it keep their bytes.
+    if (!record.self_contacts.empty()) {
+      json self = json::array();
+      for (const SelfCollisionPair& pair : record.self_contacts) self.push_back(self_pair(pair));
+      item["self_contacts"] = self;
+    }
+    return item;
+  }
+
+  static json self_pair(const SelfCollisionPair& pair) {
+    return {{"link_a", pair.link_a}, {"hull_a", pair.hull_a},
+            {"link_b", pair.link_b}, {"hull_b", pair.hull_b}};
+  }
+
+  // What the run verified about self-collision: written only for robots that have self pairs
+  // or unverified link pairs (URDF cells), so thesis reports keep their bytes.
+  json self_collision() const {
+    json not_verified = json::array();
+    for (const UnverifiedLinkPair& pair : robot_.unverified_link_pairs) {
+      not_verified.push_back({{"first", pair.first}, {"second", pair.second},
+                              {"reason", pair.reason}});
+    }
+    json episodes = json::array();
+    for (const certify::SelfCollisionEpisode& run : result_.self_collision_episodes) {
+      json item = self_pair(run.pair);
+      item["name"] = self_pair_label(robot_, run.pair);
+      item["first_step"] = run.first_step;
+      item["last_step"] = run.last_step;
+      item["first_time"] = finite(run.first_time, "first_time");
+      item["last_time"] = finite(run.last_time, "last_time");
+      episodes.push_back(item);
+    }
+    return {{"pairs_verified", robot_.self_collision_pairs.size()},
+            {"not_verified", not_verified},
+            {"episodes", episodes}};
   }
 
   static json error(const certify::PathError& record) {
@@ -211,7 +246,7 @@ class JsonWriter {
     const auto input = [](const InputFileDigest& digest) {
       return json{{"file", digest.file}, {"sha256", digest.sha256}};
     };
-    return {
+    json report = {
         {"schema", kReportSchemaId},
         {"program", {{"name", "grpvss"}, {"version", program_version()}}},
         {"generated_at", generated_at},
@@ -244,6 +279,10 @@ class JsonWriter {
         {"link_clearances", clearances},
         {"interference_episodes", episodes},
     };
+    if (!robot_.self_collision_pairs.empty() || !robot_.unverified_link_pairs.empty()) {
+      report["self_collision"] = self_collision();
+    }
+    return report;
   }
 
  private:

@@ -31,6 +31,7 @@ certify::VerificationResult head_of(const certify::VerificationResult& result) {
   head.errors = result.errors;
   head.link_clearances = result.link_clearances;
   head.interference_episodes = result.interference_episodes;
+  head.self_collision_episodes = result.self_collision_episodes;
   head.collision_step = result.collision_step;
   head.total_cycle_time = result.total_cycle_time;
   return head;

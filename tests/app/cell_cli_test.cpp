@@ -127,6 +127,28 @@ TEST_F(CellCli, WithoutTheAllowedContactTheBaseOnTheTableIsACollision) {
       << verify.out;
 }
 
+TEST_F(CellCli, AUr5eFoldingItsWristIntoItsUpperArmIsASelfCollisionNamingBothLinks) {
+  const std::string inputs =
+      "--cell " + kCells + "ur5e-self.yaml --path " + kCells + "ur5e-fold.txt";
+  const CliRun verify =
+      run_cli(dir(), "verify " + inputs + " --certificate c.json --json r.json");
+  ASSERT_EQ(verify.exit_code, grpvss::app::kExitFinding) << verify.out << verify.err;
+  EXPECT_NE(verify.out.find("verdict: COLLISION"), std::string::npos) << verify.out;
+  EXPECT_NE(verify.out.find("self-collision not verified: base_link_inertia / shoulder_link "
+                            "(adjacent); shoulder_link / upper_arm_link (adjacent);"),
+            std::string::npos)
+      << verify.out;
+  EXPECT_NE(verify.out.find("self-collision: wrist_2_link / upper_arm_link, step"),
+            std::string::npos)
+      << verify.out;
+  const std::string report = grpvss::test::read_text_file(dir() + "/r.json");
+  EXPECT_NE(report.find("\"name\": \"wrist_2_link / upper_arm_link\""), std::string::npos);
+  EXPECT_NE(report.find("\"self_contacts\""), std::string::npos);
+  const CliRun check = run_cli(dir(), "check-certificate " + inputs + " c.json");
+  EXPECT_EQ(check.exit_code, 0) << check.out << check.err;
+  EXPECT_NE(check.out.find("ACCEPTED: claim COLLISION"), std::string::npos) << check.out;
+}
+
 }  // namespace
 
 namespace {

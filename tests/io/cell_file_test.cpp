@@ -297,10 +297,17 @@ TEST(CellFile, AContactListedTwiceWarnsAndIsKeptOnce) {
 }
 
 
+TEST(CellFile, SelfCollisionIsOnByDefaultAndTakesTrueOrFalseOnly) {
+  EXPECT_TRUE(parse("units: m\nrobot: {thesis: r.txt}\n").cell.self_collision);
+  EXPECT_FALSE(parse("units: m\nrobot: {thesis: r.txt}\nself_collision: false\n").cell.self_collision);
+  expect_error("units: m\nrobot: {thesis: r.txt}\nself_collision: no\n", 3,
+               "expected self_collision: true or false, found 'no'");
+}
+
 TEST(CellFile, StructureErrorsNameTheLineAndWhatWasExpected) {
   expect_error("units: m\nrobot: {thesis: r.txt}\nobstacle: []\n", 3,
                "expected the cell: a key among units, robot, obstacles, allowed_contacts, tolerance, "
-               "motion, thesis_constants (did you mean 'obstacles'?), found 'obstacle'");
+               "motion, thesis_constants, self_collision (did you mean 'obstacles'?), found 'obstacle'");
   expect_error("units: m\nrobot:\n  urdf: r.urdf\n  pacakge_paths: [a]\n", 4,
                "expected robot: a key among urdf, thesis, package_paths, srdf, tip, base, tool, home, "
                "acceleration (did you mean 'package_paths'?), found 'pacakge_paths'");
@@ -311,11 +318,11 @@ TEST(CellFile, StructureErrorsNameTheLineAndWhatWasExpected) {
   expect_error("units: m\n", 1, "expected the cell: the key 'robot', found a mapping without it");
   expect_error("- units\n", 1,
                "expected the cell: a mapping with keys units, robot, obstacles, allowed_contacts, "
-               "tolerance, motion, thesis_constants, found a list of 1 entry");
+               "tolerance, motion, thesis_constants, self_collision, found a list of 1 entry");
   expect_error("", 0, "expected one YAML document (the cell), found none");
   expect_error("~\n", 1,
                "expected the cell: a mapping with keys units, robot, obstacles, allowed_contacts, "
-               "tolerance, motion, thesis_constants, found nothing");
+               "tolerance, motion, thesis_constants, self_collision, found nothing");
   expect_error("units: m\nrobot: {thesis: r.txt}\n---\nunits: m\n", 3,
                "expected one YAML document (the cell), found a second document");
   // YAML::LoadAll never returns on this text (each call succeeds without consuming the comma).

@@ -33,6 +33,12 @@ struct LinkHull {
   geometry::CertifiedSphere expanded_sphere_L;
 };
 
+/// \brief A self-collision pair as indices into RobotCell::hulls().
+struct SelfPairHulls {
+  int a = 0;  ///< hull on the lower chain link
+  int b = 0;
+};
+
 /// \brief Everything that determines a cell's link offsets (minkowski_offset is a function of
 /// these alone): the raw link hulls in the link frame, the expansion radius and the shape.
 struct LinkOffsetInputs {
@@ -103,6 +109,9 @@ class RobotCell {
   /// by the cell: the probe skips them, the certificate lists them.
   const std::vector<AllowedContactPair>& allowed_contacts() const { return allowed_contacts_; }
   bool contact_allowed(int link, int hull, int obstacle) const;
+  /// robot().self_collision_pairs as hull indices, same order: the probe decides each pair,
+  /// the step rule holds it to proofs/two-ball-cover.md#lemma-relative-motion.
+  const std::vector<SelfPairHulls>& self_pairs() const { return self_pairs_; }
   double tolerance() const { return settings_.tolerance; }
   geometry::OffsetShape offset_shape() const { return settings_.offset_shape; }
   /// Strict upper bound on |computed placed point - exact placed point| for every point the
@@ -131,7 +140,13 @@ class RobotCell {
   std::vector<geometry::CertifiedSphere> obstacle_spheres_W_;
   geometry::StaticObstacleIndex obstacle_index_;
   std::vector<AllowedContactPair> allowed_contacts_;
+  std::vector<SelfPairHulls> self_pairs_;
 };
+
+/// robot.self_collision_pairs as indices into `hulls`.
+/// \throws std::logic_error for a pair naming a hull `hulls` lacks.
+std::vector<SelfPairHulls> self_pair_hulls(const RobotModel& robot,
+                                           const std::vector<LinkHull>& hulls);
 
 /// Largest |coordinate| of any point the verifier places for this robot (hull and offset
 /// vertices, sphere centres), the input of the FK rounding bound.

@@ -39,6 +39,13 @@ struct HullRecord {
   std::vector<EvidenceRecord> evidence;
 };
 
+/// \brief One self-collision pair's proof at one step (Certificate::self_collision_pairs order).
+struct SelfPairRecord {
+  bool separated = false;  ///< false: no distance proven (the hulls meet, or the gap is ~0)
+  geometry::SeparationWitness witness;  ///< about the two placed raw hulls, from a to b
+  double lower_bound = 0.0;
+};
+
 struct TransitionRecord {
   bool certified = false;
   /// M_h, or on certified CP steps min(M_h, L_h) with the chord bound L_h
@@ -46,6 +53,11 @@ struct TransitionRecord {
   std::vector<double> hull_motion_bounds;
   std::vector<double> hull_allowances;     ///< r_k + r_{k+1}
   std::vector<GoverningTerm> governing;
+  /// Per self pair: M_a + M_b (rounded up) and d_k + d_{k+1} (rounded down), held to
+  /// M_a + M_b < d_k + d_{k+1} (proofs/two-ball-cover.md#lemma-relative-motion). Empty without
+  /// self pairs.
+  std::vector<double> self_pair_motion_bounds;
+  std::vector<double> self_pair_allowances;
 };
 
 struct StepCertificate {
@@ -53,6 +65,7 @@ struct StepCertificate {
   double parameter = 0.0;  ///< PTP: time since segment start; CP: path length from start
   Eigen::VectorXd q;
   std::vector<HullRecord> hulls;
+  std::vector<SelfPairRecord> self_pairs;  ///< one per self pair; empty without them
   TransitionRecord to_next;  ///< transition to the next step of the same segment
 };
 
@@ -85,6 +98,10 @@ struct Certificate {
   /// The inputs' link and obstacle names (docs/certificate.md#names): informative, re-derived
   /// and compared by the checker. Written only when non-empty.
   CertificateNames names;
+  /// Robot hull pairs verified for self-collision (the robot's self_collision_pairs), sorted;
+  /// the checker rejects a certificate whose list differs from the inputs'. Written only when
+  /// non-empty.
+  std::vector<SelfCollisionPair> self_collision_pairs;
   std::vector<SegmentCertificate> segments;
   std::vector<PathError> errors;
   /// What the certificate was made from (the file's "inputs": SHA-256 digests of the robot,

@@ -13,6 +13,7 @@
 
 #include "grpvss/geometry/interference_kind.hpp"
 #include "grpvss/model/path_program.hpp"
+#include "grpvss/model/robot_model.hpp"
 
 namespace grpvss::certify {
 
@@ -82,6 +83,15 @@ struct InterferenceEpisode {
   std::optional<double> cleared_time;
 };
 
+/// A run of consecutive steps at which the two hulls of one self-collision pair meet.
+struct SelfCollisionEpisode {
+  SelfCollisionPair pair;
+  int first_step = 0;
+  int last_step = 0;
+  double first_time = 0.0;  ///< s
+  double last_time = 0.0;
+};
+
 struct LinkStepRecord {
   double motion_bound = 0.0;   ///< upper bound on the path length of any point of the link
   double allowance = 0.0;      ///< what the step rule compared the bound with
@@ -106,6 +116,8 @@ struct StepRecord {
   std::vector<LinkStepRecord> links;  ///< index = link number 0..N (link 0 has bound 0)
   std::vector<InterferencePoint> interference_points;  ///< expanded robot vs obstacles
   std::vector<PairContact> contacts;  ///< every interfering pair, in (link, hull, obstacle) order
+  /// Self-collision pairs whose hulls meet at this step (the unexpanded robot), sorted.
+  std::vector<SelfCollisionPair> self_contacts;
   bool expanded_interferes = false;
   bool unexpanded_collides = false;
   bool refinement = false;  ///< inserted by the automatic refinement of Section 5.2.2
@@ -155,6 +167,8 @@ struct VerificationResult {
   std::vector<LinkClearanceSummary> link_clearances;
   /// Every run of steps in which a pair interferes, ordered by first step, then pair.
   std::vector<InterferenceEpisode> interference_episodes;
+  /// Every run of steps in which two hulls of the robot meet, ordered by first step, then pair.
+  std::vector<SelfCollisionEpisode> self_collision_episodes;
   std::optional<int> collision_step;  ///< the step whose unexpanded robot intersects
   double total_cycle_time = 0.0;
 };

@@ -132,6 +132,9 @@ struct CellDescription {
   CellRobot robot;
   std::vector<CellObstacle> obstacles;
   std::vector<AllowedContact> allowed_contacts;
+  /// `self_collision` (URDF robots): verify the robot's hull pairs two or more chain links
+  /// apart (docs/cell-format.md#self-collision); false turns it off.
+  bool self_collision = true;
   std::optional<double> tolerance;  ///< default tolerance Delta (cell units), > 0
   int tolerance_line = 0;
   CellMotion motion;

@@ -9,6 +9,7 @@
 
 #include <optional>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -64,6 +65,31 @@ struct Link {
   std::vector<HullPoints> hulls;  ///< points in the link frame L_i
 };
 
+/// \brief Two robot hulls on chain links at least two apart (link_a < link_b) whose distance is
+/// verified along the path (self-collision). proof: proofs/two-ball-cover.md#lemma-relative-motion
+struct SelfCollisionPair {
+  int link_a = 0;
+  int hull_a = 0;  ///< index within link_a's hulls
+  int link_b = 0;
+  int hull_b = 0;
+  friend bool operator<(const SelfCollisionPair& a, const SelfCollisionPair& b) {
+    return std::tie(a.link_a, a.hull_a, a.link_b, a.hull_b) <
+           std::tie(b.link_a, b.hull_a, b.link_b, b.hull_b);
+  }
+  friend bool operator==(const SelfCollisionPair& a, const SelfCollisionPair& b) {
+    return std::tie(a.link_a, a.hull_a, a.link_b, a.hull_b) ==
+           std::tie(b.link_a, b.hull_a, b.link_b, b.hull_b);
+  }
+};
+
+/// \brief Two links whose contact is not verified, with why: "adjacent" (neighbouring chain
+/// links), "SRDF" (its `disable_collisions`), "allowed_contacts" (the cell's).
+struct UnverifiedLinkPair {
+  std::string first;
+  std::string second;
+  std::string reason;
+};
+
 /// \brief Robot description, never modified by algorithms (Pinocchio's Model/Data split:
 /// per-query buffers live in kinematics::Workspace).
 struct RobotModel {
@@ -74,6 +100,11 @@ struct RobotModel {
   /// point: 0 for thesis files (their points are the model); URDF meshes, primitive shapes
   /// and frame changes round. proof: proofs/cell-geometry.md#lemma-geometry-error
   double hull_point_error = 0.0;
+  /// Hull pairs verified for self-collision, sorted and unique. Empty for thesis files and
+  /// when a cell turns self-collision off (docs/cell-format.md#self-collision).
+  std::vector<SelfCollisionPair> self_collision_pairs;
+  /// The link pairs not verified for self-collision (listed in every report).
+  std::vector<UnverifiedLinkPair> unverified_link_pairs;
 
   int joint_count() const { return static_cast<int>(joints.size()); }
 };
@@ -86,6 +117,24 @@ inline std::string link_label(const RobotModel& robot, int index) {
     return robot.links[i].name;
   }
   return "link " + std::to_string(index);
+}
+
+/// \brief How reports call hull `hull` of link `link`: the URDF link that declares it
+/// ("forearm_link"; a merged fixed link keeps its own name), else link_label().
+inline std::string hull_label(const RobotModel& robot, int link, int hull) {
+  const auto l = static_cast<std::size_t>(link);
+  const auto h = static_cast<std::size_t>(hull);
+  if (link >= 0 && hull >= 0 && l < robot.links.size() && h < robot.links[l].hulls.size() &&
+      !robot.links[l].hulls[h].name.empty()) {
+    return robot.links[l].hulls[h].name;
+  }
+  return link_label(robot, link);
+}
+
+/// \brief "forearm_link / base_link_inertia": how reports name a self-collision pair.
+inline std::string self_pair_label(const RobotModel& robot, const SelfCollisionPair& pair) {
+  return hull_label(robot, pair.link_b, pair.hull_b) + " / " +
+         hull_label(robot, pair.link_a, pair.hull_a);
 }
 
 }  // namespace grpvss

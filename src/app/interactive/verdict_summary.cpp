@@ -46,6 +46,30 @@ std::string episode_line(const certify::InterferenceEpisode& episode, const Mode
   return line + "\n";
 }
 
+// "self-collision: forearm_link / base_link_inertia, steps 5-7 (1.200-1.500 s)"
+std::string self_episode_line(const certify::SelfCollisionEpisode& episode,
+                              const ModelNames& names) {
+  const std::string pair =
+      names.robot != nullptr
+          ? self_pair_label(*names.robot, episode.pair)
+          : fmt::format("link {} hull {} / link {} hull {}", episode.pair.link_b,
+                        episode.pair.hull_b, episode.pair.link_a, episode.pair.hull_a);
+  return fmt::format("self-collision: {}, {} ({:.3f}-{:.3f} s)\n", pair,
+                     step_range(episode.first_step, episode.last_step), episode.first_time,
+                     episode.last_time);
+}
+
+// "self-collision not verified: base_link_inertia / shoulder_link (adjacent); ..."
+std::string unverified_pairs_line(const RobotModel& robot) {
+  if (robot.unverified_link_pairs.empty()) return "";
+  std::string line = "self-collision not verified:";
+  for (const UnverifiedLinkPair& pair : robot.unverified_link_pairs) {
+    line += fmt::format(" {} / {} ({});", pair.first, pair.second, pair.reason);
+  }
+  line.back() = '\n';
+  return line;
+}
+
 }  // namespace
 
 std::string ModelNames::link(int index) const {
@@ -86,7 +110,17 @@ std::string verdict_summary(const certify::VerificationResult& result, const Mod
     }
     text.back() = '\n';
   }
+  if (names.robot != nullptr) text += unverified_pairs_line(*names.robot);
   if (result.collision_step) text += fmt::format("first collision at step {}\n", *result.collision_step);
+  const std::size_t self_shown = std::min(result.self_collision_episodes.size(), kEpisodesShown);
+  for (std::size_t i = 0; i < self_shown; ++i) {
+    text += self_episode_line(result.self_collision_episodes[i], names);
+  }
+  if (result.self_collision_episodes.size() > self_shown) {
+    text += fmt::format("... and {} more self-collision episodes (JSON report: "
+                        "self_collision_episodes)\n",
+                        result.self_collision_episodes.size() - self_shown);
+  }
   const std::size_t shown = std::min(result.interference_episodes.size(), kEpisodesShown);
   for (std::size_t i = 0; i < shown; ++i) text += episode_line(result.interference_episodes[i], names);
   if (result.interference_episodes.size() > shown) {

@@ -1,0 +1,50 @@
+#pragma once
+// Self-collision at one configuration: for every self pair of the cell (two hulls on chain
+// links at least two apart), a certified lower bound of the distance between the two exactly
+// placed raw hulls, or their contact. proof: proofs/two-ball-cover.md#lemma-relative-motion
+
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "grpvss/certify/robot_cell.hpp"
+#include "grpvss/geometry/separation_witness.hpp"
+
+namespace grpvss::certify {
+
+/// \brief The proof about one self-collision pair (RobotCell::self_pairs()) at one
+/// configuration: both raw hulls placed, a separating slab or their contact.
+struct SelfPairEvidence {
+  bool separated = false;  ///< a witness proves the distance below
+  bool contact = false;    ///< the two hulls meet: a self-collision (never with `separated`)
+  geometry::SeparationWitness witness;  ///< valid when separated; from hull a to hull b
+  double lower_bound = 0.0;  ///< certified lower bound of the placed hulls' distance
+  /// Certified lower bound of the exactly placed hulls' distance: lower_bound minus twice the
+  /// placement error, at least 0. proof: proofs/cell-geometry.md#lemma-geometry-error
+  double distance = 0.0;
+};
+
+/// \brief d = lower_bound - 2 placement_error rounded down, at least 0: each placed hull is
+/// within placement_error of its exact placement (Hausdorff), so the exact hulls are farther
+/// apart than d. proof: proofs/cell-geometry.md#lemma-geometry-error
+double exact_distance_lower_bound(double lower_bound, double placement_error);
+
+/// \brief Per-query buffers and warm starts for the self pairs of one cell.
+class SelfPairProbe {
+ public:
+  explicit SelfPairProbe(const RobotCell& cell);
+  /// Decides every self pair at the link poses X_WL; `out` gets one entry per pair. True when
+  /// some pair's hulls meet.
+  bool probe(const std::vector<Eigen::Isometry3d>& X_WL, std::vector<SelfPairEvidence>& out);
+
+ private:
+  const std::vector<Eigen::Vector3d>& placed(int hull, const std::vector<Eigen::Isometry3d>& X_WL);
+
+  const RobotCell* cell_;
+  std::vector<std::vector<Eigen::Vector3d>> placed_raw_;  ///< [hull], this probe's
+  std::vector<char> is_placed_;
+  std::vector<Eigen::Vector3d> warm_normals_;  ///< [pair]
+  std::vector<char> has_warm_normal_;
+};
+
+}  // namespace grpvss::certify

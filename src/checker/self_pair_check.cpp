@@ -1,0 +1,90 @@
+#include "self_pair_check.hpp"
+
+#include "grpvss/exact/exact_contact.hpp"
+
+namespace grpvss::certify {
+namespace {
+
+std::string pair_where(const CheckedCell& cell, std::size_t p, const std::string& where) {
+  return where + " self pair " + self_pair_label(cell.robot(), cell.robot().self_collision_pairs[p]);
+}
+
+// Hull b's exact joint-sum bound over joints link_a+1..b: its path length in link a's frame.
+// proof: proofs/two-ball-cover.md#relative-frame, proofs/motion-bound.md#lemma-path-length
+Rational relative_bound(const CheckedCell& cell, const CheckedHull& a, const CheckedHull& b,
+                        const StepCertificate& from, const StepCertificate& to) {
+  Rational bound = 0;
+  for (int joint = a.link + 1; joint <= b.link; ++joint) {
+    const Rational increment = abs(exact(to.q[joint - 1]) - exact(from.q[joint - 1]));
+    bound += cell.robot().joints[static_cast<std::size_t>(joint - 1)].type == JointType::kRevolute
+                 ? increment * b.axis_radius[static_cast<std::size_t>(joint - 1)]
+                 : increment;
+  }
+  return bound;
+}
+
+}  // namespace
+
+std::vector<Rational> check_self_pair_evidence(
+    const CheckedCell& cell, const Certificate& header, const StepCertificate& step,
+    const std::vector<std::vector<Eigen::Vector3d>>& placed_raw, CheckLedger& ledger,
+    const std::string& where) {
+  const auto& pairs = cell.self_pairs();
+  std::vector<Rational> distance(pairs.size(), Rational(0));
+  if (pairs.empty()) return distance;
+  if (step.self_pairs.size() != pairs.size()) {
+    ledger.fail(where + ": expected a self-pair record for each of the " +
+                std::to_string(pairs.size()) + " self-collision pairs");
+    return distance;
+  }
+  const Rational twice_error = 2 * exact(header.placement_error);
+  for (std::size_t p = 0; p < pairs.size(); ++p) {
+    const SelfPairRecord& record = step.self_pairs[p];
+    const auto& a = placed_raw[static_cast<std::size_t>(pairs[p].first)];
+    const auto& b = placed_raw[static_cast<std::size_t>(pairs[p].second)];
+    if (!record.separated || a.empty() || b.empty()) continue;  // nothing proven: d = 0
+    ledger.decided();
+    if (!(record.lower_bound >= 0.0) ||
+        !geometry::check_witness_exactly(a, b, record.witness, record.lower_bound)) {
+      ledger.fail(pair_where(cell, p, where) + ": the separation witness does not hold");
+      continue;
+    }
+    // proof: proofs/cell-geometry.md#lemma-geometry-error (each hull within eps of its exact place)
+    const Rational d = exact(record.lower_bound) - twice_error;
+    distance[p] = d > 0 ? d : Rational(0);
+  }
+  return distance;
+}
+
+// proof: proofs/two-ball-cover.md#lemma-relative-motion
+void check_self_pair_transition(const CheckedCell& cell, const StepCertificate& from,
+                                const StepCertificate& to, const TransitionRecord& claimed,
+                                const std::vector<std::optional<Rational>>& hull_bounds,
+                                const std::vector<Rational>& distance_from,
+                                const std::vector<Rational>& distance_to, CheckLedger& ledger,
+                                ClaimFacts& facts, const std::string& where) {
+  const auto& pairs = cell.self_pairs();
+  const int joints = cell.robot().joint_count();
+  const bool configurations_usable = from.q.size() == joints && to.q.size() == joints;
+  for (std::size_t p = 0; p < pairs.size(); ++p) {
+    const auto a = static_cast<std::size_t>(pairs[p].first);
+    const auto b = static_cast<std::size_t>(pairs[p].second);
+    ledger.decided();
+    bool proven = false;
+    if (configurations_usable && p < distance_from.size() && p < distance_to.size()) {
+      Rational bound = relative_bound(cell, cell.hulls()[a], cell.hulls()[b], from, to);
+      if (a < hull_bounds.size() && b < hull_bounds.size() && hull_bounds[a] && hull_bounds[b] &&
+          *hull_bounds[a] + *hull_bounds[b] < bound) {
+        bound = *hull_bounds[a] + *hull_bounds[b];
+      }
+      proven = bound < distance_from[p] + distance_to[p];
+    }
+    if (proven) continue;
+    if (claimed.certified) {
+      ledger.fail(pair_where(cell, p, where) + ": the relative motion bound is not below d_k + d_k+1");
+    }
+    facts.all_transitions_certified = false;
+  }
+}
+
+}  // namespace grpvss::certify

@@ -1,0 +1,38 @@
+#pragma once
+// Self-collision in the certificate: at every step each self pair's separating slab is decided
+// exactly on the two raw hulls as the checker places them, giving a distance lower bound d;
+// across every transition M_a + M_b < d_k + d_{k+1} is decided exactly.
+// proof: proofs/two-ball-cover.md#lemma-relative-motion, proofs/cell-geometry.md#lemma-geometry-error
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "check_ledger.hpp"
+#include "checked_cell.hpp"
+#include "claim_facts.hpp"
+#include "grpvss/evidence/certificate.hpp"
+
+namespace grpvss::certify {
+
+/// \brief The exactly verified distance lower bound of every self pair at `step` (0 where
+/// nothing is proven), in CheckedCell::self_pairs() order. `placed_raw[i]`: hull i's raw
+/// vertices placed at the step (empty when the step check could not place it).
+std::vector<Rational> check_self_pair_evidence(
+    const CheckedCell& cell, const Certificate& header, const StepCertificate& step,
+    const std::vector<std::vector<Eigen::Vector3d>>& placed_raw, CheckLedger& ledger,
+    const std::string& where);
+
+/// \brief Decides min(M_a + M_b, M_b|a) < d_k + d_{k+1} for every self pair, M_a and M_b the
+/// hulls' verified motion bounds (`hull_bounds`, nullopt where none is proven), M_b|a the exact
+/// joint-sum bound of hull b over joints a+1..b (its motion in link a's frame). A failing pair
+/// fails the ledger when the transition claims to be certified; either way it makes it
+/// uncertified in `facts`.
+void check_self_pair_transition(const CheckedCell& cell, const StepCertificate& from,
+                                const StepCertificate& to, const TransitionRecord& claimed,
+                                const std::vector<std::optional<Rational>>& hull_bounds,
+                                const std::vector<Rational>& distance_from,
+                                const std::vector<Rational>& distance_to, CheckLedger& ledger,
+                                ClaimFacts& facts, const std::string& where);
+
+}  // namespace grpvss::certify
