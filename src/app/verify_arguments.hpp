@@ -20,6 +20,7 @@ struct VerifyArguments : batch::VerifyOptions {
     cp_speed = 0.0;
   }
   std::string cell_file;
+  std::string trajectory_file;  ///< --trajectory: a planner's joint trajectory instead of --path
   std::vector<std::string> package_paths;
   std::string out;
   std::string json;
@@ -35,7 +36,7 @@ struct VerifyArguments : batch::VerifyOptions {
 /// found -1"), unlike CLI::PositiveNumber's range text.
 CLI::Validator positive_number();
 
-/// --robot --env --path --tolerance --mode --offset --timing --profile-table --ik --cp-speed
+/// --robot --env --path|--trajectory --tolerance --mode --offset --timing --profile-table --ik --cp-speed
 void add_verify_options(CLI::App& command, VerifyArguments& args);
 void add_input_options(CLI::App& command, VerifyArguments& args);
 

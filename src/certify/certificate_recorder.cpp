@@ -16,6 +16,7 @@ CertificateRecorder::CertificateRecorder(const RobotCell& cell, const RunSetting
   certificate_.placement_error = cell.placement_error();
   certificate_.expansion_radius = cell.expansion_radius();
   certificate_.allowed_contacts = cell.allowed_contacts();
+  certificate_.trajectory_interpolation = settings.trajectory_interpolation;
 }
 
 StepCertificate CertificateRecorder::certificate_step(const ProbeResult& probe, int index,

@@ -16,9 +16,13 @@ double allowance_down(double radius_k, double radius_k1);
 /// every bound is within its allowance.
 /// `joint_linear`: the joints move along the straight line between the two configurations (a
 /// certified CP step, proofs/cp-joint-path.md#model), so the chord bound may be used.
+/// `joint_variation`: when not empty, per joint a bound of the joints' total variation over
+/// the step (a trajectory piece, possibly non-monotone), used in M_h instead of |dq|
+/// (proofs/joint-variation.md#theorem-variation-motion-bound).
 TransitionRecord judge_transition(const RobotCell& cell, const ProbeResult& from,
                                   const ProbeResult& to, bool cut_by_segment_end,
-                                  bool joint_linear);
+                                  bool joint_linear,
+                                  const Eigen::VectorXd& joint_variation = Eigen::VectorXd());
 
 /// \brief The transition as the step decision sees it inside a collision: a hull that collides
 /// at an end of the step is held only against the obstacles it does not collide with

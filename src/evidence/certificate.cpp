@@ -168,6 +168,9 @@ json certificate_to_json(const Certificate& certificate) {
     }
     document["allowed_contacts"] = allowed;
   }
+  if (!certificate.trajectory_interpolation.empty()) {
+    document["trajectory_interpolation"] = certificate.trajectory_interpolation;
+  }
   json errors = json::array();
   for (const PathError& error : certificate.errors) {
     errors.push_back({{"code", error.code}, {"segment", error.segment}, {"step", error.step},
@@ -225,6 +228,15 @@ Certificate certificate_header_from_json(const json& document, const std::string
       certificate.allowed_contacts.push_back({field<int>(pair, "link", where, file),
                                               field<int>(pair, "hull", where, file),
                                               field<int>(pair, "obstacle", where, file)});
+    }
+  }
+  if (document.contains("trajectory_interpolation")) {
+    certificate.trajectory_interpolation =
+        field<std::string>(document, "trajectory_interpolation", top, file);
+    if (certificate.trajectory_interpolation != "linear" &&
+        certificate.trajectory_interpolation != "cubic-hermite") {
+      throw InputError(file, 0, "trajectory_interpolation linear or cubic-hermite",
+                       certificate.trajectory_interpolation);
     }
   }
   certificate.inputs = input_names(document, file);

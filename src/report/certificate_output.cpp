@@ -77,6 +77,7 @@ void CertificateStream::finish(const certify::Certificate& certificate,
   head.claim = certificate.claim;
   head.collision_step = certificate.collision_step;
   head.allowed_contacts = certificate.allowed_contacts;
+  head.trajectory_interpolation = certificate.trajectory_interpolation;
   head.errors = certificate.errors;
   nlohmann::json document = certificate_document(head, inputs);
   document["segments"] = streamed_array_placeholder(0);

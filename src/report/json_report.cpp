@@ -84,7 +84,12 @@ class JsonWriter {
       out["target_axis"] = vector3(target.axis_W, "target axis");
       out["target_angle"] = finite(degrees(target.angle), "target angle");
     };
-    if (const auto* ptp_joint = std::get_if<PtpJointSegment>(&record.input.spec)) {
+    if (record.trajectory_piece) {
+      // A piece of a planner's joint trajectory: its target is the next waypoint.
+      out["kind"] = "trajectory-piece";
+      out["target_joint_values"] =
+          joint_values(std::get<PtpJointSegment>(record.input.spec).target, "joint target");
+    } else if (const auto* ptp_joint = std::get_if<PtpJointSegment>(&record.input.spec)) {
       out["kind"] = "ptp-joint";
       out["target_joint_values"] = joint_values(ptp_joint->target, "joint target");
       out["joint_velocity"] = joint_values(ptp_joint->velocity, "joint velocity");
@@ -211,7 +216,7 @@ class JsonWriter {
     const auto input = [](const InputFileDigest& digest) {
       return json{{"file", digest.file}, {"sha256", digest.sha256}};
     };
-    return {
+    json document = {
         {"schema", kReportSchemaId},
         {"program", {{"name", "grpvss"}, {"version", program_version()}}},
         {"generated_at", generated_at},
@@ -244,6 +249,9 @@ class JsonWriter {
         {"link_clearances", clearances},
         {"interference_episodes", episodes},
     };
+    // Only a trajectory run states it: path reports stay as they were.
+    if (!result_.motion_model.empty()) document["motion_model"] = result_.motion_model;
+    return document;
   }
 
  private:
