@@ -23,6 +23,8 @@
 #include "grpvss/motion/profile_table.hpp"
 #include "grpvss/report/input_digests.hpp"
 #include "grpvss/report/lower_bound_text.hpp"
+#include "grpvss/motion/joint_trajectory_source.hpp"
+#include "trajectory_inputs.hpp"
 #include "verify_arguments.hpp"
 
 namespace grpvss::app {
@@ -31,6 +33,7 @@ namespace {
 struct CheckArguments {
   ModelSources model;
   std::string path_file;
+  std::string trajectory_file;        ///< --trajectory instead of --path
   std::optional<std::string> timing;  ///< unset: the certificate's
   std::optional<std::string> ik;      ///< unset: "auto"
   std::string timing_text;            ///< what CLI11 parsed into `timing`
@@ -62,14 +65,21 @@ void refuse_other_ik(const CheckArguments& args, const certify::Certificate& hea
                    fmt::format("'{}' ({})", args.ik.value_or("auto"), ik_name));
 }
 
-void print_text(const certify::CheckReport& report, const RobotModel& robot) {
+// `trajectory_model`: the joint trajectory's motion model, empty for a path program.
+void print_text(const certify::CheckReport& report, const RobotModel& robot,
+                const std::string& trajectory_model) {
   fmt::print("{}: claim {} ({} inequalities decided exactly)\n",
              report.accepted ? "ACCEPTED" : "REJECTED", to_string(report.claim),
              report.inequalities_checked);
   for (const auto& failure : report.failures) fmt::print("  - {}\n", failure);
-  fmt::print("  motion model checked: {} PTP timing, CP speed {} per s, IK {}\n",
-             motion::to_string(report.timing), report.cp_speed,
-             report.ik.empty() ? "(not named)" : report.ik);
+  if (!trajectory_model.empty()) {
+    fmt::print("  motion model checked: {}, IK {}\n", trajectory_model,
+               report.ik.empty() ? "(not named)" : report.ik);
+  } else {
+    fmt::print("  motion model checked: {} PTP timing, CP speed {} per s, IK {}\n",
+               motion::to_string(report.timing), report.cp_speed,
+               report.ik.empty() ? "(not named)" : report.ik);
+  }
   // What the accepted certificate proves beyond its claim (the base, link 0, never moves).
   for (const auto& link : report.motion_clearances) {
     if (link.link == 0) continue;
@@ -80,29 +90,48 @@ void print_text(const certify::CheckReport& report, const RobotModel& robot) {
   }
 }
 
-void print_json(const certify::CheckReport& report) {
+void print_json(const certify::CheckReport& report, const std::string& trajectory_model) {
   nlohmann::json clearances = nlohmann::json::array();
   for (const auto& link : report.motion_clearances) {
     clearances.push_back({{"link", link.link}, {"lower_bound", link.lower_bound}, {"step", link.step}});
   }
+  nlohmann::json motion_model = {{"timing", motion::to_string(report.timing)},
+                                 {"cp_speed", report.cp_speed},
+                                 {"ik", report.ik}};
+  if (!trajectory_model.empty()) motion_model["trajectory"] = trajectory_model;
   fmt::print("{}\n", nlohmann::json{{"accepted", report.accepted},
                                     {"claim", to_string(report.claim)},
-                                    {"motion_model", {{"timing", motion::to_string(report.timing)},
-                                                      {"cp_speed", report.cp_speed},
-                                                      {"ik", report.ik}}},
+                                    {"motion_model", motion_model},
                                     {"inequalities_checked", report.inequalities_checked},
                                     {"failures", report.failures},
                                     {"motion_clearances", clearances}}
                          .dump(2));
 }
 
+std::string file_label(const std::string& path) {
+  const auto slash = path.find_last_of('/');
+  return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
 int run_check(const CheckArguments& args) {
   const ModelInputs model = load_model_inputs(args.model, args.quiet);
   const RobotModel& robot = model.robot;
   const Environment& environment = model.environment;
-  PathProgram program = io::read_path_file(args.path_file, robot);
-  convert_path_lengths(program, robot, model.model_units_per_cell_unit);
+  require_path_or_trajectory(args.path_file, args.trajectory_file);
   certify::CheckOptions options;
+  PathProgram program;
+  std::string trajectory_model;
+  const bool trajectory_run = !args.trajectory_file.empty();
+  if (trajectory_run) {
+    refuse_with_trajectory(args.timing.has_value(), "--timing");
+    refuse_with_trajectory(!args.profile_table.empty(), "--profile-table");
+    options.joint_trajectory = load_joint_trajectory(args.trajectory_file, robot);
+    trajectory_model =
+        motion::describe_motion_model(*options.joint_trajectory, file_label(args.trajectory_file));
+  } else {
+    program = io::read_path_file(args.path_file, robot);
+    convert_path_lengths(program, robot, model.model_units_per_cell_unit);
+  }
   if (!args.profile_table.empty()) {
     options.profile_table = std::make_shared<const motion::ProfileTable>(
         io::read_profile_table_file(args.profile_table));
@@ -112,10 +141,10 @@ int run_check(const CheckArguments& args) {
   const motion::KinematicsAccess kinematics = motion::make_kinematics_access(robot, ik);
   const report::InputDigests digests =
       report::digest_input_files(model.robot_digest_file, model.environment_digest_file,
-                                 args.path_file);
+                                 trajectory_run ? args.trajectory_file : args.path_file);
   options.input_digests = {{"robot", digests.robot.sha256},
                            {"environment", digests.environment.sha256},
-                           {"path", digests.path.sha256}};
+                           {trajectory_run ? "trajectory" : "path", digests.path.sha256}};
 
   // Read and checked one segment at a time: memory independent of the number of steps
   // (docs/reliability.md#resource-bounds).
@@ -125,8 +154,8 @@ int run_check(const CheckArguments& args) {
         refuse_other_timing(args, header);
         refuse_other_ik(args, header, ik->name());
       });
-  if (args.json && !args.quiet) print_json(report);
-  if (!args.json && !args.quiet) print_text(report, robot);
+  if (args.json && !args.quiet) print_json(report, trajectory_model);
+  if (!args.json && !args.quiet) print_text(report, robot, trajectory_model);
   return report.accepted ? kExitOk : kExitFinding;
 }
 
@@ -137,7 +166,11 @@ void register_check_certificate_command(CLI::App& app, int& exit_code) {
   auto* command = app.add_subcommand(
       "check-certificate", "Re-verify a certificate exactly from the input files alone");
   add_model_source_options(*command, args->model);
-  command->add_option("--path", args->path_file, "Path file (thesis A.1.3)")->required();
+  CLI::Option* path = command->add_option("--path", args->path_file, "Path file (thesis A.1.3)");
+  command
+      ->add_option("--trajectory", args->trajectory_file,
+                   "Planner joint trajectory the certificate was made for, instead of --path")
+      ->excludes(path);
   CLI::Option* timing = command->add_option(
       "--timing", args->timing_text,
       "PTP joint timing expected (default: the certificate's; another is refused)");

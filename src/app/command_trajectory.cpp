@@ -17,6 +17,7 @@
 #include "grpvss/motion/profile_table.hpp"
 #include "grpvss/motion/trajectory.hpp"
 #include "grpvss/report/trajectory_report.hpp"
+#include "trajectory_inputs.hpp"
 #include "verify_arguments.hpp"
 
 namespace grpvss::app {
@@ -25,6 +26,7 @@ namespace {
 struct TrajectoryArguments {
   ModelSources model;
   std::string path_file;
+  std::string trajectory_file;  ///< --trajectory instead of --path
   std::string timing;  ///< empty: independent for thesis files, synchronized for a cell
   std::string profile_table;
   std::string ik = "auto";
@@ -51,8 +53,35 @@ std::vector<double> requested_times(const TrajectoryArguments& args, double tota
   return times;
 }
 
+// Prints `trajectory` with the settings `args` ask for; exit 0 without errors, 1 with.
+int print_trajectory(const TrajectoryArguments& args, const ModelInputs& model,
+                     const motion::Trajectory& trajectory, const std::string& motion_file,
+                     const std::string& ik_name) {
+  report::TrajectoryReportSettings settings;
+  settings.robot_file = model.robot_label_file;
+  settings.path_file = motion_file;
+  settings.ik_name = ik_name;
+  settings.times = requested_times(args, trajectory.duration());
+  if (args.json)
+    fmt::print("{}\n", report::trajectory_json(model.robot, trajectory, settings).dump(2));
+  else
+    fmt::print("{}", report::trajectory_text(model.robot, trajectory, settings));
+  return trajectory.errors().empty() ? kExitOk : kExitFinding;
+}
+
+// A planner's joint trajectory: read, joints matched, limits checked, interpolated.
+int run_joint_trajectory(const TrajectoryArguments& args, const ModelInputs& model) {
+  refuse_with_trajectory(!args.timing.empty(), "--timing");
+  refuse_with_trajectory(!args.profile_table.empty(), "--profile-table");
+  const motion::Trajectory trajectory = motion::Trajectory::from_joint_motion(
+      model.robot, load_joint_trajectory(args.trajectory_file, model.robot));
+  return print_trajectory(args, model, trajectory, args.trajectory_file, "(not used)");
+}
+
 int run_trajectory(const TrajectoryArguments& args) {
   const ModelInputs model = load_model_inputs(args.model, false, ObstaclesNeeded::kNo);
+  require_path_or_trajectory(args.path_file, args.trajectory_file);
+  if (!args.trajectory_file.empty()) return run_joint_trajectory(args, model);
   const RobotModel& robot = model.robot;
   PathProgram program = io::read_path_file(args.path_file, robot);
   convert_path_lengths(program, robot, model.model_units_per_cell_unit);
@@ -69,16 +98,7 @@ int run_trajectory(const TrajectoryArguments& args) {
   const motion::Trajectory trajectory =
       motion::Trajectory::plan(robot, program, motion::make_kinematics_access(robot, ik), options);
 
-  report::TrajectoryReportSettings settings;
-  settings.robot_file = model.robot_label_file;
-  settings.path_file = args.path_file;
-  settings.ik_name = ik->name();
-  settings.times = requested_times(args, trajectory.duration());
-  if (args.json)
-    fmt::print("{}\n", report::trajectory_json(robot, trajectory, settings).dump(2));
-  else
-    fmt::print("{}", report::trajectory_text(robot, trajectory, settings));
-  return trajectory.errors().empty() ? kExitOk : kExitFinding;
+  return print_trajectory(args, model, trajectory, args.path_file, ik->name());
 }
 
 }  // namespace
@@ -91,7 +111,11 @@ void register_trajectory_command(CLI::App& app, int& exit_code) {
                       "Cell file: its robot (docs/cell-format.md)");
   command->add_option("--package-path", args->model.package_paths,
                       "Directory searched for package://NAME/... (repeatable; before the cell's)");
-  command->add_option("--path", args->path_file, "Path file (thesis A.1.3)")->required();
+  CLI::Option* path = command->add_option("--path", args->path_file, "Path file (thesis A.1.3)");
+  command
+      ->add_option("--trajectory", args->trajectory_file,
+                   "Planner joint trajectory (CSV or ROS JSON) instead of --path")
+      ->excludes(path);
   command->add_option("--timing", args->timing,
                       "PTP joint timing (default: independent for thesis files, synchronized "
                       "for a cell)")

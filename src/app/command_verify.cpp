@@ -18,6 +18,7 @@
 #include "grpvss/common/input_error.hpp"
 #include "grpvss/io/path_file.hpp"
 #include "grpvss/motion/kinematics_adapter.hpp"
+#include "grpvss/motion/trajectory.hpp"
 #include "grpvss/report/atomic_output.hpp"
 #include "grpvss/report/certificate_output.hpp"
 #include "grpvss/report/file_units.hpp"
@@ -30,6 +31,7 @@
 #include "output_paths.hpp"
 #include "progress_bar.hpp"
 #include "setup_cache_options.hpp"
+#include "trajectory_inputs.hpp"
 #include "verify_arguments.hpp"
 #include "viewer_html_stream.hpp"
 
@@ -52,6 +54,7 @@ std::string output_label(const std::string& path) {
 
 void print_summary(std::FILE* stream, const certify::VerificationRun& run,
                    const VerifyArguments& args, const ModelNames& names) {
+  if (!run.result.motion_model.empty()) fmt::print(stream, "motion: {}\n", run.result.motion_model);
   fmt::print(stream, "{}", verdict_summary(run.result, names));
   if (!args.out.empty()) fmt::print(stream, "thesis output file: {}\n", output_label(args.out));
   if (!args.json.empty()) fmt::print(stream, "JSON report: {}\n", output_label(args.json));
@@ -84,16 +87,51 @@ certify::RobotCell build_cell(const RobotModel& robot, const Environment& enviro
   return cell;
 }
 
+// A trajectory brings its own motion: options that would choose another, and the thesis
+// output file and step rule (made for path programs), are refused.
+void refuse_trajectory_conflicts(const VerifyArguments& args) {
+  if (args.trajectory_file.empty()) return;
+  refuse_with_trajectory(!args.timing.empty(), "--timing");
+  refuse_with_trajectory(!args.profile_table.empty(), "--profile-table");
+  refuse_with_trajectory(args.cp_speed > 0.0, "--cp-speed");
+  refuse_with_trajectory(!args.out.empty(), "--out",
+                         "the thesis output file describes path programs; use --json");
+  refuse_with_trajectory(args.mode == "thesis", "--mode thesis",
+                         "the thesis step rule is defined for PTP and CP segments");
+}
+
+// The motion: the path program, or the joint trajectory (`joint_motion` set).
+struct MotionInput {
+  PathProgram program;
+  std::shared_ptr<const motion::JointTrajectoryMotion> joint_motion;
+  std::string file;
+};
+
+MotionInput read_motion(const VerifyArguments& args, const ModelInputs& model) {
+  require_path_or_trajectory(args.path_file, args.trajectory_file);
+  refuse_trajectory_conflicts(args);
+  MotionInput input;
+  if (!args.trajectory_file.empty()) {
+    input.file = args.trajectory_file;
+    input.joint_motion = load_joint_trajectory(args.trajectory_file, model.robot);
+    return input;
+  }
+  input.file = args.path_file;
+  input.program = io::read_path_file(args.path_file, model.robot);
+  convert_path_lengths(input.program, model.robot, model.model_units_per_cell_unit);
+  return input;
+}
+
 int run_verify(const VerifyArguments& args) {
   const ModelInputs model = load_model_inputs(model_sources(args), args.quiet);
   const RobotModel& robot = model.robot;
   const Environment& environment = model.environment;
-  PathProgram program = io::read_path_file(args.path_file, robot);
-  convert_path_lengths(program, robot, model.model_units_per_cell_unit);
+  const MotionInput motion_input = read_motion(args, model);
+  const PathProgram& program = motion_input.program;
   const report::InputDigests digests = report::digest_input_files(
-      model.robot_digest_file, model.environment_digest_file, args.path_file);
+      model.robot_digest_file, model.environment_digest_file, motion_input.file);
   certify::SetupRequest request = make_setup_request(args, model);
-  request.path_label = file_label(args.path_file);
+  request.path_label = file_label(motion_input.file);
   const certify::VerificationSetup setup = certify::resolve_setup(request);
   const auto ik = motion::select_ik(parse_ik_choice(args.ik), robot, model.robot_label_file);
   if (!args.certificate.empty() && setup.run.mode != certify::ResolutionMode::kCertified) {
@@ -103,7 +141,7 @@ int run_verify(const VerifyArguments& args) {
   // clobbers (a file that appears meanwhile is refused then).
   const std::vector<RequestedOutput> requested = requested_outputs(args);
   std::vector<std::string> inputs = model.input_files;
-  inputs.push_back(args.path_file);
+  inputs.push_back(motion_input.file);
   inputs.push_back(args.profile_table);
   check_requested_outputs(requested, inputs, args.force);
 
@@ -139,8 +177,13 @@ int run_verify(const VerifyArguments& args) {
   {
     ProgressBar bar("verifying", !args.quiet && stderr_is_terminal());
     hooks.progress = bar.callback();
-    run = certify::verify(cell, program, motion::make_kinematics_access(robot, ik), setup.run,
-                          hooks);
+    const motion::KinematicsAccess kinematics = motion::make_kinematics_access(robot, ik);
+    if (motion_input.joint_motion) {
+      run = certify::verify(cell, motion::Trajectory::from_joint_motion(robot, motion_input.joint_motion),
+                            kinematics, setup.run, hooks);
+    } else {
+      run = certify::verify(cell, program, kinematics, setup.run, hooks);
+    }
   }
 
   const std::string generated_at = report::utc_timestamp_now();
@@ -154,7 +197,8 @@ int run_verify(const VerifyArguments& args) {
   if (certificate) {
     certificate->finish(run.certificate, {{"robot", digests.robot.sha256},
                                           {"environment", digests.environment.sha256},
-                                          {"path", digests.path.sha256},
+                                          {motion_input.joint_motion ? "trajectory" : "path",
+                                           digests.path.sha256},
                                           {"ik", ik->name()}});
   }
   if (!args.quiet) {

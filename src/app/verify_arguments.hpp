@@ -13,6 +13,7 @@ namespace grpvss::app {
 
 /// The inputs and choices (shared with `grpvss batch`'s manifests), and the outputs.
 struct VerifyArguments : batch::VerifyOptions {
+  std::string trajectory_file;  ///< --trajectory: a planner's joint trajectory instead of --path
   std::string out;
   std::string json;
   std::string certificate;
@@ -27,7 +28,7 @@ struct VerifyArguments : batch::VerifyOptions {
 /// found -1"), unlike CLI::PositiveNumber's range text.
 CLI::Validator positive_number();
 
-/// --robot --env --path --tolerance --mode --offset --timing --profile-table --ik --cp-speed
+/// --robot --env --path|--trajectory --tolerance --mode --offset --timing --profile-table --ik --cp-speed
 void add_verify_options(CLI::App& command, VerifyArguments& args);
 void add_input_options(CLI::App& command, VerifyArguments& args);
 

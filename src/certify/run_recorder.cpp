@@ -18,6 +18,7 @@ RunRecorder::RunRecorder(const RobotCell& cell, const RunSettings& settings, con
   result_.tolerance = cell.tolerance();
   result_.mode = settings.mode;
   result_.path_file_label = settings.path_label;
+  result_.motion_model = settings.motion_model;
   for (int link = 0; link < static_cast<int>(cell.robot().links.size()); ++link) {
     LinkClearanceSummary summary;
     summary.link = link;

@@ -102,7 +102,8 @@ bool CertifiedMarch::march_segment(const SegmentPath& path, int segment) {
     }
     probe_trial(*q1);
     const TransitionRecord transition =
-        judge_transition(cell_, current_, trial_, trial.s1 >= end_, path.is_cp());
+        judge_transition(cell_, current_, trial_, trial.s1 >= end_, path.is_cp(),
+                         path.joint_variation(s_, trial.s1));
     if (settle_step(transition, trial) == Outcome::kRetry) continue;
     const double taken = trial.s1 - s_;
     // Nor should the next CP proposal outgrow the model (the square law again).
@@ -156,9 +157,10 @@ double CertifiedMarch::predicted_ptp_step(const SegmentPath& path, double max_st
   for (std::size_t i = 0; has_trend && i < hulls.size(); ++i) {
     hulls[i].previous_radius = previous_radii_[i];
   }
-  const motion::PtpMotion& ptp = *path.segment().ptp;
   const double s = s_;
-  return certify::predicted_ptp_step([&](double candidate) { return ptp.joints_at(s + candidate); },
+  const Eigen::VectorXd& q = current_.q;
+  // PTP: the profile; a trajectory piece: its interpolation (the transition still decides).
+  return certify::predicted_ptp_step([&](double candidate) { return *path.q_at(s + candidate, q); },
                                      current_.q, max_step, proposal_weights_, hulls, has_trend,
                                      previous_step_);
 }

@@ -79,10 +79,11 @@ double allowance_down(double radius_k, double radius_k1) {
 // proof: proofs/two-ball-cover.md#corollary-step
 TransitionRecord judge_transition(const RobotCell& cell, const ProbeResult& from,
                                   const ProbeResult& to, bool cut_by_segment_end,
-                                  bool joint_linear) {
+                                  bool joint_linear, const Eigen::VectorXd& joint_variation) {
   TransitionRecord record;
   record.certified = true;
-  const Eigen::VectorXd dq = to.q - from.q;
+  // proof: proofs/joint-variation.md#theorem-variation-motion-bound
+  const Eigen::VectorXd dq = joint_variation.size() > 0 ? joint_variation : Eigen::VectorXd(to.q - from.q);
   const double two_delta = 2.0 * cell.tolerance();
   for (std::size_t i = 0; i < cell.hulls().size(); ++i) {
     const double bound = hull_motion_bound(cell, cell.hulls()[i], from, to, dq, joint_linear);

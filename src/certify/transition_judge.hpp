@@ -16,9 +16,13 @@ double allowance_down(double radius_k, double radius_k1);
 /// every bound is within its allowance.
 /// `joint_linear`: the joints move along the straight line between the two configurations (a
 /// certified CP step, proofs/cp-joint-path.md#model), so the chord bound may be used.
+/// `joint_variation`: when not empty, per joint a bound of the joints' total variation over
+/// the step (a trajectory piece, possibly non-monotone), used in M_h instead of |dq|
+/// (proofs/joint-variation.md#theorem-variation-motion-bound).
 TransitionRecord judge_transition(const RobotCell& cell, const ProbeResult& from,
                                   const ProbeResult& to, bool cut_by_segment_end,
-                                  bool joint_linear);
+                                  bool joint_linear,
+                                  const Eigen::VectorXd& joint_variation = Eigen::VectorXd());
 
 /// \brief Appends to `record` (its hull bounds filled) every self pair's M_a + M_b and
 /// d_k + d_{k+1}, and uncertifies it unless M_a + M_b < d_k + d_{k+1} for every pair.

@@ -2,9 +2,11 @@
 
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <utility>
 
 #include "certificate_recorder.hpp"
+#include "grpvss/motion/joint_trajectory_source.hpp"
 #include "run_recorder.hpp"
 #include "segment_path.hpp"
 #include "step_march.hpp"
@@ -19,8 +21,9 @@ class PathVerifier : public MarchListener {
  public:
   PathVerifier(const RobotCell& cell, const PathProgram& program,
                const motion::KinematicsAccess& kinematics, const RunSettings& settings,
-               const RunHooks& hooks)
+               const RunHooks& hooks, const motion::Trajectory* given_trajectory = nullptr)
       : cell_(cell),
+        given_trajectory_(given_trajectory),
         program_(program),
         kinematics_(kinematics),
         settings_(settings),
@@ -57,6 +60,7 @@ class PathVerifier : public MarchListener {
   void record_refused_segments(const motion::Trajectory& trajectory, bool path_went_on);
 
   const RobotCell& cell_;
+  const motion::Trajectory* given_trajectory_;  ///< a joint trajectory's; else planned
   const PathProgram& program_;
   const motion::KinematicsAccess& kinematics_;
   const RunSettings& settings_;
@@ -73,6 +77,7 @@ bool PathVerifier::verify_segment(const motion::SegmentTrajectory& segment) {
   record.start_q = segment.q_start;
   record.end_q = segment.q_end;
   record.cycle_time = segment.duration;
+  record.trajectory_piece = segment.kind == motion::SegmentKind::kTrajectoryPiece;
   const SegmentPath path(cell_.robot(), kinematics_, segment);
   if (certificate_) {
     certificate_->begin_segment(segment, path.parameter_end(), march_->current(),
@@ -106,8 +111,11 @@ void PathVerifier::record_refused_segments(const motion::Trajectory& trajectory,
 }
 
 VerificationRun PathVerifier::run() {
-  const motion::Trajectory trajectory =
-      motion::Trajectory::plan(cell_.robot(), program_, kinematics_, settings_.motion);
+  std::optional<motion::Trajectory> planned;
+  if (given_trajectory_ == nullptr) {
+    planned = motion::Trajectory::plan(cell_.robot(), program_, kinematics_, settings_.motion);
+  }
+  const motion::Trajectory& trajectory = planned ? *planned : *given_trajectory_;
   // Step 0: the start configuration (home), evaluated like every other step; it is never
   // printed in the thesis file, whose steps start at 1.
   recorder_.record_start(march_->start(trajectory.home()));
@@ -123,7 +131,39 @@ VerificationRun PathVerifier::run() {
   return run;
 }
 
+// The records' input of each piece of a joint trajectory: a joint target (the next waypoint,
+// no speeds), named by the waypoint's line.
+PathProgram pieces_as_program(const motion::JointTrajectoryMotion& motion) {
+  PathProgram program;
+  const JointTrajectory& trajectory = motion.trajectory();
+  for (int k = 1; k < trajectory.waypoint_count(); ++k) {
+    PathSegment piece;
+    piece.spec = PtpJointSegment{trajectory.positions[static_cast<std::size_t>(k)], {}};
+    piece.source_line = k < static_cast<int>(trajectory.source_lines.size())
+                            ? trajectory.source_lines[static_cast<std::size_t>(k)]
+                            : 0;
+    program.segments.push_back(std::move(piece));
+  }
+  return program;
+}
+
 }  // namespace
+
+VerificationRun verify(const RobotCell& cell, const motion::Trajectory& trajectory,
+                       const motion::KinematicsAccess& kinematics, const RunSettings& settings,
+                       const RunHooks& hooks) {
+  const motion::JointTrajectoryMotion* motion = trajectory.joint_motion();
+  if (motion == nullptr) throw std::invalid_argument("verify: not a joint trajectory");
+  if (settings.mode != ResolutionMode::kCertified) {
+    throw std::invalid_argument("verify: a joint trajectory is verified in certified mode only");
+  }
+  RunSettings trajectory_settings = settings;
+  trajectory_settings.motion_model = motion::describe_motion_model(*motion, settings.path_label);
+  trajectory_settings.trajectory_interpolation = motion::to_string(motion->interpolation());
+  const PathProgram program = pieces_as_program(*motion);
+  PathVerifier verifier(cell, program, kinematics, trajectory_settings, hooks, &trajectory);
+  return verifier.run();
+}
 
 VerificationRun verify(const RobotCell& cell, const PathProgram& program,
                        const motion::KinematicsAccess& kinematics, const RunSettings& settings,

@@ -1,5 +1,6 @@
 #include "grpvss/checker/certificate_checker.hpp"
 
+#include <algorithm>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -10,6 +11,9 @@
 #include "claim_check.hpp"
 #include "claim_facts.hpp"
 #include "grpvss/motion/cp_line.hpp"
+#include "grpvss/motion/exact_joint_variation.hpp"
+#include "grpvss/motion/joint_limit_check.hpp"
+#include "grpvss/motion/joint_trajectory_source.hpp"
 #include "grpvss/motion/trajectory.hpp"
 #include "self_pair_check.hpp"
 #include "step_evidence_check.hpp"
@@ -48,6 +52,12 @@ class Checker {
   std::optional<Eigen::VectorXd> planned_configuration(const motion::SegmentTrajectory& planned,
                                                        std::size_t k, const StepCertificate& step,
                                                        const StepCertificate* previous) const;
+  /// The joint trajectory of CheckOptions as the trajectory to check against.
+  motion::Trajectory joint_trajectory_motion();
+  /// A trajectory piece's exact joint variation bound over a transition; empty otherwise.
+  std::vector<Rational> piece_variation(const motion::SegmentTrajectory& planned,
+                                        const StepCertificate& from,
+                                        const StepCertificate& to) const;
   /// The certificate names other input files than the ones checked: its digests first.
   void reject_other_inputs();
 
@@ -108,11 +118,20 @@ void Checker::start() {
   }
   steps_.emplace(*cell_, certificate_, ledger_, facts_);
   transitions_.emplace(*cell_, certificate_, ledger_, facts_, motion_clearances_);
-  motion::MotionModel model;
-  model.timing = certificate_.timing;
-  model.cp_speed = certificate_.cp_speed;
-  model.table = options_.profile_table;
-  trajectory_ = motion::Trajectory::plan(robot_, program_, kinematics_, model);
+  if (options_.joint_trajectory) {
+    trajectory_ = joint_trajectory_motion();
+  } else {
+    if (!certificate_.trajectory_interpolation.empty()) {
+      ledger_.fail("the certificate was made for a joint trajectory (" +
+                   certificate_.trajectory_interpolation +
+                   " interpolation), the check is given a path program");
+    }
+    motion::MotionModel model;
+    model.timing = certificate_.timing;
+    model.cp_speed = certificate_.cp_speed;
+    model.table = options_.profile_table;
+    trajectory_ = motion::Trajectory::plan(robot_, program_, kinematics_, model);
+  }
   if (segment_count_ != trajectory_->segments().size() || !trajectory_->errors().empty()) {
     facts_.coverage_complete = false;
   }
@@ -128,6 +147,36 @@ void Checker::start() {
   }
 }
 
+// The joint trajectory's motion, re-derived: the interpolation must be the certificate's and
+// the limits must hold along it (the axis radii assume them).
+// proof: proofs/joint-variation.md#lemma-position-limits
+motion::Trajectory Checker::joint_trajectory_motion() {
+  const motion::JointTrajectoryMotion& motion = *options_.joint_trajectory;
+  const std::string given = motion::to_string(motion.interpolation());
+  if (certificate_.trajectory_interpolation != given) {
+    ledger_.fail("the certificate was made for " +
+                 (certificate_.trajectory_interpolation.empty()
+                      ? std::string("a path program")
+                      : "a joint trajectory with " + certificate_.trajectory_interpolation +
+                            " interpolation") +
+                 ", the check is given a joint trajectory with " + given + " interpolation");
+  }
+  ledger_.decided();
+  if (const auto violation = motion::first_limit_violation(motion, motion::position_limits_of(robot_))) {
+    ledger_.fail("the joint trajectory leaves the robot's limits: " +
+                 motion::describe(*violation, motion.trajectory()));
+  }
+  return motion::Trajectory::from_joint_motion(robot_, options_.joint_trajectory);
+}
+
+// A trajectory piece's step time: the piece's waypoint time + parameter, the next waypoint's
+// time at (or past) the piece's end, as the verifier places it.
+double piece_time(const motion::SegmentTrajectory& planned, double parameter) {
+  const std::vector<double>& breaks = planned.joint_motion->piece_breaks();
+  if (parameter >= planned.duration) return breaks[static_cast<std::size_t>(planned.number)];
+  return std::max(planned.start_time + parameter, breaks[static_cast<std::size_t>(planned.number - 1)]);
+}
+
 std::optional<Eigen::VectorXd> Checker::planned_configuration(
     const motion::SegmentTrajectory& planned, std::size_t k, const StepCertificate& step,
     const StepCertificate* previous) const {
@@ -135,6 +184,10 @@ std::optional<Eigen::VectorXd> Checker::planned_configuration(
   const double parameter_end = cp ? planned.cp->length() : planned.duration;
   if (k == 0) return planned.q_start;
   if (step.parameter == parameter_end) return planned.q_end;
+  if (planned.joint_motion) {
+    return motion::step_configuration(*planned.joint_motion, robot_,
+                                      piece_time(planned, step.parameter));
+  }
   if (!cp) return planned.ptp->joints_at(step.parameter);
   return motion::solve_within_limits(robot_, kinematics_, planned.cp->pose_at(step.parameter),
                                      previous->q);
@@ -184,7 +237,7 @@ void Checker::check_segment(const SegmentCertificate& segment,
                                            std::to_string(previous->step) + "-" +
                                            std::to_string(step.step);
       transitions_->check(*previous, step, previous_radius, radius, previous_placed, placed, cp,
-                          where_transition);
+                          where_transition, piece_variation(planned, *previous, step));
       check_self_pair_transition(*cell_, *previous, step, previous->to_next, transitions_->hull_bounds(),
                                  previous_distance, distance, ledger_, facts_, where_transition);
     }
@@ -195,6 +248,17 @@ void Checker::check_segment(const SegmentCertificate& segment,
     if (step.step == certificate_.collision_step) facts_.collision_step_q = step.q;
   }
   previous_step_index_ = segment.steps.back().step;
+}
+
+// proof: proofs/joint-variation.md#corollary-sampled-ends
+std::vector<Rational> Checker::piece_variation(const motion::SegmentTrajectory& planned,
+                                               const StepCertificate& from,
+                                               const StepCertificate& to) const {
+  const int joints = robot_.joint_count();
+  if (!planned.joint_motion || from.q.size() != joints || to.q.size() != joints) return {};
+  return motion::exact_variation_bound_from_samples(*planned.joint_motion,
+                                                    piece_time(planned, from.parameter), from.q,
+                                                    piece_time(planned, to.parameter), to.q);
 }
 
 void Checker::add_segment(const SegmentCertificate& segment) {
@@ -212,7 +276,7 @@ void Checker::add_segment(const SegmentCertificate& segment) {
 void Checker::reject_other_inputs() {
   if (certificate_.inputs.empty() || options_.input_digests.empty()) return;
   std::vector<std::string> differ;
-  for (const char* name : {"robot", "environment", "path"}) {
+  for (const char* name : {"robot", "environment", "path", "trajectory"}) {
     const auto recorded = certificate_.inputs.find(name);
     const auto given = options_.input_digests.find(name);
     const std::string recorded_digest = recorded == certificate_.inputs.end() ? "" : recorded->second;

@@ -15,7 +15,8 @@ void TransitionCheck::check(const StepCertificate& from, const StepCertificate& 
                             const std::vector<Rational>& radius_to,
                             const std::vector<std::vector<Eigen::Vector3d>>& placed_from,
                             const std::vector<std::vector<Eigen::Vector3d>>& placed_to,
-                            bool joint_linear, const std::string& where) {
+                            bool joint_linear, const std::string& where,
+                            const std::vector<Rational>& joint_variation) {
   const TransitionRecord& claimed = from.to_next;
   const std::vector<CheckedHull>& hulls = cell_.hulls();
   hull_bounds_.clear();
@@ -37,7 +38,7 @@ void TransitionCheck::check(const StepCertificate& from, const StepCertificate& 
   for (std::size_t i = 0; i < hulls.size(); ++i) {
     const CheckedHull& hull = hulls[i];
     const std::string hull_where = where + " hull " + std::to_string(i);
-    Rational bound = joint_sum_bound(hull, from, to);
+    Rational bound = joint_sum_bound(hull, from, to, joint_variation);
     const Rational allowance = radius_from[i] + radius_to[i];
     ledger_.decided(3);
     const Rational recorded = exact(claimed.hull_motion_bounds[i]);
@@ -72,10 +73,13 @@ void TransitionCheck::check(const StepCertificate& from, const StepCertificate& 
 
 // proof: proofs/motion-bound.md#lemma-motion-bound
 Rational TransitionCheck::joint_sum_bound(const CheckedHull& hull, const StepCertificate& from,
-                                          const StepCertificate& to) const {
+                                          const StepCertificate& to,
+                                          const std::vector<Rational>& joint_variation) const {
   Rational bound = 0;
   for (int joint = 1; joint <= hull.link; ++joint) {
-    const Rational increment = abs(exact(to.q[joint - 1]) - exact(from.q[joint - 1]));
+    const Rational increment = joint_variation.empty()
+                                   ? Rational(abs(exact(to.q[joint - 1]) - exact(from.q[joint - 1])))
+                                   : joint_variation[static_cast<std::size_t>(joint - 1)];
     bound += cell_.robot().joints[joint - 1].type == JointType::kRevolute
                  ? increment * hull.axis_radius[joint - 1]
                  : increment;

@@ -30,16 +30,19 @@ class TransitionCheck {
              const std::vector<Rational>& radius_from, const std::vector<Rational>& radius_to,
              const std::vector<std::vector<Eigen::Vector3d>>& placed_from,
              const std::vector<std::vector<Eigen::Vector3d>>& placed_to, bool joint_linear,
-             const std::string& where);
+             const std::string& where, const std::vector<Rational>& joint_variation = {});
 
   /// Per hull, the motion bound the last check() proved (>= every point's path length over
   /// the transition); nullopt where none was proven, empty when the record was unusable.
   const std::vector<std::optional<Rational>>& hull_bounds() const { return hull_bounds_; }
 
  private:
-  /// The exact joint-sum bound M_h of the hull over the transition.
+  /// The exact joint-sum bound M_h of the hull over the transition; with `joint_variation`
+  /// (a joint trajectory's piece: the exact variation bound per joint) in place of |dq|.
+  /// proof: proofs/joint-variation.md#theorem-variation-motion-bound
   Rational joint_sum_bound(const CheckedHull& hull, const StepCertificate& from,
-                           const StepCertificate& to) const;
+                           const StepCertificate& to,
+                           const std::vector<Rational>& joint_variation = {}) const;
   /// claimed >= max_v |placed_to[v] - placed_from[v]| + 2 placement_error + P_h / 3, exactly
   /// (proofs/motion-bound.md#lemma-joint-linear-chord).
   bool chord_bound_holds(const CheckedHull& hull, const StepCertificate& from,

@@ -213,6 +213,9 @@ json certificate_to_json(const Certificate& certificate) {
     }
     document["self_collision_pairs"] = pairs;
   }
+  if (!certificate.trajectory_interpolation.empty()) {
+    document["trajectory_interpolation"] = certificate.trajectory_interpolation;
+  }
   json errors = json::array();
   for (const PathError& error : certificate.errors) {
     errors.push_back({{"code", error.code}, {"segment", error.segment}, {"step", error.step},
@@ -281,6 +284,15 @@ Certificate certificate_header_from_json(const json& document, const std::string
       certificate.self_collision_pairs.push_back(
           {field<int>(pair, "link_a", where, file), field<int>(pair, "hull_a", where, file),
            field<int>(pair, "link_b", where, file), field<int>(pair, "hull_b", where, file)});
+    }
+  }
+  if (document.contains("trajectory_interpolation")) {
+    certificate.trajectory_interpolation =
+        field<std::string>(document, "trajectory_interpolation", top, file);
+    if (certificate.trajectory_interpolation != "linear" &&
+        certificate.trajectory_interpolation != "cubic-hermite") {
+      throw InputError(file, 0, "trajectory_interpolation linear or cubic-hermite",
+                       certificate.trajectory_interpolation);
     }
   }
   certificate.inputs = input_names(document, file);

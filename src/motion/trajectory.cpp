@@ -13,12 +13,14 @@ const char* to_string(SegmentKind kind) {
     case SegmentKind::kPtpJoint: return "ptp-joint";
     case SegmentKind::kPtpWorld: return "ptp-world";
     case SegmentKind::kCpLine: return "cp-line";
+    case SegmentKind::kTrajectoryPiece: return "trajectory-piece";
   }
   return "?";
 }
 
 std::optional<SegmentKind> segment_kind_from_string(std::string_view text) {
-  for (SegmentKind kind : {SegmentKind::kPtpJoint, SegmentKind::kPtpWorld, SegmentKind::kCpLine}) {
+  for (SegmentKind kind : {SegmentKind::kPtpJoint, SegmentKind::kPtpWorld, SegmentKind::kCpLine,
+                           SegmentKind::kTrajectoryPiece}) {
     if (text == to_string(kind)) return kind;
   }
   return std::nullopt;
@@ -136,14 +138,18 @@ std::vector<SegmentTrajectory>::const_iterator segment_containing(
 
 int Trajectory::segment_at(double t) const {
   if (segments_.empty()) return 0;
-  return segment_containing(segments_, std::clamp(t, 0.0, duration()))->number;
+  return segment_containing(segments_, std::clamp(t, segments_.front().start_time, duration()))->number;
 }
 
 std::optional<Eigen::VectorXd> Trajectory::joints_at(double t) const {
   if (segments_.empty()) return home_;
-  t = std::clamp(t, 0.0, duration());
+  t = std::clamp(t, segments_.front().start_time, duration());
   const SegmentTrajectory& piece = *segment_containing(segments_, t);
   const double local = t - piece.start_time;
+  if (piece.joint_motion) {
+    const JointTrajectoryMotion& motion = *piece.joint_motion;
+    return motion.q_at(std::clamp(t, motion.start_time(), motion.end_time()));
+  }
   if (piece.ptp) return piece.ptp->joints_at(local);
   const double l = std::min(options_.cp_speed * local, piece.cp->length());
   const auto sample = std::upper_bound(piece.cp_samples.begin(), piece.cp_samples.end(), l,
@@ -151,6 +157,30 @@ std::optional<Eigen::VectorXd> Trajectory::joints_at(double t) const {
   const CpSample& before = *(sample - 1);
   if (before.l == l) return before.q;
   return solve_within_limits(*robot_, kinematics_, piece.cp->pose_at(l), before.q);
+}
+
+Trajectory Trajectory::from_joint_motion(const RobotModel& robot,
+                                         std::shared_ptr<const JointTrajectoryMotion> motion) {
+  if (motion->joint_count() != robot.joint_count()) {
+    throw std::invalid_argument("Trajectory::from_joint_motion: joint count differs from the robot's");
+  }
+  Trajectory trajectory;
+  trajectory.robot_ = &robot;
+  trajectory.home_ = motion->q_at(motion->start_time());
+  const std::vector<double>& times = motion->piece_breaks();
+  for (int k = 0; k < motion->piece_count(); ++k) {
+    SegmentTrajectory piece;
+    piece.number = k + 1;
+    piece.kind = SegmentKind::kTrajectoryPiece;
+    piece.q_start = motion->q_at(times[k]);
+    piece.q_end = motion->q_at(times[k + 1]);
+    piece.start_time = times[k];
+    piece.duration = times[k + 1] - times[k];
+    piece.joint_motion = motion;
+    trajectory.segments_.push_back(std::move(piece));
+  }
+  trajectory.joint_motion_ = std::move(motion);
+  return trajectory;
 }
 
 }  // namespace grpvss::motion

@@ -79,6 +79,7 @@ void CertificateStream::finish(const certify::Certificate& certificate,
   head.allowed_contacts = certificate.allowed_contacts;
   head.names = certificate.names;
   head.self_collision_pairs = certificate.self_collision_pairs;
+  head.trajectory_interpolation = certificate.trajectory_interpolation;
   head.errors = certificate.errors;
   nlohmann::json document = certificate_document(head, inputs);
   document["segments"] = streamed_array_placeholder(0);

@@ -84,7 +84,12 @@ class JsonWriter {
       out["target_axis"] = vector3(target.axis_W, "target axis");
       out["target_angle"] = finite(degrees(target.angle), "target angle");
     };
-    if (const auto* ptp_joint = std::get_if<PtpJointSegment>(&record.input.spec)) {
+    if (record.trajectory_piece) {
+      // A piece of a planner's joint trajectory: its target is the next waypoint.
+      out["kind"] = "trajectory-piece";
+      out["target_joint_values"] =
+          joint_values(std::get<PtpJointSegment>(record.input.spec).target, "joint target");
+    } else if (const auto* ptp_joint = std::get_if<PtpJointSegment>(&record.input.spec)) {
       out["kind"] = "ptp-joint";
       out["target_joint_values"] = joint_values(ptp_joint->target, "joint target");
       out["joint_velocity"] = joint_values(ptp_joint->velocity, "joint velocity");
@@ -282,6 +287,8 @@ class JsonWriter {
     if (!robot_.self_collision_pairs.empty() || !robot_.unverified_link_pairs.empty()) {
       report["self_collision"] = self_collision();
     }
+    // Only a trajectory run states it: path reports stay as they were.
+    if (!result_.motion_model.empty()) report["motion_model"] = result_.motion_model;
     return report;
   }
 

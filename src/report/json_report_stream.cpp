@@ -27,6 +27,7 @@ certify::VerificationResult head_of(const certify::VerificationResult& result) {
   head.mode = result.mode;
   head.verdict = result.verdict;
   head.path_file_label = result.path_file_label;
+  head.motion_model = result.motion_model;
   head.start = result.start;
   head.errors = result.errors;
   head.link_clearances = result.link_clearances;

@@ -1,5 +1,7 @@
 #include "grpvss/report/trajectory_report.hpp"
 
+#include "grpvss/motion/joint_trajectory_source.hpp"
+
 #include "grpvss/motion/profile_table.hpp"
 
 #include <cmath>
@@ -16,6 +18,7 @@ const char* segment_title(motion::SegmentKind kind) {
     case motion::SegmentKind::kPtpJoint: return "PTP (JCS)";
     case motion::SegmentKind::kPtpWorld: return "PTP (WCS)";
     case motion::SegmentKind::kCpLine: return "CP";
+    case motion::SegmentKind::kTrajectoryPiece: return "TRAJECTORY PIECE";
   }
   return "?";
 }
@@ -52,14 +55,20 @@ std::string trajectory_text(const RobotModel& robot, const motion::Trajectory& t
                             const TrajectoryReportSettings& settings) {
   const motion::MotionModel& model = trajectory.motion_model();
   std::string out;
-  out += fmt::format("GRPVSS TRAJECTORY OF PATH {} FOR ROBOT {}\n", settings.path_file,
-                     settings.robot_file);
-  out += fmt::format("PTP TIMING: {}   PROFILES: {}   IK: {}\n",
-                     model.timing == motion::PtpTiming::kSynchronized ? "SYNCHRONIZED" : "INDEPENDENT",
-                     model.table ? "TABLE " + model.table->file_name() : "IDEAL TRAPEZOIDS",
-                     settings.ik_name);
-  out += fmt::format("CP SEGMENTS: NOMINAL SPEED {} PER S, SAMPLE SPACING {}\n",
-                     fixed2(model.cp_speed), fixed2(model.cp_spacing));
+  if (const motion::JointTrajectoryMotion* joint_motion = trajectory.joint_motion()) {
+    out += fmt::format("GRPVSS JOINT TRAJECTORY {} FOR ROBOT {}\n", settings.path_file,
+                       settings.robot_file);
+    out += fmt::format("MOTION: {}\n", motion::describe_motion_model(*joint_motion, settings.path_file));
+  } else {
+    out += fmt::format("GRPVSS TRAJECTORY OF PATH {} FOR ROBOT {}\n", settings.path_file,
+                       settings.robot_file);
+    out += fmt::format("PTP TIMING: {}   PROFILES: {}   IK: {}\n",
+                       model.timing == motion::PtpTiming::kSynchronized ? "SYNCHRONIZED" : "INDEPENDENT",
+                       model.table ? "TABLE " + model.table->file_name() : "IDEAL TRAPEZOIDS",
+                       settings.ik_name);
+    out += fmt::format("CP SEGMENTS: NOMINAL SPEED {} PER S, SAMPLE SPACING {}\n",
+                       fixed2(model.cp_speed), fixed2(model.cp_spacing));
+  }
   out += "JOINT VALUES IN DEGREES (REVOLUTE) AND LENGTH UNITS (PRISMATIC)\n";
   out += fmt::format("\nHOME JOINT VALUES {}\n", joint_row(robot, trajectory.home()));
   for (const motion::SegmentTrajectory& piece : trajectory.segments()) {
@@ -106,6 +115,10 @@ nlohmann::json trajectory_json(const RobotModel& robot, const motion::Trajectory
   doc["profile_table"] =
       model.table ? nlohmann::json(model.table->file_name()) : nlohmann::json(nullptr);
   doc["ik"] = settings.ik_name;
+  if (const motion::JointTrajectoryMotion* joint_motion = trajectory.joint_motion()) {
+    doc["motion_model"] = motion::describe_motion_model(*joint_motion, settings.path_file);
+    doc["interpolation"] = motion::to_string(joint_motion->interpolation());
+  }
   doc["cp_speed"] = model.cp_speed;
   doc["cp_spacing"] = model.cp_spacing;
   nlohmann::json units = nlohmann::json::array();

@@ -19,6 +19,7 @@
 #include "grpvss/model/path_program.hpp"
 #include "grpvss/model/robot_model.hpp"
 #include "grpvss/motion/kinematics_access.hpp"
+#include "grpvss/motion/trajectory.hpp"
 
 namespace grpvss::certify {
 
@@ -32,6 +33,17 @@ struct VerificationRun {
 /// were rejected by the readers; everything found about the path (thesis errors, collisions)
 /// is in the result.
 VerificationRun verify(const RobotCell& cell, const PathProgram& program,
+                       const motion::KinematicsAccess& kinematics, const RunSettings& settings,
+                       const RunHooks& hooks = {});
+
+/// \brief Verifies a planner's joint trajectory (motion::Trajectory::from_joint_motion; joints
+/// matched and limits checked by motion::certified_joint_motion) in certified mode: one
+/// segment per piece between waypoints, steps at times in [t_k, t_{k+1}], each transition's
+/// motion bound from the joints' total variation (non-monotone cubic pieces included;
+/// proofs/joint-variation.md#theorem-variation-motion-bound). The result and the certificate
+/// state the motion model (settings.path_label names the file).
+/// \throws std::invalid_argument for a planned path or thesis mode.
+VerificationRun verify(const RobotCell& cell, const motion::Trajectory& trajectory,
                        const motion::KinematicsAccess& kinematics, const RunSettings& settings,
                        const RunHooks& hooks = {});
 

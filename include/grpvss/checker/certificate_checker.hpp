@@ -17,6 +17,7 @@
 #include "grpvss/model/environment.hpp"
 #include "grpvss/model/path_program.hpp"
 #include "grpvss/model/robot_model.hpp"
+#include "grpvss/motion/joint_trajectory_motion.hpp"
 #include "grpvss/motion/kinematics_access.hpp"
 #include "grpvss/motion/profile_table.hpp"
 
@@ -49,7 +50,11 @@ struct CheckReport {
 
 struct CheckOptions {
   std::shared_ptr<const motion::ProfileTable> profile_table;  ///< when verify used one
-  /// SHA-256 of the files the check runs on ("robot", "environment", "path"). When the
+  /// A planner's joint trajectory (joints matched to the robot's): the motion the steps are
+  /// checked against instead of the path program's, with the exact variation bound
+  /// (docs/certificate.md#joint-trajectories). Null: the path program.
+  std::shared_ptr<const motion::JointTrajectoryMotion> joint_trajectory;
+  /// SHA-256 of the files the check runs on ("robot", "environment", "path" or "trajectory"). When the
   /// certificate names its inputs, each must match, else the certificate is rejected.
   std::map<std::string, std::string> input_digests;
   std::size_t max_failures = 20;

@@ -102,6 +102,10 @@ struct Certificate {
   /// the checker rejects a certificate whose list differs from the inputs'. Written only when
   /// non-empty.
   std::vector<SelfCollisionPair> self_collision_pairs;
+  /// The motion certified was a planner's joint trajectory (one "trajectory-piece" segment per
+  /// piece; a step's time is its piece's waypoint time + parameter): its interpolation,
+  /// "linear" or "cubic-hermite". Empty for a path program; written only when set.
+  std::string trajectory_interpolation;
   std::vector<SegmentCertificate> segments;
   std::vector<PathError> errors;
   /// What the certificate was made from (the file's "inputs": SHA-256 digests of the robot,

@@ -50,6 +50,11 @@ struct RunSettings {
   CpModelSettings cp_model;
   MarchLimits limits;
   std::string path_label = "PATH";  ///< printed in "... INPUT FROM FILE <label>"
+  /// A planner's joint trajectory run (set by certify::verify for a trajectory): the motion
+  /// model's statement for the reports and the interpolation for the certificate; empty for
+  /// a path program.
+  std::string motion_model;
+  std::string trajectory_interpolation;
 };
 
 /// The resolved setup of one verification.

@@ -140,6 +140,9 @@ struct SegmentRecord {
   int last_step = 0;
   double cycle_time = 0.0;
   bool simulated = false;
+  /// A piece of a planner's joint trajectory: `input` is a joint target (the next waypoint)
+  /// without speeds.
+  bool trajectory_piece = false;
 };
 
 struct LinkClearanceSummary {
@@ -158,6 +161,9 @@ struct VerificationResult {
   ResolutionMode mode = ResolutionMode::kCertified;
   Verdict verdict = Verdict::kClear;
   std::string path_file_label;  ///< printed in "... INPUT FROM FILE <label>"
+  /// "joint trajectory T, linear interpolation, N waypoints, t0..tn s" for a planner's joint
+  /// trajectory (docs/trajectories.md#verifying-a-trajectory); empty for a path program.
+  std::string motion_model;
   std::vector<SegmentRecord> segments;
   /// The configuration the path starts from (home), evaluated like every step; index 0.
   /// Not part of `steps`, whose indices run 1, 2, ... as the thesis numbers them.

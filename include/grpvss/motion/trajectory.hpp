@@ -13,6 +13,7 @@
 #include "grpvss/model/path_program.hpp"
 #include "grpvss/model/robot_model.hpp"
 #include "grpvss/motion/cp_line.hpp"
+#include "grpvss/motion/joint_trajectory_motion.hpp"
 #include "grpvss/motion/kinematics_access.hpp"
 #include "grpvss/motion/motion_model.hpp"
 #include "grpvss/motion/profile_table.hpp"
@@ -21,9 +22,12 @@
 
 namespace grpvss::motion {
 
-enum class SegmentKind { kPtpJoint = 1, kPtpWorld = 2, kCpLine = 3 };  ///< the thesis's IND
+/// The thesis's IND (1-3); 4: one piece of a planner's joint trajectory between two waypoints
+/// (docs/trajectories.md#verifying-a-trajectory).
+enum class SegmentKind { kPtpJoint = 1, kPtpWorld = 2, kCpLine = 3, kTrajectoryPiece = 4 };
 
-/// "ptp-joint", "ptp-world", "cp-line" (the reports' and the certificate's spelling).
+/// "ptp-joint", "ptp-world", "cp-line", "trajectory-piece" (the reports' and the certificate's
+/// spelling).
 const char* to_string(SegmentKind kind);
 /// The kind spelled `text`, or nullopt.
 std::optional<SegmentKind> segment_kind_from_string(std::string_view text);
@@ -38,6 +42,9 @@ struct SegmentTrajectory {
   std::optional<PtpMotion> ptp;  ///< PTP segments
   std::optional<CpLine> cp;      ///< CP segments
   std::vector<CpSample> cp_samples;  ///< CP segments: l = 0 .. L
+  /// Trajectory pieces: the whole joint trajectory; this segment is its piece number - 1, from
+  /// waypoint time start_time to the next waypoint's time (both exact doubles of the file).
+  std::shared_ptr<const JointTrajectoryMotion> joint_motion;
   double end_time() const { return start_time + duration; }
 };
 
@@ -51,11 +58,20 @@ class Trajectory {
   static Trajectory plan(const RobotModel& robot, const PathProgram& program,
                          const KinematicsAccess& kinematics, const MotionModel& options);
 
+  /// A planner's joint trajectory (joints in the robot's order, limits already checked) as a
+  /// path: one kTrajectoryPiece segment per piece, home = the first waypoint, path time = the
+  /// trajectory's time. No thesis errors. \throws std::invalid_argument if the joint count
+  /// differs from the robot's.
+  static Trajectory from_joint_motion(const RobotModel& robot,
+                                      std::shared_ptr<const JointTrajectoryMotion> motion);
+
   const std::vector<SegmentTrajectory>& segments() const { return segments_; }
   const std::vector<ThesisError>& errors() const { return errors_; }
   const Eigen::VectorXd& home() const { return home_; }
   /// The motion model the trajectory was planned with.
   const MotionModel& motion_model() const { return options_; }
+  /// The joint trajectory from_joint_motion() was given; null for a planned path.
+  const JointTrajectoryMotion* joint_motion() const { return joint_motion_.get(); }
   /// Total cycle time of the simulated segments.
   double duration() const { return segments_.empty() ? 0.0 : segments_.back().end_time(); }
 
@@ -75,6 +91,7 @@ class Trajectory {
   Eigen::VectorXd home_;
   std::vector<SegmentTrajectory> segments_;
   std::vector<ThesisError> errors_;
+  std::shared_ptr<const JointTrajectoryMotion> joint_motion_;  ///< from_joint_motion() only
 };
 
 }  // namespace grpvss::motion
