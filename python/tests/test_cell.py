@@ -36,7 +36,7 @@ def test_a_cell_loads_with_names_units_and_defaults():
         cell.robot.dh
 
 
-@pytest.mark.parametrize("name,verdict,steps", [("path-clear.txt", "CLEAR", 6),
+@pytest.mark.parametrize("name,verdict,steps", [("path-clear.txt", "CLEAR", 7),
                                                 ("path-collision.txt", "COLLISION", 21)])
 def test_cell_verify_is_the_clis(tmp_path, name, verdict, steps):
     path = str(SIXAXIS / name)

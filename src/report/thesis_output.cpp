@@ -82,6 +82,13 @@ std::string thesis_step_block(const certify::StepRecord& step,
 
 namespace {
 
+/// A.3 prints two decimals (0.50 in); a tolerance they would misstate (0.005 m as 0.01) is
+/// printed with the digits it needs.
+std::string tolerance_text(double tolerance) {
+  const std::string two_decimals = fixed2(tolerance);
+  return std::stod(two_decimals) == tolerance ? two_decimals : fmt::format("{}", tolerance);
+}
+
 /// The A.3 layout around the steps; where the steps come from (the result, or a stream's
 /// scratch file) and where the text goes are the caller's.
 class ThesisWriter {
@@ -95,7 +102,7 @@ class ThesisWriter {
 
   /// `steps_of(k)` emits segment k's step blocks; `total`, `collisions`: the closing lines.
   void render(const StepsOf& steps_of, int total, bool collisions) {
-    line(fmt::format("THE TOLERANCE VALUE = {}", fixed2(result_.tolerance)));
+    line(fmt::format("THE TOLERANCE VALUE = {}", tolerance_text(result_.tolerance)));
     blank();
     // The only line A.3 does not have: a certified run steps differently from the thesis.
     if (result_.mode == certify::ResolutionMode::kCertified) {

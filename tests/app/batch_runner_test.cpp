@@ -219,7 +219,7 @@ TEST_F(BatchRunner, CellJobsVerifyAsVerifyDoesWithTheCellsDefaultsAndNames) {
   BatchStatistics statistics;
   const std::vector<std::string> lines = run(jobs, 2, &statistics);
   ASSERT_EQ(lines.size(), 2u);
-  EXPECT_NE(lines[0].find("\"verdict\":\"CLEAR\",\"exit_code\":0,\"steps\":6,"), std::string::npos)
+  EXPECT_NE(lines[0].find("\"verdict\":\"CLEAR\",\"exit_code\":0,\"steps\":7,"), std::string::npos)
       << lines[0];
   EXPECT_NE(lines[0].find("\"link\":4,\"obstacle\":"), std::string::npos) << lines[0];
   EXPECT_NE(lines[0].find("\"link_name\":\"link_4\",\"obstacle_name\":\"post\"}"),

@@ -22,7 +22,7 @@
 
 namespace {
 
-const std::string kCell = std::string(GRPVSS_SOURCE_DIR) + "/tests/data/cells/ur5e-post.yaml";
+const std::string kCell = std::string(GRPVSS_SOURCE_DIR) + "/tests/data/cells/ur5e-post-no-self.yaml";
 const std::string kTrajectories = std::string(GRPVSS_SOURCE_DIR) + "/tests/data/trajectories/";
 
 using grpvss::test::CliRun;
@@ -103,7 +103,7 @@ TEST_F(JointTrajectoryCli, AClearCubicRosJsonTrajectoryIsClearAndItsCertificateA
   EXPECT_EQ(certificate["segments"][1]["parameter_end"], 1.5);
   const CliRun check = run_cli(dir(), "check-certificate " + inputs("ur5e-clear.json") + " c.json");
   EXPECT_EQ(check.exit_code, 0) << check.out << check.err;
-  EXPECT_EQ(check.out.rfind("ACCEPTED: claim CLEAR (399 inequalities decided exactly)\n", 0), 0u)
+  EXPECT_EQ(check.out.rfind("ACCEPTED: claim CLEAR (400 inequalities decided exactly)\n", 0), 0u)
       << check.out;
   EXPECT_TRUE(contains(check.out, "motion model checked: joint trajectory ur5e-clear.json, cubic "
                                   "Hermite interpolation, 3 waypoints, 0..3 s, IK UR closed form"))

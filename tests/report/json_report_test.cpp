@@ -251,8 +251,15 @@ std::string numbers(const json& values, const char* separator) {
   return text;
 }
 
+// Two decimals as A.3, unless they would misstate the tolerance (docs/thesis-output.md).
+std::string tolerance_from_json(const json& report) {
+  const double tolerance = report["tolerance"].get<double>();
+  const std::string two = fixed2(report["tolerance"]);
+  return std::stod(two) == tolerance ? two : fmt::format("{}", tolerance);
+}
+
 std::string thesis_text_from_json(const json& report) {
-  std::string out = "THE TOLERANCE VALUE = " + fixed2(report["tolerance"]) + "\n\n";
+  std::string out = "THE TOLERANCE VALUE = " + tolerance_from_json(report) + "\n\n";
   if (report["mode"] == "certified") out += "THE RESOLUTION MODE = CERTIFIED\n\n";
   for (const json& segment : report["segments"]) {
     out += fmt::format("THE {}TH SEGMENT OF THE PATH INPUT FROM FILE {}\n\n",
