@@ -98,15 +98,29 @@ Eigen::VectorXd vector_field(const json& object, const char* key, const std::str
   return Eigen::Map<const Eigen::VectorXd>(values.data(), static_cast<Eigen::Index>(values.size()));
 }
 
+/// A separated record's witness plane and its certified distance lower bound, the same
+/// fields for hull–obstacle evidence and self-collision pairs.
+void add_separation(json& item, const geometry::SeparationWitness& witness, double lower_bound) {
+  item["normal"] = {witness.normal.x(), witness.normal.y(), witness.normal.z()};
+  item["offset_a"] = witness.offset_a;
+  item["offset_b"] = witness.offset_b;
+  item["lower_bound"] = lower_bound;
+}
+
+/// Reads what add_separation wrote.
+void read_separation(const json& item, const std::string& where, const std::string& file,
+                     geometry::SeparationWitness& witness, double& lower_bound) {
+  const auto normal = field<std::vector<double>>(item, "normal", where, file);
+  if (normal.size() != 3) throw InputError(file, 0, "a 3-vector normal in " + where);
+  witness.normal = {normal[0], normal[1], normal[2]};
+  witness.offset_a = field<double>(item, "offset_a", where, file);
+  witness.offset_b = field<double>(item, "offset_b", where, file);
+  lower_bound = field<double>(item, "lower_bound", where, file);
+}
+
 json self_pair_to_json(const SelfPairRecord& record) {
   json item = {{"separated", record.separated}};
-  if (record.separated) {
-    item["normal"] = {record.witness.normal.x(), record.witness.normal.y(),
-                      record.witness.normal.z()};
-    item["offset_a"] = record.witness.offset_a;
-    item["offset_b"] = record.witness.offset_b;
-    item["lower_bound"] = record.lower_bound;
-  }
+  if (record.separated) add_separation(item, record.witness, record.lower_bound);
   return item;
 }
 
@@ -114,14 +128,7 @@ SelfPairRecord self_pair_from_json(const json& item, const std::string& where,
                                    const std::string& file) {
   SelfPairRecord record;
   record.separated = field<bool>(item, "separated", where, file);
-  if (record.separated) {
-    const auto normal = field<std::vector<double>>(item, "normal", where, file);
-    if (normal.size() != 3) throw InputError(file, 0, "a 3-vector normal in " + where);
-    record.witness.normal = {normal[0], normal[1], normal[2]};
-    record.witness.offset_a = field<double>(item, "offset_a", where, file);
-    record.witness.offset_b = field<double>(item, "offset_b", where, file);
-    record.lower_bound = field<double>(item, "lower_bound", where, file);
-  }
+  if (record.separated) read_separation(item, where, file, record.witness, record.lower_bound);
   return record;
 }
 
@@ -135,13 +142,7 @@ json certificate_step_to_json(const StepCertificate& step) {
       json item = {{"obstacle", record.obstacle},
                    {"expanded", record.expanded},
                    {"separated", record.separated}};
-      if (record.separated) {
-        item["normal"] = {record.witness.normal.x(), record.witness.normal.y(),
-                          record.witness.normal.z()};
-        item["offset_a"] = record.witness.offset_a;
-        item["offset_b"] = record.witness.offset_b;
-        item["lower_bound"] = record.lower_bound;
-      }
+      if (record.separated) add_separation(item, record.witness, record.lower_bound);
       evidence.push_back(item);
     }
     hulls.push_back({{"link", hull.link},
@@ -326,12 +327,7 @@ SegmentCertificate segment_certificate_from_json(const json& segment_json, const
         record.expanded = field<bool>(evidence_json, "expanded", step_where, file);
         record.separated = field<bool>(evidence_json, "separated", step_where, file);
         if (record.separated) {
-          const auto normal = field<std::vector<double>>(evidence_json, "normal", step_where, file);
-          if (normal.size() != 3) throw InputError(file, 0, "a 3-vector normal in " + step_where);
-          record.witness.normal = {normal[0], normal[1], normal[2]};
-          record.witness.offset_a = field<double>(evidence_json, "offset_a", step_where, file);
-          record.witness.offset_b = field<double>(evidence_json, "offset_b", step_where, file);
-          record.lower_bound = field<double>(evidence_json, "lower_bound", step_where, file);
+          read_separation(evidence_json, step_where, file, record.witness, record.lower_bound);
         }
         hull.evidence.push_back(record);
       }
