@@ -79,9 +79,9 @@ CellProbe::CellProbe(const RobotCell& cell)
     : cell_(&cell),
       workspace_(cell.robot()),
       self_pairs_(cell),
-      warm_normals_(cell.hulls().size() * cell.obstacles_W().size()),
-      has_warm_normal_(cell.hulls().size() * cell.obstacles_W().size(), 0),
-      climb_hints_(cell.hulls().size() * cell.obstacles_W().size(), 0),
+      warm_normals_(cell.hulls().size() * static_cast<std::size_t>(cell.obstacles().size())),
+      has_warm_normal_(cell.hulls().size() * static_cast<std::size_t>(cell.obstacles().size()), 0),
+      climb_hints_(cell.hulls().size() * static_cast<std::size_t>(cell.obstacles().size()), 0),
       unmoved_hulls_(cell.hulls().size()) {}
 
 bool CellProbe::reuse_unmoved_hull(int hull_index, const Eigen::Isometry3d& X_WL,
@@ -153,10 +153,10 @@ void CellProbe::append_points(int hull_index, int obstacle, ProbeResult& out) {
   // rounding; the points are report content, no claim rests on them
   // (docs/verification.md#interference-points).
   const Eigen::Isometry3d& X_WL = workspace_.X_WL[hull.link];
-  kinematics::place_points(X_WL.inverse(), cell.obstacles_W()[static_cast<std::size_t>(obstacle)],
+  kinematics::place_points(X_WL.inverse(), cell.obstacles().vertices_W(obstacle),
                placed_obstacle_L_);
   const geometry::ConvexPolytope obstacle_L = geometry::ConvexPolytope::from_points_like(
-      placed_obstacle_L_, cell.obstacle_polytopes_W()[static_cast<std::size_t>(obstacle)]);
+      placed_obstacle_L_, cell.obstacles().polytope_W(obstacle));
   const std::size_t found_before = out.interference_points.size();
   for (const auto& point : geometry::interference_points(
            cell.expanded_polytope_L(static_cast<std::size_t>(hull_index)), obstacle_L)) {
@@ -171,7 +171,7 @@ void CellProbe::append_points(int hull_index, int obstacle, ProbeResult& out) {
         placed_expanded_, cell.expanded_polytope_L(static_cast<std::size_t>(hull_index)));
   }
   for (const auto& point :
-       geometry::interference_points(*expanded_polytope_, cell.obstacle_polytopes_W()[obstacle])) {
+       geometry::interference_points(*expanded_polytope_, cell.obstacles().polytope_W(obstacle))) {
     out.interference_points.push_back(
         {hull.link, hull.hull, obstacle, point.point, point.kind});
   }
@@ -212,7 +212,7 @@ void CellProbe::probe_hull(int hull_index, bool with_points, ProbeResult& out) {
 // Candidate obstacles: all of them in small cells, the broadphase's otherwise.
 void CellProbe::collect_candidates(HullProbe& hull, HullState& state) {
   const RobotCell& cell = *cell_;
-  const int obstacle_count = static_cast<int>(cell.obstacles_W().size());
+  const int obstacle_count = cell.obstacles().size();
   candidates_.clear();
   state.broadphase_margin = kInfinity;
   hull.expanded_placed = obstacle_count > kBroadphaseThreshold;
@@ -221,7 +221,7 @@ void CellProbe::collect_candidates(HullProbe& hull, HullState& state) {
   } else {
     kinematics::place_points(hull.X_WL, hull.hull.expanded_L, placed_expanded_);
     state.broadphase_margin = 0.25 * cell.radii().radius(cell.radii().link_count() - 1, 0, 1);
-    cell.obstacle_index().candidates(geometry::Aabb::of_points(placed_expanded_),
+    cell.obstacles().index().candidates(geometry::Aabb::of_points(placed_expanded_),
                                      state.broadphase_margin, candidates_);
   }
   // Allowed contacts (a cell's allowed_contacts) are never verified; the certificate lists
@@ -248,7 +248,7 @@ void CellProbe::order_candidates(HullProbe& hull) {
                                        cell.placement_error());
   ordered_candidates_.clear();
   for (int o : candidates_) {
-    const geometry::CertifiedSphere& sphere = cell.obstacle_spheres_W()[o];
+    const geometry::CertifiedSphere& sphere = cell.obstacles().sphere_W(o);
     const double gap = (sphere.center - hull.center_W).norm() - hull.radius_W - sphere.radius_upper;
     ordered_candidates_.emplace_back(gap, o);
   }
@@ -260,7 +260,7 @@ void CellProbe::order_candidates(HullProbe& hull) {
 void CellProbe::decide_expanded(HullProbe& hull, int o, double gap_estimate,
                                 PairEvidence& evidence) {
   const RobotCell& cell = *cell_;
-  const geometry::CertifiedSphere& sphere = cell.obstacle_spheres_W()[o];
+  const geometry::CertifiedSphere& sphere = cell.obstacles().sphere_W(o);
   if (gap_estimate > 0.0 && gap_estimate >= hull.smallest_clearance &&
       sphere_witness(hull.center_W, hull.radius_W, sphere.center, sphere.radius_upper,
                      evidence.witness, evidence.lower_bound)) {
@@ -271,10 +271,10 @@ void CellProbe::decide_expanded(HullProbe& hull, int o, double gap_estimate,
     kinematics::place_points(hull.X_WL, hull.hull.expanded_L, placed_expanded_);
     hull.expanded_placed = true;
   }
-  const int obstacle_count = static_cast<int>(cell.obstacles_W().size());
+  const int obstacle_count = cell.obstacles().size();
   const std::size_t warm_slot = static_cast<std::size_t>(hull.index) * obstacle_count + o;
   const geometry::CertifiedPairResult result = geometry::certified_pair_query(
-      placed_expanded_, cell.obstacles_W()[o],
+      placed_expanded_, cell.obstacles().vertices_W(o),
       has_warm_normal_[warm_slot] ? &warm_normals_[warm_slot] : nullptr,
       &cell.expanded_skeleton(static_cast<std::size_t>(hull.index)), &climb_hints_[warm_slot]);
   if (result.contact == geometry::Contact::kSeparated && result.witness) {
@@ -312,7 +312,7 @@ void CellProbe::decide_raw(HullProbe& hull, int o, HullState& state, ProbeResult
   raw.obstacle = o;
   raw.expanded = false;
   const geometry::CertifiedPairResult raw_result =
-      geometry::certified_pair_query(placed_raw_, cell.obstacles_W()[o], nullptr);
+      geometry::certified_pair_query(placed_raw_, cell.obstacles().vertices_W(o), nullptr);
   if (raw_result.contact != geometry::Contact::kSeparated) {
     state.raw_collides = true;
     out.any_collision = true;

@@ -85,14 +85,7 @@ RobotCell::RobotCell(const RobotModel& robot, const Environment& environment,
   if (largest_link_coordinate(hulls_) > coordinate_bound) {
     throw std::logic_error("RobotCell: offset vertices exceed the coordinate bound of the FK error");
   }
-  for (const HullPoints& obstacle : environment.obstacles) {
-    // Hulled from its own vertices, so that vertex j is input point j: the obstacle is the
-    // template of its images in the link frames (CellProbe::append_points).
-    obstacles_W_.push_back(geometry::ConvexPolytope::from_points(obstacle.points).vertices());
-    obstacle_polytopes_W_.push_back(geometry::ConvexPolytope::from_points(obstacles_W_.back()));
-    obstacle_spheres_W_.push_back(geometry::certified_sphere(obstacles_W_.back()));
-  }
-  obstacle_index_ = geometry::StaticObstacleIndex(obstacles_W_);
+  obstacles_ = ObstacleSet(environment.obstacles);
   allowed_contacts_ = environment.allowed_contacts;
   self_pairs_ = self_pair_hulls(robot, hulls_);
 }

@@ -31,11 +31,11 @@ std::vector<double> ThesisStepRule::allowed_displacements(const Eigen::VectorXd&
   for (int link = 1; link <= robot.joint_count(); ++link) {
     double nearest = kInfinity;
     for (const auto& hull_W : workspace_.hull_points_W[link]) {
-      for (const auto& obstacle_W : cell_->obstacles_W()) {
-        nearest = std::min(nearest, geometry::gjk(hull_W, obstacle_W).distance);
+      for (int o = 0; o < cell_->obstacles().size(); ++o) {
+        nearest = std::min(nearest, geometry::gjk(hull_W, cell_->obstacles().vertices_W(o)).distance);
       }
     }
-    if (robot.links[link].hulls.empty() || cell_->obstacles_W().empty()) nearest = 0.0;
+    if (robot.links[link].hulls.empty() || cell_->obstacles().size() == 0) nearest = 0.0;
     allowed[link] = std::max(base, nearest);
   }
   return allowed;

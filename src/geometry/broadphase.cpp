@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <utility>
 
 #include "grpvss/geometry/directed_rounding.hpp"
 
@@ -34,13 +35,25 @@ Aabb Aabb::inflated(double margin) const {
   return out;
 }
 
-StaticObstacleIndex::StaticObstacleIndex(
-    const std::vector<std::vector<Eigen::Vector3d>>& obstacles_W) {
-  boxes_.reserve(obstacles_W.size());
+namespace {
+
+std::vector<Aabb> boxes_of(const std::vector<std::vector<Eigen::Vector3d>>& obstacles_W) {
+  std::vector<Aabb> boxes;
+  boxes.reserve(obstacles_W.size());
   for (const auto& points : obstacles_W) {
     if (points.empty()) throw std::invalid_argument("StaticObstacleIndex: obstacle without points");
-    boxes_.push_back(Aabb::of_points(points));
+    boxes.push_back(Aabb::of_points(points));
   }
+  return boxes;
+}
+
+}  // namespace
+
+StaticObstacleIndex::StaticObstacleIndex(
+    const std::vector<std::vector<Eigen::Vector3d>>& obstacles_W)
+    : StaticObstacleIndex(boxes_of(obstacles_W)) {}
+
+StaticObstacleIndex::StaticObstacleIndex(std::vector<Aabb> boxes_W) : boxes_(std::move(boxes_W)) {
   order_.resize(boxes_.size());
   for (int i = 0; i < static_cast<int>(order_.size()); ++i) order_[i] = i;
   if (!boxes_.empty()) {

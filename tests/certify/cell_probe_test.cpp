@@ -100,7 +100,7 @@ TEST(CellProbe, LinkFramePointsAreTheWorldFramePlacedOffsetsPoints) {
       std::vector<std::pair<std::string, Eigen::Vector3d>> reference, found;
       for (const auto& point : geometry::interference_points(
                geometry::ConvexPolytope::from_points(placed_W),
-               cell.obstacle_polytopes_W()[static_cast<std::size_t>(evidence.obstacle)])) {
+               cell.obstacles().polytope_W(evidence.obstacle))) {
         reference.emplace_back(geometry::to_string(point.kind), point.point);
       }
       for (const InterferencePoint& point : result.interference_points) {
@@ -111,7 +111,7 @@ TEST(CellProbe, LinkFramePointsAreTheWorldFramePlacedOffsetsPoints) {
       }
       ASSERT_FALSE(found.empty()) << "configuration " << k;
       ASSERT_FALSE(reference.empty()) << "configuration " << k;
-      const auto& obstacle_W = cell.obstacles_W()[static_cast<std::size_t>(evidence.obstacle)];
+      const auto& obstacle_W = cell.obstacles().vertices_W(evidence.obstacle);
       for (const auto& [kind, p] : found) {
         if (kind.rfind("vertex", 0) == 0) {
           EXPECT_TRUE(has_point_near(reference, kind, p)) << "configuration " << k;

@@ -11,6 +11,7 @@
 #include <Eigen/Core>
 
 #include "grpvss/certify/motion_bound.hpp"
+#include "grpvss/certify/obstacle_set.hpp"
 #include "grpvss/evidence/setup.hpp"
 #include "grpvss/geometry/broadphase.hpp"
 #include "grpvss/geometry/centroid_cull.hpp"
@@ -94,16 +95,8 @@ class RobotCell {
   const geometry::HullSkeleton& expanded_skeleton(std::size_t i) const {
     return expanded_skeletons_[i];
   }
-  /// Exact-hull vertices of obstacle o, world frame.
-  const std::vector<std::vector<Eigen::Vector3d>>& obstacles_W() const { return obstacles_W_; }
-  /// The obstacles' exact hulls, built once (interference points reuse them).
-  const std::vector<geometry::ConvexPolytope>& obstacle_polytopes_W() const {
-    return obstacle_polytopes_W_;
-  }
-  const std::vector<geometry::CertifiedSphere>& obstacle_spheres_W() const {
-    return obstacle_spheres_W_;
-  }
-  const geometry::StaticObstacleIndex& obstacle_index() const { return obstacle_index_; }
+  /// The obstacles: broadphase built, exact hulls and spheres built on first use.
+  const ObstacleSet& obstacles() const { return obstacles_; }
   const HullRadiusTable& radii() const { return radii_; }
   /// The environment's allowed contacts (robot hull / obstacle pairs never verified), kept
   /// by the cell: the probe skips them, the certificate lists them.
@@ -135,10 +128,7 @@ class RobotCell {
   std::vector<LinkHull> hulls_;
   std::vector<geometry::ConvexPolytope> expanded_polytopes_L_;
   std::vector<geometry::HullSkeleton> expanded_skeletons_;
-  std::vector<std::vector<Eigen::Vector3d>> obstacles_W_;
-  std::vector<geometry::ConvexPolytope> obstacle_polytopes_W_;
-  std::vector<geometry::CertifiedSphere> obstacle_spheres_W_;
-  geometry::StaticObstacleIndex obstacle_index_;
+  ObstacleSet obstacles_;
   std::vector<AllowedContactPair> allowed_contacts_;
   std::vector<SelfPairHulls> self_pairs_;
 };

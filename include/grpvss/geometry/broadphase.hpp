@@ -47,6 +47,8 @@ class StaticObstacleIndex {
   /// \brief Builds the tree over the exact boxes of \p obstacles_W (each non-empty).
   /// \throws std::invalid_argument if an obstacle has no points.
   explicit StaticObstacleIndex(const std::vector<std::vector<Eigen::Vector3d>>& obstacles_W);
+  /// \brief Builds the tree over the given boxes (box o is obstacle o's, world frame).
+  explicit StaticObstacleIndex(std::vector<Aabb> boxes_W);
 
   /// \brief Appends to \p out (cleared first) the indices of every obstacle whose box meets
   /// `query_W.inflated(margin)`, in increasing order. Every obstacle not listed is farther
