@@ -8,6 +8,7 @@
 
 #include "grpvss/exact/certified_query.hpp"
 #include "grpvss/geometry/directed_rounding.hpp"
+#include "grpvss/geometry/placed_box.hpp"
 #include "grpvss/exact/exact_contact.hpp"
 
 namespace grpvss::certify {
@@ -215,14 +216,16 @@ void CellProbe::collect_candidates(HullProbe& hull, HullState& state) {
   const int obstacle_count = cell.obstacles().size();
   candidates_.clear();
   state.broadphase_margin = kInfinity;
-  hull.expanded_placed = obstacle_count > kBroadphaseThreshold;
+  hull.expanded_placed = false;
   if (obstacle_count <= kBroadphaseThreshold) {
     for (int o = 0; o < obstacle_count; ++o) candidates_.push_back(o);
   } else {
-    kinematics::place_points(hull.X_WL, hull.hull.expanded_L, placed_expanded_);
+    // The offset's vertices are placed only if an obstacle is a candidate (decide_expanded).
+    // proof: proofs/fast-path.md#placed-box-enclosure
     state.broadphase_margin = 0.25 * cell.radii().radius(cell.radii().link_count() - 1, 0, 1);
-    cell.obstacles().index().candidates(geometry::Aabb::of_points(placed_expanded_),
-                                     state.broadphase_margin, candidates_);
+    cell.obstacles().index().candidates(
+        geometry::placed_box_enclosure(hull.hull.expanded_box_L, hull.X_WL),
+        state.broadphase_margin, candidates_);
   }
   // Allowed contacts (a cell's allowed_contacts) are never verified; the certificate lists
   // them and the checker skips the same pairs.

@@ -144,6 +144,7 @@ void RobotCell::build_offsets(const std::vector<geometry::ConvexPolytope>& raw_p
         expanded_polytopes_L_.back(), static_cast<int>(hulls_[i].expanded_L.size())));
     hulls_[i].raw_sphere_L = geometry::certified_sphere(hulls_[i].raw_L);
     hulls_[i].expanded_sphere_L = geometry::certified_sphere(hulls_[i].expanded_L);
+    hulls_[i].expanded_box_L = geometry::Aabb::of_points(hulls_[i].expanded_L);
   }
   if (offsets != nullptr) {
     std::vector<std::vector<Eigen::Vector3d>> expanded_L;

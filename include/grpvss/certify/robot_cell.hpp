@@ -32,6 +32,7 @@ struct LinkHull {
   std::vector<Eigen::Vector3d> expanded_L;  ///< vertices of H (+) P, P >= B(Delta + 2 eps)
   geometry::CertifiedSphere raw_sphere_L;
   geometry::CertifiedSphere expanded_sphere_L;
+  geometry::Aabb expanded_box_L;  ///< box of expanded_L (the broadphase places it, O(1))
 };
 
 /// \brief A self-collision pair as indices into RobotCell::hulls().
