@@ -110,7 +110,7 @@ TEST(BatchManifest, ACellJobNeedsOnlyThePathAndNamesNoThesisFiles) {
   EXPECT_EQ(manifest_error(R"({"cell":"c.yaml","robot":"r.txt","path":"p"})"),
             "cells/m.jsonl:1: expected either `cell`, or `robot` with `env`, not both");
   EXPECT_EQ(manifest_error(R"({"cell":"c.yaml","tolerance":1})"),
-            "cells/m.jsonl:1: expected a job with the key `path`");
+            "cells/m.jsonl:1: expected exactly one of `path` and `trajectory`, found neither");
   EXPECT_EQ(manifest_error(R"({"cell":"c.yaml","path":"p","cp_speed":0})"),
             "cells/m.jsonl:1: expected `cp_speed`: a finite number > 0, found 0");
   EXPECT_EQ(manifest_error(R"({"env":"e.txt","path":"p","tolerance":1})"),
@@ -121,7 +121,7 @@ TEST(BatchManifest, ACellJobNeedsOnlyThePathAndNamesNoThesisFiles) {
 
 TEST(BatchManifest, MissingKeysWrongTypesAndBadChoicesNameTheLine) {
   EXPECT_EQ(manifest_error(R"({"robot":"r.txt","env":"e.txt","tolerance":1})"),
-            "cells/m.jsonl:1: expected a job with the key `path`");
+            "cells/m.jsonl:1: expected exactly one of `path` and `trajectory`, found neither");
   EXPECT_EQ(manifest_error(R"({"robot":"r.txt","env":"e.txt","path":"p","tolerance":"1"})"),
             "cells/m.jsonl:1: expected `tolerance`: a number, found a string");
   EXPECT_EQ(manifest_error(R"({"robot":["r"],"env":"e.txt","path":"p","tolerance":1})"),
