@@ -1,5 +1,5 @@
-"""GRPVSS from Python: load cells and the thesis files, forward kinematics, verify paths,
-certificates.
+"""GRPVSS from Python: load cells and the thesis files, forward kinematics, verify paths and
+planners' joint trajectories (numpy arrays or CSV / ROS JSON files), certificates.
 
 The native module ``_grpvss`` (pybind11, python/src/) calls the C++ library exactly as the
 ``grpvss`` command does; this package adds keyword arguments, file-name conveniences and the
@@ -11,15 +11,21 @@ import tempfile
 
 import _grpvss as _native
 from _grpvss import (Certificate, CheckedMotionClearance, CheckReport, Environment, Episode,
-                     InterferencePoint, LinkClearance, Path, PathError, Result, Robot, Segment,
-                     Verdict, exit_code_of)
+                     InterferencePoint, JointTrajectory, LinkClearance, Path, PathError, Result,
+                     Robot, Segment, Verdict, exit_code_of)
 
 __all__ = [
     "InputError", "Verdict", "Robot", "Environment", "Path", "Result", "Certificate",
     "CheckReport", "Episode", "PathError", "LinkClearance", "Segment", "InterferencePoint",
     "CheckedMotionClearance", "VerificationSession", "Cell", "load_cell", "load_robot",
     "load_environment", "load_path", "verify", "check_certificate", "exit_code_of",
+    "JointTrajectory", "joint_trajectory", "load_trajectory",
 ]
+
+#: The label of a trajectory given as arrays: the name reports give it (``motion_model``,
+#: ``inputs.path.file``) and errors name. Save the arrays under this name
+#: (:meth:`JointTrajectory.save`) and ``grpvss verify --trajectory`` reports them identically.
+ARRAYS_LABEL = "trajectory.csv"
 
 #: The verdict for a path that is not qualified (thesis errors 1-6, errors 7-9): exit code 4.
 #: ``Verdict.NOT_QUALIFIED`` is the same value; its ``name`` is ``"ERROR"``, as in the reports.
@@ -82,9 +88,36 @@ class Cell:
             path, timing=timing, cp_speed=cp_speed, ik=ik, profile_table=profile_table)
 
     def check_certificate(self, path, certificate, timing=None, ik=None, profile_table=None):
-        """:func:`check_certificate` against this cell's robot and obstacles."""
+        """:func:`check_certificate` against this cell's robot and obstacles (``path``: a
+        path, or a :class:`JointTrajectory`)."""
         return check_certificate(self.robot, self.environment, path, certificate,
                                  timing=timing, ik=ik, profile_table=profile_table)
+
+    def verify_trajectory(self, times, positions, velocities=None, joint_names=None,
+                          tolerance=None, mode="certified", offset="auto", ik="auto",
+                          label=ARRAYS_LABEL):
+        """Verifies a joint trajectory given as arrays (:func:`joint_trajectory`) as
+        ``grpvss verify --cell --trajectory`` verifies its CSV form; returns a :class:`Result`
+        (``result.trajectory`` re-checks the certificate)."""
+        trajectory = joint_trajectory(self.robot, times, positions, velocities=velocities,
+                                      joint_names=joint_names, label=label)
+        return self.session(tolerance, mode=mode, offset=offset).verify_joint_trajectory(
+            trajectory, ik=ik)
+
+    def verify_trajectory_file(self, file, tolerance=None, mode="certified", offset="auto",
+                               ik="auto"):
+        """Verifies a trajectory file (CSV or ROS JSON) as ``grpvss verify --cell --trajectory
+        FILE`` does."""
+        return self.session(tolerance, mode=mode, offset=offset).verify_joint_trajectory(
+            load_trajectory(file, self.robot), ik=ik)
+
+    def check_trajectory_certificate(self, trajectory, certificate, ik=None):
+        """Re-verifies a trajectory's certificate, as ``grpvss check-certificate --cell
+        --trajectory`` does. ``trajectory``: a :class:`JointTrajectory` (``result.trajectory``,
+        or :func:`joint_trajectory` of the same arrays) or a trajectory file."""
+        return check_certificate(self.robot, self.environment, _as_trajectory(trajectory,
+                                                                              self.robot),
+                                 certificate, ik=ik)
 
     def __repr__(self):
         return (f"<grpvss.Cell {self.file}: {self.robot.joint_count} joints, "
@@ -104,6 +137,39 @@ def load_cell(file, package_paths=()):
 def load_path(file, robot):
     """Reads a thesis path file (Appendix A.1.3) for ``robot`` (a :class:`Robot` or a file)."""
     return _native.load_path(os.fspath(file), _as_robot(robot))
+
+
+def joint_trajectory(robot, times, positions, velocities=None, joint_names=None,
+                     label=ARRAYS_LABEL):
+    """A joint trajectory for ``robot`` from arrays: ``times`` (N,) in s, ``positions`` (N, J)
+    and optionally ``velocities`` (N, J) in rad (m) and rad/s (m/s); columns in
+    ``joint_names`` order, by default ``robot.joint_names``. Interpolated as
+    docs/trajectories.md section 10 says (linear, or cubic Hermite with velocities).
+    The arrays are validated, digested and verified as their canonical CSV text
+    (:meth:`JointTrajectory.to_csv`): a shape error raises :class:`InputError` naming the
+    argument (``file`` ``"positions"``); any other (times not increasing, a joint the robot
+    does not have, a position limit left along the interpolation) names ``label`` and the line
+    of that text: line 1 the joint names, line k+2 waypoint k (``times[k]``)."""
+    import numpy
+    velocities = None if velocities is None else numpy.asarray(velocities, dtype=float)
+    names = None if joint_names is None else [str(name) for name in joint_names]
+    return _native._trajectory_from_arrays(numpy.asarray(times, dtype=float),
+                                           numpy.asarray(positions, dtype=float), velocities,
+                                           names, _as_robot(robot), label)
+
+
+def load_trajectory(file, robot):
+    """Reads a trajectory file (CSV or ROS ``JointTrajectory`` JSON, docs/trajectories.md
+    section 9) for ``robot``, as ``grpvss verify --trajectory`` reads it."""
+    return _native._load_trajectory(os.fspath(file), _as_robot(robot))
+
+
+def _as_trajectory(trajectory, robot):
+    if not isinstance(trajectory, JointTrajectory):
+        return load_trajectory(trajectory, robot)
+    if trajectory.robot is robot:
+        return trajectory
+    raise ValueError(f"{trajectory.file} was loaded for another robot ({trajectory.robot.file})")
 
 
 def _as_robot(robot):
@@ -155,6 +221,24 @@ class VerificationSession:
         return self._native._verify(_as_path(path, self.robot), timing, float(cp_speed), ik,
                                     table)
 
+    def verify_joint_trajectory(self, trajectory, ik="auto"):
+        """Verifies a :class:`JointTrajectory` (or a trajectory file) and returns a
+        :class:`Result`, as ``grpvss verify --trajectory`` does (certified mode only)."""
+        timing = "synchronized" if self.robot.from_cell else "independent"
+        return self._native._verify_trajectory(_as_trajectory(trajectory, self.robot), timing,
+                                               self._cp_speed, ik)
+
+    def verify_trajectory(self, times, positions, velocities=None, joint_names=None, ik="auto",
+                          label=ARRAYS_LABEL):
+        """Verifies a joint trajectory given as arrays (:func:`joint_trajectory`)."""
+        return self.verify_joint_trajectory(
+            joint_trajectory(self.robot, times, positions, velocities=velocities,
+                             joint_names=joint_names, label=label), ik=ik)
+
+    def verify_trajectory_file(self, file, ik="auto"):
+        """Verifies a trajectory file (CSV or ROS JSON)."""
+        return self.verify_joint_trajectory(load_trajectory(file, self.robot), ik=ik)
+
 
 def verify(robot, environment, path, tolerance, mode="certified", offset="auto",
            timing=None, cp_speed=None, ik="auto", profile_table=None):
@@ -169,9 +253,15 @@ def check_certificate(robot, environment, path, certificate, timing=None, ik=Non
     """Re-verifies a certificate (a file, or a :class:`Certificate`) exactly from the inputs
     alone, as ``grpvss check-certificate`` does; returns a :class:`CheckReport`
     (``accepted``, ``messages``, ``exit_code``, ...). ``timing`` and ``ik``: what the caller
-    expects (unset: the certificate's; another is refused with :class:`InputError`)."""
+    expects (unset: the certificate's; another is refused with :class:`InputError`).
+    ``path`` may be a :class:`JointTrajectory` (arrays or a file, as verified): its
+    certificate is checked as ``grpvss check-certificate --trajectory`` checks it, and
+    ``timing`` and ``profile_table`` are refused (the trajectory is the motion)."""
     robot = _as_robot(robot)
     environment = _as_environment(environment)
+    if isinstance(path, JointTrajectory):
+        return _check_trajectory(robot, environment, _as_trajectory(path, robot), certificate,
+                                 timing, ik, profile_table)
     path = _as_path(path, robot)
     table = os.fspath(profile_table) if profile_table is not None else ""
     if not isinstance(certificate, Certificate):
@@ -181,3 +271,20 @@ def check_certificate(robot, environment, path, certificate, timing=None, ik=Non
         file = os.path.join(folder, "certificate.json")
         certificate.save(file)
         return _native._check_certificate_file(robot, environment, path, file, timing, ik, table)
+
+
+def _check_trajectory(robot, environment, trajectory, certificate, timing, ik, profile_table):
+    for option, given in (("timing", timing), ("profile_table", profile_table)):
+        if given is not None:
+            raise InputError(f"{option}:0: expected no {option} with a trajectory (the "
+                             "trajectory's waypoint times and interpolation are the motion), "
+                             f"found {option}", option, 0,
+                             f"no {option} with a trajectory", option)
+    if not isinstance(certificate, Certificate):
+        return _native._check_trajectory_certificate_file(robot, environment, trajectory,
+                                                          os.fspath(certificate), ik)
+    with tempfile.TemporaryDirectory(prefix="grpvss-certificate-") as folder:
+        file = os.path.join(folder, "certificate.json")
+        certificate.save(file)
+        return _native._check_trajectory_certificate_file(robot, environment, trajectory, file,
+                                                          ik)

@@ -16,6 +16,7 @@
 #include "grpvss/model/environment.hpp"
 #include "grpvss/model/path_program.hpp"
 #include "grpvss/model/robot_model.hpp"
+#include "grpvss/motion/joint_trajectory_motion.hpp"
 
 namespace grpvss::python {
 
@@ -41,6 +42,17 @@ struct LoadedPath {
   std::string file;
   std::string sha256;
   PathProgram program;
+  std::shared_ptr<LoadedRobot> robot;
+};
+
+/// A planner's joint trajectory, matched to one robot's joints and checked against its limits
+/// (batch::joint_motion_of, the loader `grpvss verify --trajectory` uses): read from a file, or
+/// given as arrays, which are verified as their canonical CSV text (io::render_trajectory_csv).
+struct LoadedTrajectory {
+  std::string file;    ///< the file read; for arrays, the label naming them in reports and errors
+  std::string sha256;  ///< of the file's bytes, or of `csv` for arrays
+  std::string csv;     ///< arrays only: the canonical CSV text (empty for a file)
+  std::shared_ptr<const motion::JointTrajectoryMotion> motion;
   std::shared_ptr<LoadedRobot> robot;
 };
 
@@ -79,7 +91,12 @@ class Session {
 /// One finished verification: what it ran on (kept alive) and what it produced.
 struct RunRecord {
   std::shared_ptr<const Session> session;
-  std::shared_ptr<LoadedPath> path;
+  std::shared_ptr<LoadedPath> path;              ///< null for a trajectory's run
+  std::shared_ptr<LoadedTrajectory> trajectory;  ///< null for a path's run
+  /// The motion's file (or label) and digest, and the certificate's key for it.
+  const std::string& motion_file() const { return path ? path->file : trajectory->file; }
+  const std::string& motion_sha256() const { return path ? path->sha256 : trajectory->sha256; }
+  const char* motion_key() const { return path ? "path" : "trajectory"; }
   std::string ik_name;
   certify::VerificationRun run;
 };
@@ -103,5 +120,6 @@ void bind_kinematics(RobotClass& robot);
 void bind_verification(pybind11::module_& module);
 void bind_results(pybind11::module_& module);
 void bind_certificates(pybind11::module_& module);
+void bind_trajectories(pybind11::module_& module);
 
 }  // namespace grpvss::python

@@ -32,16 +32,19 @@ struct CertificateView {
     const RunRecord& r = *record;
     const nlohmann::json inputs = {{"robot", r.session->robot().sha256},
                                    {"environment", r.session->environment().sha256},
-                                   {"path", r.path->sha256},
+                                   {r.motion_key(), r.motion_sha256()},
                                    {"ik", r.ik_name}};
     return report::render_certificate(r.run.certificate, inputs);
   }
 };
 
+/// The inputs a certificate is checked against: a path, or a joint trajectory (`trajectory`
+/// set; then no timing and no profile table: the trajectory is the motion).
 struct CheckInputs {
   std::shared_ptr<LoadedRobot> robot;
   std::shared_ptr<LoadedEnvironment> environment;
   std::shared_ptr<LoadedPath> path;
+  std::shared_ptr<LoadedTrajectory> trajectory;
   std::optional<std::string> timing;  ///< unset: the certificate's
   std::optional<std::string> ik;      ///< unset: "auto"
   std::string profile_table;
@@ -64,12 +67,28 @@ void refuse_other_motion(const CheckInputs& inputs, const certify::Certificate& 
                    fmt::format("'{}' ({})", inputs.ik.value_or("auto"), ik_name));
 }
 
-certify::CheckReport check_file(const CheckInputs& inputs, const std::string& certificate_file) {
-  const RobotModel& robot = inputs.robot->model;
+// The motion the checker replays and its digest's key: the path program, or the trajectory.
+const PathProgram& motion_of(const CheckInputs& inputs, certify::CheckOptions& options) {
+  static const PathProgram no_program;
+  if (inputs.trajectory) {
+    if (inputs.trajectory->robot != inputs.robot) {
+      throw std::invalid_argument("the trajectory was loaded for another robot");
+    }
+    options.joint_trajectory = inputs.trajectory->motion;
+    options.input_digests["trajectory"] = inputs.trajectory->sha256;
+    return no_program;
+  }
   if (inputs.path->robot != inputs.robot) {
     throw std::invalid_argument("the path was loaded for another robot");
   }
+  options.input_digests["path"] = inputs.path->sha256;
+  return inputs.path->program;
+}
+
+certify::CheckReport check_file(const CheckInputs& inputs, const std::string& certificate_file) {
+  const RobotModel& robot = inputs.robot->model;
   certify::CheckOptions options;
+  const PathProgram& program = motion_of(inputs, options);
   if (!inputs.profile_table.empty()) {
     options.profile_table = std::make_shared<const motion::ProfileTable>(
         io::read_profile_table_file(inputs.profile_table));
@@ -78,11 +97,10 @@ certify::CheckReport check_file(const CheckInputs& inputs, const std::string& ce
   py::gil_scoped_release release;
   const auto ik = motion::select_ik(choice, robot, inputs.robot->file);
   const motion::KinematicsAccess kinematics = motion::make_kinematics_access(robot, ik);
-  options.input_digests = {{"robot", inputs.robot->sha256},
-                           {"environment", inputs.environment->sha256},
-                           {"path", inputs.path->sha256}};
+  options.input_digests["robot"] = inputs.robot->sha256;
+  options.input_digests["environment"] = inputs.environment->sha256;
   return certify::check_certificate_file(
-      certificate_file, robot, inputs.environment->model, inputs.path->program, kinematics,
+      certificate_file, robot, inputs.environment->model, program, kinematics,
       options, [&](const certify::Certificate& header) {
         refuse_other_motion(inputs, header, ik->name());
       });
@@ -139,10 +157,21 @@ void bind_certificates(py::module_& module) {
          std::shared_ptr<LoadedPath> path, const std::string& certificate,
          std::optional<std::string> timing, std::optional<std::string> ik,
          const std::string& profile_table) {
-        return check_file({robot, environment, path, timing, ik, profile_table}, certificate);
+        return check_file({robot, environment, path, nullptr, timing, ik, profile_table},
+                          certificate);
       },
       py::arg("robot"), py::arg("environment"), py::arg("path"), py::arg("certificate"),
       py::arg("timing") = py::none(), py::arg("ik") = py::none(), py::arg("profile_table") = "");
+  module.def(
+      "_check_trajectory_certificate_file",
+      [](std::shared_ptr<LoadedRobot> robot, std::shared_ptr<LoadedEnvironment> environment,
+         std::shared_ptr<LoadedTrajectory> trajectory, const std::string& certificate,
+         std::optional<std::string> ik) {
+        return check_file({robot, environment, nullptr, trajectory, std::nullopt, ik, ""},
+                          certificate);
+      },
+      py::arg("robot"), py::arg("environment"), py::arg("trajectory"), py::arg("certificate"),
+      py::arg("ik") = py::none());
 }
 
 }  // namespace grpvss::python

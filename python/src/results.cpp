@@ -73,7 +73,7 @@ int exit_code_of(certify::Verdict verdict) {
 report::InputDigests digests_of(const RunRecord& record) {
   return {{record.session->robot().file, record.session->robot().sha256},
           {record.session->environment().file, record.session->environment().sha256},
-          {record.path->file, record.path->sha256}};
+          {record.motion_file(), record.motion_sha256()}};
 }
 
 // The report `grpvss verify --json` writes: report_to_json() plus the scene of the cell the
@@ -209,7 +209,13 @@ void bind_results(py::module_& module) {
       .def_property_readonly("mode", [](const RunRecord& r) { return certify::to_string(r.run.result.mode); })
       .def_property_readonly("tolerance", [](const RunRecord& r) { return r.run.result.tolerance; })
       .def_property_readonly("ik", [](const RunRecord& r) { return r.ik_name; })
-      .def_property_readonly("path", [](const RunRecord& r) { return r.path; })
+      .def_property_readonly("path", [](const RunRecord& r) { return r.path; },
+                             "The Path verified (None for a trajectory)")
+      .def_property_readonly("trajectory", [](const RunRecord& r) { return r.trajectory; },
+                             "The JointTrajectory verified (None for a path)")
+      .def_property_readonly("motion_model",
+                             [](const RunRecord& r) { return r.run.result.motion_model; },
+                             "'joint trajectory T, cubic Hermite interpolation, ...' ('' for a path)")
       .def_property_readonly("total_cycle_time",
                              [](const RunRecord& r) { return r.run.result.total_cycle_time; })
       .def_property_readonly("collision_step",

@@ -18,6 +18,7 @@
 #include "grpvss/io/profile_table_file.hpp"
 #include "grpvss/motion/kinematics_adapter.hpp"
 #include "grpvss/motion/profile_table.hpp"
+#include "grpvss/motion/trajectory.hpp"
 
 namespace py = pybind11;
 
@@ -68,28 +69,42 @@ struct ActiveVerification {
   ActiveVerification& operator=(const ActiveVerification&) = delete;
 };
 
-std::shared_ptr<RunRecord> verify_path(const std::shared_ptr<const Session>& session,
-                                       const std::shared_ptr<LoadedPath>& path,
-                                       const RunOptions& options) {
-  if (path->robot.get() != &session->robot()) {
-    throw std::invalid_argument("the path was loaded for another robot than the session's");
+// Verifies the record's path or trajectory against the session's cell, as `grpvss verify`
+// does, with the GIL released.
+std::shared_ptr<RunRecord> verify_motion(const std::shared_ptr<const Session>& session,
+                                         std::shared_ptr<RunRecord> record,
+                                         const RunOptions& options) {
+  const LoadedRobot* motion_robot =
+      record->path ? record->path->robot.get() : record->trajectory->robot.get();
+  if (motion_robot != &session->robot()) {
+    throw std::invalid_argument(std::string("the ") + record->motion_key() +
+                                " was loaded for another robot than the session's");
+  }
+  if (record->trajectory && session->request().mode == certify::ResolutionMode::kThesis) {
+    throw InputError("mode", 0,
+                     "no mode thesis with a trajectory (the thesis step rule is defined for PTP "
+                     "and CP segments)",
+                     "thesis");
   }
   certify::SetupRequest request = session->request();
   request.motion = parse_motion(options);
-  request.path_label = file_label(path->file);
+  request.path_label = file_label(record->motion_file());
   const certify::VerificationSetup setup = certify::resolve_setup(request);
   const kinematics::IkChoice ik_choice = parse_ik_choice(options.ik);
-  auto record = std::make_shared<RunRecord>();
   record->session = session;
-  record->path = path;
   {
     py::gil_scoped_release release;
     ActiveVerification active;
     const RobotModel& robot = session->robot().model;
     const auto ik = motion::select_ik(ik_choice, robot, session->robot().file);
     record->ik_name = ik->name();
-    record->run = certify::verify(session->cell(), path->program,
-                                  motion::make_kinematics_access(robot, ik), setup.run);
+    const motion::KinematicsAccess kinematics = motion::make_kinematics_access(robot, ik);
+    record->run =
+        record->path
+            ? certify::verify(session->cell(), record->path->program, kinematics, setup.run)
+            : certify::verify(session->cell(),
+                              motion::Trajectory::from_joint_motion(robot, record->trajectory->motion),
+                              kinematics, setup.run);
   }
   return record;
 }
@@ -170,10 +185,21 @@ void bind_verification(py::module_& module) {
            [](const std::shared_ptr<Session>& session, const std::shared_ptr<LoadedPath>& path,
               const std::string& timing, double cp_speed, const std::string& ik,
               const std::string& profile_table) {
-             return verify_path(session, path, RunOptions{timing, cp_speed, ik, profile_table});
+             auto record = std::make_shared<RunRecord>();
+             record->path = path;
+             return verify_motion(session, record, RunOptions{timing, cp_speed, ik, profile_table});
            },
            py::arg("path"), py::arg("timing"), py::arg("cp_speed"), py::arg("ik"),
            py::arg("profile_table"))
+      .def("_verify_trajectory",
+           [](const std::shared_ptr<Session>& session,
+              const std::shared_ptr<LoadedTrajectory>& trajectory, const std::string& timing,
+              double cp_speed, const std::string& ik) {
+             auto record = std::make_shared<RunRecord>();
+             record->trajectory = trajectory;
+             return verify_motion(session, record, RunOptions{timing, cp_speed, ik, ""});
+           },
+           py::arg("trajectory"), py::arg("timing"), py::arg("cp_speed"), py::arg("ik"))
       .def_property_readonly("tolerance", [](const Session& s) { return s.cell().tolerance(); })
       .def_property_readonly("mode",
                              [](const Session& s) { return certify::to_string(s.request().mode); })

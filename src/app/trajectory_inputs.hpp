@@ -1,22 +1,15 @@
 #pragma once
-// A planner's joint trajectory (`--trajectory T`) as `verify`, `trajectory` and
-// `check-certificate` read it (docs/trajectories.md#verifying-a-trajectory).
-#include <memory>
+// The options of a planner's joint trajectory (`--trajectory T`) as `verify`, `trajectory` and
+// `check-certificate` take them (docs/trajectories.md#verifying-a-trajectory); the loader is
+// the library's (grpvss/batch/joint_trajectory_input.hpp).
 #include <string>
 
-#include "grpvss/model/robot_model.hpp"
-#include "grpvss/motion/joint_trajectory_motion.hpp"
+#include "grpvss/batch/joint_trajectory_input.hpp"
 
 namespace grpvss::app {
 
-/// \brief Reads T (CSV or ROS JSON), matches its joints to the robot's by name and checks the
-/// robot's position limits along the interpolation. A URDF robot's joint values are in rad and
-/// metres, as the trajectory's.
-/// \throws InputError(T, line, ...) for a defect of the file, a name mismatch, a limit
-/// violation, or a robot without joint names (a thesis robot file: trajectories need a URDF
-/// robot, i.e. a cell).
-std::shared_ptr<const motion::JointTrajectoryMotion> load_joint_trajectory(
-    const std::string& file, const RobotModel& robot);
+/// The one loader the CLI, batch and Python share.
+using batch::load_joint_trajectory;
 
 /// Why a motion option is refused with --trajectory.
 inline constexpr const char* kTrajectoryIsTheMotion =

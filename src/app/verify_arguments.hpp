@@ -13,7 +13,6 @@ namespace grpvss::app {
 
 /// The inputs and choices (shared with `grpvss batch`'s manifests), and the outputs.
 struct VerifyArguments : batch::VerifyOptions {
-  std::string trajectory_file;  ///< --trajectory: a planner's joint trajectory instead of --path
   std::string out;
   std::string json;
   std::string certificate;

@@ -4,11 +4,13 @@
 #include <optional>
 #include <string>
 
+#include "grpvss/batch/joint_trajectory_input.hpp"
 #include "grpvss/certify/verifier.hpp"
 #include "grpvss/common/input_error.hpp"
 #include "grpvss/io/path_file.hpp"
 #include "grpvss/io/text_file.hpp"
 #include "grpvss/motion/kinematics_adapter.hpp"
+#include "grpvss/motion/trajectory.hpp"
 #include "grpvss/report/certificate_output.hpp"
 #include "grpvss/report/file_units.hpp"
 #include "grpvss/report/input_digests.hpp"
@@ -85,11 +87,13 @@ std::optional<SmallestClearance> smallest_clearance(const certify::VerificationR
   return smallest;
 }
 
-/// Everything the job reads: the shared robot, environment and cell, its own path.
+/// Everything the job reads: the shared robot, environment and cell, its own motion (a path
+/// program, or a joint trajectory: `joint_motion` set).
 struct JobInputs {
   std::shared_ptr<const LoadedRobot> robot;
   std::shared_ptr<const LoadedEnvironment> environment;
   PathProgram program;
+  std::shared_ptr<const motion::JointTrajectoryMotion> joint_motion;
   report::InputDigests digests;
   certify::VerificationSetup setup;
   std::vector<io::InputWarning> warnings;
@@ -113,23 +117,35 @@ cell::ModelInputs load_model(const VerifyOptions& options, SharedInputs& shared,
   return thesis_model;
 }
 
+/// The job's motion and its file's digest: the path program, or the joint trajectory read by
+/// the loader `grpvss verify --trajectory` uses.
+report::InputFileDigest load_motion(const VerifyOptions& options, const cell::ModelInputs& model,
+                               JobInputs& inputs) {
+  if (!options.trajectory_file.empty()) {
+    inputs.joint_motion = load_joint_trajectory(options.trajectory_file, inputs.robot->model);
+    return {options.trajectory_file, report::sha256_hex_of_file(options.trajectory_file)};
+  }
+  const std::string path_text = io::read_text_file(options.path_file);
+  inputs.program = io::parse_path_file(path_text, options.path_file, inputs.robot->model);
+  cell::convert_path_lengths(inputs.program, inputs.robot->model, model.model_units_per_cell_unit);
+  return {options.path_file, report::sha256_hex(path_text)};
+}
+
 JobInputs load_inputs(const BatchJob& job, SharedInputs& shared) {
   const VerifyOptions& options = job.options;
   JobInputs inputs;
   const cell::ModelInputs model = load_model(options, shared, inputs);
-  const std::string path_text = io::read_text_file(options.path_file);
-  inputs.program = io::parse_path_file(path_text, options.path_file, inputs.robot->model);
-  cell::convert_path_lengths(inputs.program, inputs.robot->model, model.model_units_per_cell_unit);
+  const report::InputFileDigest motion_digest = load_motion(options, model, inputs);
   inputs.digests = {{model.robot_digest_file, inputs.robot->sha256},
                     {model.environment_digest_file, inputs.environment->sha256},
-                    {options.path_file, report::sha256_hex(path_text)}};
+                    motion_digest};
   VerifyOptions without_table = resolve_model_defaults(options, model);
   without_table.profile_table.clear();  // read once per batch, below
   certify::SetupRequest request = make_setup_request(without_table);
   if (!options.profile_table.empty()) {
     request.motion.table = shared.profile_table(options.profile_table);
   }
-  request.path_label = file_label(options.path_file);
+  request.path_label = file_label(motion_digest.file);
   inputs.setup = certify::resolve_setup(request);
   return inputs;
 }
@@ -158,7 +174,8 @@ void publish_reports(const BatchJob& job, const certify::VerificationRun& run,
     const report::InputDigests& d = inputs.digests;
     reports.certificate->finish(run.certificate, {{"robot", d.robot.sha256},
                                                   {"environment", d.environment.sha256},
-                                                  {"path", d.path.sha256},
+                                                  {inputs.joint_motion ? "trajectory" : "path",
+                                                   d.path.sha256},
                                                   {"ik", ik_name}});
     result.outputs.push_back({"certificate", out.certificate});
   }
@@ -179,9 +196,12 @@ void verify_job(const BatchJob& job, SharedInputs& shared, const BatchOptions& o
   certify::RunHooks hooks;
   hooks.keep_steps = false;
   attach_reports(job, robot, inputs.environment->model, options.force, reports, hooks);
+  const motion::KinematicsAccess kinematics = motion::make_kinematics_access(robot, ik);
   const certify::VerificationRun run =
-      certify::verify(cell->cell, inputs.program, motion::make_kinematics_access(robot, ik),
-                      inputs.setup.run, hooks);
+      inputs.joint_motion
+          ? certify::verify(cell->cell, motion::Trajectory::from_joint_motion(robot, inputs.joint_motion),
+                            kinematics, inputs.setup.run, hooks)
+          : certify::verify(cell->cell, inputs.program, kinematics, inputs.setup.run, hooks);
   publish_reports(job, run, inputs, *cell, ik->name(), options, reports, result);
   result.verdict = run.result.verdict;
   result.exit_code = verdict_exit_code(run.result.verdict);

@@ -56,6 +56,8 @@ const std::map<std::string, KeyRule>& key_rules() {
       {"env", file_key([](BatchJob& j, const std::string& v) { j.options.environment_file = v; })},
       {"cell", file_key([](BatchJob& j, const std::string& v) { j.options.cell_file = v; })},
       {"path", file_key([](BatchJob& j, const std::string& v) { j.options.path_file = v; })},
+      {"trajectory",
+       file_key([](BatchJob& j, const std::string& v) { j.options.trajectory_file = v; })},
       {"tolerance", number_key([](BatchJob& j, double v) { j.options.tolerance = v; })},
       {"mode", text_key([](BatchJob& j, const std::string& v) { j.options.mode = v; })},
       {"offset", text_key([](BatchJob& j, const std::string& v) { j.options.offset = v; })},
@@ -110,23 +112,54 @@ bool has_key(const RawJob& raw, const std::string& key) {
   return false;
 }
 
+/// Exactly one motion: a `path` program or a planner's `trajectory`.
+void require_one_motion(const RawJob& raw, const std::string& file) {
+  const bool path = has_key(raw, "path");
+  const bool trajectory = has_key(raw, "trajectory");
+  if (path == trajectory) {
+    throw InputError(file, raw.line, "exactly one of `path` and `trajectory`",
+                     path ? "both" : "neither");
+  }
+}
+
+/// A trajectory is the motion (docs/trajectories.md#verifying-a-trajectory): the keys that
+/// would choose another, the thesis output file and the thesis step rule are refused, as
+/// `grpvss verify --trajectory` refuses their options.
+void refuse_trajectory_conflicts(const BatchJob& job, const RawJob& raw, const std::string& file) {
+  if (job.options.trajectory_file.empty()) return;
+  const std::string motion = "the trajectory's waypoint times and interpolation are the motion";
+  const std::vector<std::pair<const char*, std::string>> refused{
+      {"timing", motion}, {"profile_table", motion}, {"cp_speed", motion},
+      {"output", "the thesis output file describes path programs; use `json`"}};
+  for (const auto& [key, why] : refused) {
+    if (has_key(raw, key)) {
+      throw InputError(file, raw.line, std::string("no `") + key + "` with `trajectory` (" + why + ")",
+                       std::string("`") + key + "`");
+    }
+  }
+  if (job.options.mode == "thesis") {
+    throw InputError(file, raw.line,
+                     "no `mode: thesis` with `trajectory` (the thesis step rule is defined for "
+                     "PTP and CP segments)",
+                     "mode 'thesis'");
+  }
+}
+
 /// A job names its model by `cell`, or by `robot` and `env` (thesis files, which need
-/// `tolerance`: only a cell can supply it); and a `path`.
+/// `tolerance`: only a cell can supply it); and its motion.
 void require_keys(const RawJob& raw, const std::string& file) {
   const bool cell = has_key(raw, "cell");
   if (cell && (has_key(raw, "robot") || has_key(raw, "env"))) {
     throw InputError(file, raw.line, "either `cell`, or `robot` with `env`, not both");
   }
   const std::vector<const char*> required =
-      cell ? std::vector<const char*>{"path"}
-           : std::vector<const char*>{"robot", "env", "path", "tolerance"};
+      cell ? std::vector<const char*>{} : std::vector<const char*>{"robot", "env", "tolerance"};
   for (const char* key : required) {
     if (!has_key(raw, key)) {
-      const bool cell_would_do = std::string(key) != "path";
-      throw InputError(file, raw.line, std::string("a job with the key `") + key + "`" +
-                                           (cell_would_do ? " (or a `cell`)" : ""));
+      throw InputError(file, raw.line, std::string("a job with the key `") + key + "` (or a `cell`)");
     }
   }
+  require_one_motion(raw, file);
   // Present numbers must be numbers > 0 (an absent one is supplied by the cell or a default).
   for (const char* key : {"tolerance", "cp_speed"}) {
     for (const auto& field : raw.fields) {
@@ -147,6 +180,7 @@ BatchJob job_from(const RawJob& raw, std::size_t index, const std::string& file,
   for (const auto& [key, value] : raw.fields) apply_field(job, key, value, file, base);
   require_keys(raw, file);
   check_verify_options(job.options, file, job.line);
+  refuse_trajectory_conflicts(job, raw, file);
   const std::string plugin = "plugin:";
   if (job.options.ik.rfind(plugin, 0) == 0) {
     job.options.ik = plugin + resolved(job.options.ik.substr(plugin.size()), base);
@@ -263,7 +297,7 @@ std::vector<RawJob> raw_jobs(const std::string& text, const std::string& file) {
 
 const std::vector<std::string>& job_keys() {
   static const std::vector<std::string> keys{
-      "id", "robot", "env", "cell", "path", "tolerance", "mode", "offset", "timing", "profile_table",
+      "id", "robot", "env", "cell", "path", "trajectory", "tolerance", "mode", "offset", "timing", "profile_table",
       "ik", "cp_speed", "output", "json", "html", "certificate"};
   return keys;
 }

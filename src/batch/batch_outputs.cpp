@@ -43,7 +43,8 @@ std::unordered_set<std::string> input_identities(const BatchManifest& manifest) 
   for (const BatchJob& job : manifest.jobs) {
     const VerifyOptions& o = job.options;
     for (const std::string* file :
-         {&o.robot_file, &o.environment_file, &o.cell_file, &o.path_file, &o.profile_table}) {
+         {&o.robot_file, &o.environment_file, &o.cell_file, &o.path_file, &o.trajectory_file,
+          &o.profile_table}) {
       if (!file->empty()) inputs.insert(file_identity(*file));
     }
   }

@@ -22,6 +22,9 @@ struct VerifyOptions {
   std::string cell_file;                   ///< instead of robot_file + environment_file
   std::vector<std::string> package_paths;  ///< searched before the cell's own
   std::string path_file;
+  /// A planner's joint trajectory (CSV or ROS JSON) instead of path_file
+  /// (docs/trajectories.md#verifying-a-trajectory).
+  std::string trajectory_file;
   double tolerance = 0.0;  ///< Delta > 0, length units (of the cell, with a cell); 0: unset
   std::string mode = "certified";
   std::string offset = "auto";
