@@ -251,9 +251,9 @@ TEST_F(ProgramCli, TrajectoryPrintsTheProgramsMotion) {
 TEST_F(ProgramCli, OptionsThatContradictTheProgramAreRefused) {
   const CliRun timing = run_cli(dir(), "verify " + ur5e("ur5e-clear.script") + " --timing independent");
   EXPECT_EQ(timing.exit_code, grpvss::app::kExitInputError);
-  EXPECT_TRUE(contains(timing.err, "--timing: expected no --timing with --program (a program is "
-                                   "verified as the controller runs it: synchronized PTP, exact "
-                                   "stops)"))
+  EXPECT_TRUE(contains(timing.err, "--timing:0: expected no --timing with --program (a program "
+                                   "is verified as the controller runs it: synchronized PTP, "
+                                   "exact stops), found --timing"))
       << timing.err;
   const CliRun both = run_cli(dir(), "verify " + ur5e("ur5e-clear.script") + " --path " + kSource +
                                          "/tests/data/cells/ur5e-clear.txt");
