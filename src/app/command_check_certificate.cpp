@@ -24,6 +24,7 @@
 #include "grpvss/report/input_digests.hpp"
 #include "grpvss/report/lower_bound_text.hpp"
 #include "grpvss/motion/joint_trajectory_source.hpp"
+#include "program_inputs.hpp"
 #include "trajectory_inputs.hpp"
 #include "verify_arguments.hpp"
 
@@ -34,6 +35,7 @@ struct CheckArguments {
   ModelSources model;
   std::string path_file;
   std::string trajectory_file;        ///< --trajectory instead of --path
+  std::string program_file;           ///< --program instead of --path
   std::optional<std::string> timing;  ///< unset: the certificate's
   std::optional<std::string> ik;      ///< unset: "auto"
   std::string timing_text;            ///< what CLI11 parsed into `timing`
@@ -117,12 +119,21 @@ int run_check(const CheckArguments& args) {
   const ModelInputs model = load_model_inputs(args.model, args.quiet);
   const RobotModel& robot = model.robot;
   const Environment& environment = model.environment;
-  require_path_or_trajectory(args.path_file, args.trajectory_file);
+  require_one_motion_source(args.path_file, args.trajectory_file, args.program_file);
   certify::CheckOptions options;
   PathProgram program;
-  std::string trajectory_model;
+  std::string trajectory_model;  // the trajectory's or the program's motion model
   const bool trajectory_run = !args.trajectory_file.empty();
-  if (trajectory_run) {
+  const auto ik =
+      motion::select_ik(parse_ik_choice(args.ik.value_or("auto")), robot, model.robot_label_file);
+  std::optional<LoadedProgram> robot_program;
+  if (!args.program_file.empty()) {
+    refuse_with_program(args.timing && *args.timing != "synchronized", "--timing");
+    refuse_with_program(!args.profile_table.empty(), "--profile-table");
+    robot_program = load_program(args.program_file, model, *ik, args.quiet);
+    program = robot_program->path.path;
+    trajectory_model = robot_program->description;
+  } else if (trajectory_run) {
     refuse_with_trajectory(args.timing.has_value(), "--timing");
     refuse_with_trajectory(!args.profile_table.empty(), "--profile-table");
     options.joint_trajectory = load_joint_trajectory(args.trajectory_file, robot);
@@ -136,15 +147,18 @@ int run_check(const CheckArguments& args) {
     options.profile_table = std::make_shared<const motion::ProfileTable>(
         io::read_profile_table_file(args.profile_table));
   }
-  const auto ik =
-      motion::select_ik(parse_ik_choice(args.ik.value_or("auto")), robot, model.robot_label_file);
   const motion::KinematicsAccess kinematics = motion::make_kinematics_access(robot, ik);
-  const report::InputDigests digests =
-      report::digest_input_files(model.robot_digest_file, model.environment_digest_file,
-                                 trajectory_run ? args.trajectory_file : args.path_file);
+  const std::string motion_file =
+      robot_program ? args.program_file : trajectory_run ? args.trajectory_file : args.path_file;
+  const report::InputDigests digests = report::digest_input_files(
+      model.robot_digest_file, model.environment_digest_file, motion_file);
   options.input_digests = {{"robot", digests.robot.sha256},
-                           {"environment", digests.environment.sha256},
-                           {trajectory_run ? "trajectory" : "path", digests.path.sha256}};
+                           {"environment", digests.environment.sha256}};
+  if (robot_program) {
+    options.input_digests["program"] = robot_program->digest;
+  } else {
+    options.input_digests[trajectory_run ? "trajectory" : "path"] = digests.path.sha256;
+  }
 
   // Read and checked one segment at a time: memory independent of the number of steps
   // (docs/reliability.md#resource-bounds).
@@ -167,10 +181,12 @@ void register_check_certificate_command(CLI::App& app, int& exit_code) {
       "check-certificate", "Re-verify a certificate exactly from the input files alone");
   add_model_source_options(*command, args->model);
   CLI::Option* path = command->add_option("--path", args->path_file, "Path file (thesis A.1.3)");
-  command
-      ->add_option("--trajectory", args->trajectory_file,
-                   "Planner joint trajectory the certificate was made for, instead of --path")
-      ->excludes(path);
+  CLI::Option* trajectory =
+      command
+          ->add_option("--trajectory", args->trajectory_file,
+                       "Planner joint trajectory the certificate was made for, instead of --path")
+          ->excludes(path);
+  add_program_option(*command, args->program_file, {path, trajectory});
   CLI::Option* timing = command->add_option(
       "--timing", args->timing_text,
       "PTP joint timing expected (default: the certificate's; another is refused)");

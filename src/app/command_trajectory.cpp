@@ -17,6 +17,7 @@
 #include "grpvss/motion/profile_table.hpp"
 #include "grpvss/motion/trajectory.hpp"
 #include "grpvss/report/trajectory_report.hpp"
+#include "program_inputs.hpp"
 #include "trajectory_inputs.hpp"
 #include "verify_arguments.hpp"
 
@@ -27,6 +28,7 @@ struct TrajectoryArguments {
   ModelSources model;
   std::string path_file;
   std::string trajectory_file;  ///< --trajectory instead of --path
+  std::string program_file;     ///< --program instead of --path
   std::string timing;  ///< empty: independent for thesis files, synchronized for a cell
   std::string profile_table;
   std::string ik = "auto";
@@ -80,11 +82,21 @@ int run_joint_trajectory(const TrajectoryArguments& args, const ModelInputs& mod
 
 int run_trajectory(const TrajectoryArguments& args) {
   const ModelInputs model = load_model_inputs(args.model, false, ObstaclesNeeded::kNo);
-  require_path_or_trajectory(args.path_file, args.trajectory_file);
+  require_one_motion_source(args.path_file, args.trajectory_file, args.program_file);
   if (!args.trajectory_file.empty()) return run_joint_trajectory(args, model);
   const RobotModel& robot = model.robot;
-  PathProgram program = io::read_path_file(args.path_file, robot);
-  convert_path_lengths(program, robot, model.model_units_per_cell_unit);
+  const auto ik = motion::select_ik(parse_ik_choice(args.ik), robot, model.robot_label_file);
+  PathProgram program;
+  if (!args.program_file.empty()) {
+    refuse_with_program(!args.timing.empty() && args.timing != "synchronized", "--timing");
+    refuse_with_program(!args.profile_table.empty(), "--profile-table");
+    const LoadedProgram loaded = load_program(args.program_file, model, *ik, false);
+    if (!args.json) fmt::print("motion: {}\n", loaded.description);
+    program = loaded.path.path;
+  } else {
+    program = io::read_path_file(args.path_file, robot);
+    convert_path_lengths(program, robot, model.model_units_per_cell_unit);
+  }
   motion::MotionModel options;
   options.timing = motion::ptp_timing_from_string(args.timing)
                        .value_or(model.from_cell ? motion::PtpTiming::kSynchronized
@@ -94,11 +106,12 @@ int run_trajectory(const TrajectoryArguments& args) {
         io::read_profile_table_file(args.profile_table));
   options.cp_speed = args.cp_speed;
   options.cp_spacing = args.cp_spacing;
-  const auto ik = motion::select_ik(parse_ik_choice(args.ik), robot, model.robot_label_file);
   const motion::Trajectory trajectory =
       motion::Trajectory::plan(robot, program, motion::make_kinematics_access(robot, ik), options);
 
-  return print_trajectory(args, model, trajectory, args.path_file, ik->name());
+  return print_trajectory(args, model, trajectory,
+                          args.program_file.empty() ? args.path_file : args.program_file,
+                          ik->name());
 }
 
 }  // namespace
@@ -112,10 +125,12 @@ void register_trajectory_command(CLI::App& app, int& exit_code) {
   command->add_option("--package-path", args->model.package_paths,
                       "Directory searched for package://NAME/... (repeatable; before the cell's)");
   CLI::Option* path = command->add_option("--path", args->path_file, "Path file (thesis A.1.3)");
-  command
-      ->add_option("--trajectory", args->trajectory_file,
-                   "Planner joint trajectory (CSV or ROS JSON) instead of --path")
-      ->excludes(path);
+  CLI::Option* trajectory =
+      command
+          ->add_option("--trajectory", args->trajectory_file,
+                       "Planner joint trajectory (CSV or ROS JSON) instead of --path")
+          ->excludes(path);
+  add_program_option(*command, args->program_file, {path, trajectory});
   command->add_option("--timing", args->timing,
                       "PTP joint timing (default: independent for thesis files, synchronized "
                       "for a cell)")

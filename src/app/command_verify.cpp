@@ -29,6 +29,7 @@
 #include "grpvss/report/thesis_output.hpp"
 #include "interactive/verdict_summary.hpp"
 #include "output_paths.hpp"
+#include "program_inputs.hpp"
 #include "progress_bar.hpp"
 #include "setup_cache_options.hpp"
 #include "trajectory_inputs.hpp"
@@ -100,17 +101,28 @@ void refuse_trajectory_conflicts(const VerifyArguments& args) {
                          "the thesis step rule is defined for PTP and CP segments");
 }
 
-// The motion: the path program, or the joint trajectory (`joint_motion` set).
+// The motion: the path program, the joint trajectory (`joint_motion` set), or the robot
+// program's synchronized PTP path (`robot_program` set).
 struct MotionInput {
   PathProgram program;
   std::shared_ptr<const motion::JointTrajectoryMotion> joint_motion;
+  std::optional<LoadedProgram> robot_program;
   std::string file;
 };
 
-MotionInput read_motion(const VerifyArguments& args, const ModelInputs& model) {
-  require_path_or_trajectory(args.path_file, args.trajectory_file);
+MotionInput read_motion(const VerifyArguments& args, const ModelInputs& model,
+                        const kinematics::InverseKinematics& ik) {
+  require_one_motion_source(args.path_file, args.trajectory_file, args.program_file);
   refuse_trajectory_conflicts(args);
   MotionInput input;
+  if (!args.program_file.empty()) {
+    refuse_with_program(!args.timing.empty() && args.timing != "synchronized", "--timing");
+    refuse_with_program(!args.profile_table.empty(), "--profile-table");
+    input.file = args.program_file;
+    input.robot_program = load_program(args.program_file, model, ik, args.quiet);
+    input.program = input.robot_program->path.path;
+    return input;
+  }
   if (!args.trajectory_file.empty()) {
     input.file = args.trajectory_file;
     input.joint_motion = load_joint_trajectory(args.trajectory_file, model.robot);
@@ -126,14 +138,14 @@ int run_verify(const VerifyArguments& args) {
   const ModelInputs model = load_model_inputs(model_sources(args), args.quiet);
   const RobotModel& robot = model.robot;
   const Environment& environment = model.environment;
-  const MotionInput motion_input = read_motion(args, model);
+  const auto ik = motion::select_ik(parse_ik_choice(args.ik), robot, model.robot_label_file);
+  const MotionInput motion_input = read_motion(args, model, *ik);
   const PathProgram& program = motion_input.program;
   const report::InputDigests digests = report::digest_input_files(
       model.robot_digest_file, model.environment_digest_file, motion_input.file);
   certify::SetupRequest request = make_setup_request(args, model);
   request.path_label = file_label(motion_input.file);
   const certify::VerificationSetup setup = certify::resolve_setup(request);
-  const auto ik = motion::select_ik(parse_ik_choice(args.ik), robot, model.robot_label_file);
   if (!args.certificate.empty() && setup.run.mode != certify::ResolutionMode::kCertified) {
     throw InputError("--certificate", 0, "--mode certified (thesis mode proves nothing)");
   }
@@ -186,6 +198,7 @@ int run_verify(const VerifyArguments& args) {
     }
   }
 
+  if (motion_input.robot_program) run.result.motion_model = motion_input.robot_program->description;
   const std::string generated_at = report::utc_timestamp_now();
   if (thesis_output) thesis_output->finish(run.result);
   if (json_report) json_report->finish(run.result, cell, digests, generated_at);
@@ -195,11 +208,17 @@ int run_verify(const VerifyArguments& args) {
     });
   }
   if (certificate) {
-    certificate->finish(run.certificate, {{"robot", digests.robot.sha256},
-                                          {"environment", digests.environment.sha256},
-                                          {motion_input.joint_motion ? "trajectory" : "path",
-                                           digests.path.sha256},
-                                          {"ik", ik->name()}});
+    nlohmann::json inputs = {{"robot", digests.robot.sha256},
+                             {"environment", digests.environment.sha256},
+                             {"ik", ik->name()}};
+    if (motion_input.robot_program) {
+      for (const auto& [name, value] : program_certificate_inputs(*motion_input.robot_program)) {
+        inputs[name] = value;
+      }
+    } else {
+      inputs[motion_input.joint_motion ? "trajectory" : "path"] = digests.path.sha256;
+    }
+    certificate->finish(run.certificate, inputs);
   }
   if (!args.quiet) {
     print_summary(writes_to_standard_output(requested) ? stderr : stdout, run, args,

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "grpvss/common/input_error.hpp"
+#include "program_inputs.hpp"
 
 
 namespace grpvss::app {
@@ -30,11 +31,13 @@ void add_input_options(CLI::App& command, VerifyArguments& args) {
   add_model_source_options(command, args.robot_file, args.environment_file, args.cell_file,
                            args.package_paths);
   CLI::Option* path = command.add_option("--path", args.path_file, "Path file (thesis A.1.3)");
-  command
-      .add_option("--trajectory", args.trajectory_file,
-                  "Planner joint trajectory, CSV or ROS JSON, instead of --path "
-                  "(docs/trajectories.md#verifying-a-trajectory)")
-      ->excludes(path);
+  CLI::Option* trajectory =
+      command
+          .add_option("--trajectory", args.trajectory_file,
+                      "Planner joint trajectory, CSV or ROS JSON, instead of --path "
+                      "(docs/trajectories.md#verifying-a-trajectory)")
+          ->excludes(path);
+  add_program_option(command, args.program_file, {path, trajectory});
   command.add_option("--timing", args.timing,
                      "PTP joint timing (default: independent for thesis files, synchronized "
                      "for a cell)")

@@ -13,6 +13,7 @@ namespace grpvss::app {
 
 /// The inputs and choices (shared with `grpvss batch`'s manifests), and the outputs.
 struct VerifyArguments : batch::VerifyOptions {
+  std::string program_file;  ///< --program: a robot program instead of --path
   std::string out;
   std::string json;
   std::string certificate;

@@ -13,6 +13,23 @@
 namespace grpvss::cell {
 namespace {
 
+// The pose as a double isometry (Trans(xyz scale) R), for composing program frames; the
+// verified geometry uses the bounded factors of cell_pose.hpp instead.
+Eigen::Isometry3d isometry_of(const CellPose& pose, double scale) {
+  Eigen::Isometry3d X = Eigen::Isometry3d::Identity();
+  if (pose.quaternion) {
+    const Eigen::Vector4d& q = *pose.quaternion;
+    X.linear() = Eigen::Quaterniond(q[0], q[1], q[2], q[3]).normalized().toRotationMatrix();
+  } else {
+    X.linear() = (Eigen::AngleAxisd(pose.rpy.z(), Eigen::Vector3d::UnitZ()) *
+                  Eigen::AngleAxisd(pose.rpy.y(), Eigen::Vector3d::UnitY()) *
+                  Eigen::AngleAxisd(pose.rpy.x(), Eigen::Vector3d::UnitX()))
+                     .toRotationMatrix();
+  }
+  X.translation() = pose.xyz * scale;
+  return X;
+}
+
 ModelInputs load_cell_inputs(const ModelSources& sources) {
   CellLoadOptions options;
   options.package_paths = sources.package_paths;
@@ -30,6 +47,8 @@ ModelInputs load_cell_inputs(const ModelSources& sources) {
   if (loaded.description.motion.cp_speed) {
     inputs.cp_speed = *loaded.description.motion.cp_speed * loaded.model_units_per_cell_unit;
   }
+  inputs.X_WR = isometry_of(loaded.description.robot.base, loaded.model_units_per_cell_unit);
+  inputs.X_FE = isometry_of(loaded.description.robot.tool, loaded.model_units_per_cell_unit);
   inputs.warnings = std::move(loaded.warnings);
   return inputs;
 }

@@ -276,7 +276,7 @@ void Checker::add_segment(const SegmentCertificate& segment) {
 void Checker::reject_other_inputs() {
   if (certificate_.inputs.empty() || options_.input_digests.empty()) return;
   std::vector<std::string> differ;
-  for (const char* name : {"robot", "environment", "path", "trajectory"}) {
+  for (const char* name : {"robot", "environment", "path", "trajectory", "program"}) {
     const auto recorded = certificate_.inputs.find(name);
     const auto given = options_.input_digests.find(name);
     const std::string recorded_digest = recorded == certificate_.inputs.end() ? "" : recorded->second;

@@ -222,8 +222,8 @@ TEST_F(JointTrajectoryCli, OptionsThatContradictTheTrajectoryAreRefused) {
   EXPECT_TRUE(contains(thesis.err, "expected no --mode thesis with --trajectory")) << thesis.err;
   const CliRun neither = run_cli(dir(), "verify --cell " + kCell);
   EXPECT_EQ(neither.exit_code, grpvss::app::kExitInputError);
-  EXPECT_EQ(neither.err, "grpvss: error: --path:0: expected exactly one of --path and "
-                         "--trajectory, found neither\n");
+  EXPECT_EQ(neither.err, "grpvss: error: --path:0: expected exactly one of --path, "
+                         "--trajectory and --program, found none\n");
   const CliRun thesis_robot = run_cli(
       dir(), "verify --robot " GRPVSS_SOURCE_DIR "/data/ibm7545/robot.txt --env " GRPVSS_SOURCE_DIR
              "/data/ibm7545/environment.txt --tolerance 0.5 --trajectory " + kTrajectories +

@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Geometry>
+
 #include "grpvss/io/input_warning.hpp"
 #include "grpvss/model/environment.hpp"
 #include "grpvss/model/path_program.hpp"
@@ -44,6 +46,12 @@ struct ModelInputs {
   std::optional<double> tolerance;
   /// The cell's CP speed (model units per s), when it gives one.
   std::optional<double> cp_speed;
+  /// A cell's `base` (X_WR: the robot's base frame R in the world) and `tool` (X_FE: the model's
+  /// end-effector frame E, the cell's TCP, in the tip link F), in model units; identity for
+  /// thesis files. Robot programs compose their own tool and base with them
+  /// (docs/robot-programs.md#verifying-a-program).
+  Eigen::Isometry3d X_WR = Eigen::Isometry3d::Identity();
+  Eigen::Isometry3d X_FE = Eigen::Isometry3d::Identity();
   /// Every warning of the files read (the library never prints them).
   std::vector<io::InputWarning> warnings;
 };
