@@ -13,6 +13,7 @@
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
+#include "grpvss/batch/motion_statement.hpp"
 #include "grpvss/batch/verify_options.hpp"
 #include "grpvss/common/input_error.hpp"
 #include "grpvss/io/profile_table_file.hpp"
@@ -77,7 +78,7 @@ std::shared_ptr<RunRecord> verify_path(const std::shared_ptr<const Session>& ses
   certify::SetupRequest request = session->request();
   request.motion = parse_motion(options);
   request.path_label = file_label(path->file);
-  const certify::VerificationSetup setup = certify::resolve_setup(request);
+  certify::VerificationSetup setup = certify::resolve_setup(request);
   const kinematics::IkChoice ik_choice = parse_ik_choice(options.ik);
   auto record = std::make_shared<RunRecord>();
   record->session = session;
@@ -88,6 +89,7 @@ std::shared_ptr<RunRecord> verify_path(const std::shared_ptr<const Session>& ses
     const RobotModel& robot = session->robot().model;
     const auto ik = motion::select_ik(ik_choice, robot, session->robot().file);
     record->ik_name = ik->name();
+    setup.run.motion_model = batch::describe_path_motion(setup.run, request.path_label, ik->name());
     record->run = certify::verify(session->cell(), path->program,
                                   motion::make_kinematics_access(robot, ik), setup.run);
   }

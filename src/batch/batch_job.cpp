@@ -4,6 +4,7 @@
 #include <optional>
 #include <string>
 
+#include "grpvss/batch/motion_statement.hpp"
 #include "grpvss/certify/verifier.hpp"
 #include "grpvss/common/input_error.hpp"
 #include "grpvss/io/path_file.hpp"
@@ -129,6 +130,7 @@ JobInputs load_inputs(const BatchJob& job, SharedInputs& shared) {
   if (!options.profile_table.empty()) {
     request.motion.table = shared.profile_table(options.profile_table);
   }
+  request.motion.start = resolve_start(options, inputs.robot->model, model.from_cell, "start");
   request.path_label = file_label(options.path_file);
   inputs.setup = certify::resolve_setup(request);
   return inputs;
@@ -179,9 +181,10 @@ void verify_job(const BatchJob& job, SharedInputs& shared, const BatchOptions& o
   certify::RunHooks hooks;
   hooks.keep_steps = false;
   attach_reports(job, robot, inputs.environment->model, options.force, reports, hooks);
-  const certify::VerificationRun run =
-      certify::verify(cell->cell, inputs.program, motion::make_kinematics_access(robot, ik),
-                      inputs.setup.run, hooks);
+  certify::RunSettings settings = inputs.setup.run;
+  settings.motion_model = describe_path_motion(settings, settings.path_label, ik->name());
+  const certify::VerificationRun run = certify::verify(
+      cell->cell, inputs.program, motion::make_kinematics_access(robot, ik), settings, hooks);
   publish_reports(job, run, inputs, *cell, ik->name(), options, reports, result);
   result.verdict = run.result.verdict;
   result.exit_code = verdict_exit_code(run.result.verdict);

@@ -63,6 +63,7 @@ const std::map<std::string, KeyRule>& key_rules() {
       {"profile_table",
        file_key([](BatchJob& j, const std::string& v) { j.options.profile_table = v; })},
       {"ik", text_key([](BatchJob& j, const std::string& v) { j.options.ik = v; })},
+      {"start", text_key([](BatchJob& j, const std::string& v) { j.options.start = v; })},
       {"cp_speed", number_key([](BatchJob& j, double v) { j.options.cp_speed = v; })},
       {"output", file_key([](BatchJob& j, const std::string& v) { j.outputs.thesis_output = v; })},
       {"json", file_key([](BatchJob& j, const std::string& v) { j.outputs.json = v; })},
@@ -264,7 +265,7 @@ std::vector<RawJob> raw_jobs(const std::string& text, const std::string& file) {
 const std::vector<std::string>& job_keys() {
   static const std::vector<std::string> keys{
       "id", "robot", "env", "cell", "path", "tolerance", "mode", "offset", "timing", "profile_table",
-      "ik", "cp_speed", "output", "json", "html", "certificate"};
+      "ik", "cp_speed", "start", "output", "json", "html", "certificate"};
   return keys;
 }
 
