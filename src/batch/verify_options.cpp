@@ -133,8 +133,11 @@ kinematics::IkChoice parse_ik_choice(const std::string& text) {
 namespace {  // the motion statement (motion_statement.hpp)
 
 std::string ptp_part(const motion::MotionModel& model) {
-  const std::string profiles =
-      model.table ? "profile table " + model.table->file_name() : "trapezoid profiles";
+  std::string profiles = "trapezoid profiles";
+  if (model.table) {  // named as the path is, without its folder
+    const std::string& file = model.table->file_name();
+    profiles = "profile table " + file.substr(file.find_last_of('/') + 1);
+  }
   return fmt::format("{} PTP timing ({}{})", motion::to_string(model.timing), profiles,
                      model.timing == motion::PtpTiming::kSynchronized
                          ? ", straight line in joint space"

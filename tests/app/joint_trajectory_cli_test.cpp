@@ -241,11 +241,18 @@ TEST_F(JointTrajectoryCli, SpeedsBeyondTheUrdfVelocityLimitAreRefusedNamingJoint
   // Cubic, at rest at both waypoints: the pan's speed peaks mid-piece at 1.5 * 1.1 / 0.5 = 3.3.
   const CliRun cubic = run_cli(dir(), "verify " + inputs("ur5e-pan-too-fast.csv"));
   EXPECT_EQ(cubic.exit_code, grpvss::app::kExitInputError);
-  EXPECT_EQ(cubic.err, "grpvss: error: " + kTrajectories + "ur5e-pan-too-fast.csv:2: CUBIC\n");
+  EXPECT_EQ(cubic.err, "grpvss: error: " + kTrajectories + "ur5e-pan-too-fast.csv:2: expected joint positions and speeds within the robot's "
+                        "limits along the interpolated motion, found joint 'shoulder_pan_joint' "
+                        "(1) is faster than its speed limit 3.141592653589793 at t = 0.25 s: "
+                        "3.3000000000000003 (piece 1, between line 2 and line 3)\n");
   // Linear: the second piece's slope (0.6 - 0.2) / 0.1 = 4 rad/s.
   const CliRun linear = run_cli(dir(), "trajectory " + inputs("ur5e-pan-too-fast-linear.csv"));
   EXPECT_EQ(linear.exit_code, grpvss::app::kExitInputError);
-  EXPECT_EQ(linear.err, "grpvss: error: " + kTrajectories + "ur5e-pan-too-fast-linear.csv:3: LINEAR\n");
+  EXPECT_EQ(linear.err, "grpvss: error: " + kTrajectories + "ur5e-pan-too-fast-linear.csv:3: expected joint positions and speeds within the "
+                         "robot's limits along the interpolated motion, found joint "
+                         "'shoulder_pan_joint' (1) is faster than its speed limit "
+                         "3.141592653589793 at t = 1 s: 3.999999999999996 (piece 2, between "
+                         "line 3 and line 4)\n");
   EXPECT_EQ(run_cli(dir(), "check-certificate " + inputs("ur5e-pan-too-fast.csv") + " none.json")
                 .exit_code,
             grpvss::app::kExitInputError);

@@ -55,9 +55,9 @@ TEST_F(StartCli, TheFirstStepIsTheStartAndTheCertificateRecordsIt) {
   const std::vector<double> start{0.2, -1.5708, 1.5708, 0, 0, 0};
   EXPECT_EQ(certificate["start"].get<std::vector<double>>(), start);
   EXPECT_EQ(certificate["segments"][0]["steps"][0]["q"].get<std::vector<double>>(), start);
-  // The report's first step (degrees): the pan at 0.2 rad = 11.459155902616464 deg.
+  // The report's first segment starts there (degrees): the pan at 0.2 rad = 11.459155902616464.
   const nlohmann::json report = read_json("r.json");
-  EXPECT_DOUBLE_EQ(report["steps"][0]["joint_values"][0].get<double>(), 0.2 * 180.0 / M_PI);
+  EXPECT_DOUBLE_EQ(report["segments"][0]["start_joint_values"][0].get<double>(), 0.2 * 180.0 / M_PI);
   // The move ends at the path's target whatever the start: pan -30 deg.
   EXPECT_DOUBLE_EQ(report["steps"].back()["joint_values"][0].get<double>(), -30.0);
 }
@@ -120,7 +120,13 @@ TEST_F(StartCli, ThesisFilesTakeTheStartInDegrees) {
   const CliRun planned = run_cli(dir(), "trajectory " + robot + " --start 10,20,1,30 --json");
   ASSERT_EQ(planned.exit_code, grpvss::app::kExitOk) << planned.err;
   const nlohmann::json document = nlohmann::json::parse(planned.out);
-  EXPECT_EQ(document["home"], nlohmann::json::parse("[10.0, 20.0, 1.0, 30.0]")) << document["home"];
+  // Degrees -> radians -> degrees: within an ulp of what was given (30 comes back 29.999999999999996).
+  const std::vector<double> home = document["home"].get<std::vector<double>>();
+  ASSERT_EQ(home.size(), 4u);
+  EXPECT_DOUBLE_EQ(home[0], 10.0);
+  EXPECT_DOUBLE_EQ(home[1], 20.0);
+  EXPECT_EQ(home[2], 1.0);  // prismatic: length units, unchanged
+  EXPECT_DOUBLE_EQ(home[3], 30.0);
   // Joint 1 of the IBM 7545 turns within [0, 200] degrees.
   const CliRun limit = run_cli(dir(), "trajectory " + robot + " --start 201,20,1,30");
   EXPECT_EQ(limit.exit_code, grpvss::app::kExitInputError);
