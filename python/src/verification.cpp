@@ -13,6 +13,7 @@
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
+#include "grpvss/batch/motion_statement.hpp"
 #include "grpvss/batch/verify_options.hpp"
 #include "grpvss/common/input_error.hpp"
 #include "grpvss/io/profile_table_file.hpp"
@@ -89,7 +90,7 @@ std::shared_ptr<RunRecord> verify_motion(const std::shared_ptr<const Session>& s
   certify::SetupRequest request = session->request();
   request.motion = parse_motion(options);
   request.path_label = file_label(record->motion_file());
-  const certify::VerificationSetup setup = certify::resolve_setup(request);
+  certify::VerificationSetup setup = certify::resolve_setup(request);
   const kinematics::IkChoice ik_choice = parse_ik_choice(options.ik);
   record->session = session;
   {
@@ -99,6 +100,9 @@ std::shared_ptr<RunRecord> verify_motion(const std::shared_ptr<const Session>& s
     const auto ik = motion::select_ik(ik_choice, robot, session->robot().file);
     record->ik_name = ik->name();
     const motion::KinematicsAccess kinematics = motion::make_kinematics_access(robot, ik);
+    if (record->path) {  // a trajectory states its own (certify::verify)
+      setup.run.motion_model = batch::describe_path_motion(setup.run, request.path_label, ik->name());
+    }
     record->run =
         record->path
             ? certify::verify(session->cell(), record->path->program, kinematics, setup.run)

@@ -25,6 +25,7 @@
 #include "grpvss/report/lower_bound_text.hpp"
 #include "grpvss/motion/joint_trajectory_source.hpp"
 #include "program_inputs.hpp"
+#include "start_option.hpp"
 #include "trajectory_inputs.hpp"
 #include "verify_arguments.hpp"
 
@@ -41,6 +42,7 @@ struct CheckArguments {
   std::string timing_text;            ///< what CLI11 parsed into `timing`
   std::string ik_text;                ///< what CLI11 parsed into `ik`
   std::string profile_table;
+  std::string start;  ///< --start; empty: the robot's home
   std::string certificate_file;
   bool json = false;
   bool quiet = false;
@@ -57,6 +59,25 @@ void refuse_other_timing(const CheckArguments& args, const certify::Certificate&
                    *args.timing);
 }
 
+// --start names where the caller expects the path to start; a certificate made for another
+// start is refused (one made for a start when none is given is rejected by the checker).
+void refuse_other_start(const std::optional<Eigen::VectorXd>& start,
+                        const certify::Certificate& header) {
+  if (!start) return;
+  if (header.start && header.start->size() == start->size() && *header.start == *start) return;
+  std::string recorded = "the robot's home";
+  if (header.start) {
+    recorded.clear();
+    for (Eigen::Index j = 0; j < header.start->size(); ++j) {
+      recorded += fmt::format("{}{}", j == 0 ? "" : ",", (*header.start)[j]);
+    }
+  }
+  throw InputError("--start", 0,
+                   fmt::format("the start the certificate was made for ({}, library units)",
+                               recorded),
+                   "another start");
+}
+
 // The IK decides the CP configurations: it must be the one the certificate names.
 void refuse_other_ik(const CheckArguments& args, const certify::Certificate& header,
                      const std::string& ik_name) {
@@ -68,8 +89,9 @@ void refuse_other_ik(const CheckArguments& args, const certify::Certificate& hea
 }
 
 // `trajectory_model`: the joint trajectory's motion model, empty for a path program.
+// `start`: the --start text, empty without one.
 void print_text(const certify::CheckReport& report, const RobotModel& robot,
-                const std::string& trajectory_model) {
+                const std::string& trajectory_model, const std::string& start) {
   fmt::print("{}: claim {} ({} inequalities decided exactly)\n",
              report.accepted ? "ACCEPTED" : "REJECTED", to_string(report.claim),
              report.inequalities_checked);
@@ -78,9 +100,10 @@ void print_text(const certify::CheckReport& report, const RobotModel& robot,
     fmt::print("  motion model checked: {}, IK {}\n", trajectory_model,
                report.ik.empty() ? "(not named)" : report.ik);
   } else {
-    fmt::print("  motion model checked: {} PTP timing, CP speed {} per s, IK {}\n",
+    fmt::print("  motion model checked: {} PTP timing, CP speed {} per s, IK {}{}\n",
                motion::to_string(report.timing), report.cp_speed,
-               report.ik.empty() ? "(not named)" : report.ik);
+               report.ik.empty() ? "(not named)" : report.ik,
+               start.empty() ? "" : ", start " + start);
   }
   // What the accepted certificate proves beyond its claim (the base, link 0, never moves).
   for (const auto& link : report.motion_clearances) {
@@ -92,7 +115,8 @@ void print_text(const certify::CheckReport& report, const RobotModel& robot,
   }
 }
 
-void print_json(const certify::CheckReport& report, const std::string& trajectory_model) {
+void print_json(const certify::CheckReport& report, const std::string& trajectory_model,
+                const std::string& start) {
   nlohmann::json clearances = nlohmann::json::array();
   for (const auto& link : report.motion_clearances) {
     clearances.push_back({{"link", link.link}, {"lower_bound", link.lower_bound}, {"step", link.step}});
@@ -101,6 +125,7 @@ void print_json(const certify::CheckReport& report, const std::string& trajector
                                  {"cp_speed", report.cp_speed},
                                  {"ik", report.ik}};
   if (!trajectory_model.empty()) motion_model["trajectory"] = trajectory_model;
+  if (!start.empty()) motion_model["start"] = start;
   fmt::print("{}\n", nlohmann::json{{"accepted", report.accepted},
                                     {"claim", to_string(report.claim)},
                                     {"motion_model", motion_model},
@@ -130,18 +155,21 @@ int run_check(const CheckArguments& args) {
   if (!args.program_file.empty()) {
     refuse_with_program(args.timing && *args.timing != "synchronized", "--timing");
     refuse_with_program(!args.profile_table.empty(), "--profile-table");
-    robot_program = load_program(args.program_file, model, *ik, args.quiet);
+    robot_program =
+        load_program(args.program_file, model, *ik, args.quiet, start_of(args.start, model));
     program = robot_program->path.path;
     trajectory_model = robot_program->description;
   } else if (trajectory_run) {
     refuse_with_trajectory(args.timing.has_value(), "--timing");
     refuse_with_trajectory(!args.profile_table.empty(), "--profile-table");
     options.joint_trajectory = load_joint_trajectory(args.trajectory_file, robot);
+    check_trajectory_start(args.start, model, *options.joint_trajectory);
     trajectory_model =
         motion::describe_motion_model(*options.joint_trajectory, file_label(args.trajectory_file));
   } else {
     program = io::read_path_file(args.path_file, robot);
     convert_path_lengths(program, robot, model.model_units_per_cell_unit);
+    options.start = start_of(args.start, model);
   }
   if (!args.profile_table.empty()) {
     options.profile_table = std::make_shared<const motion::ProfileTable>(
@@ -167,9 +195,11 @@ int run_check(const CheckArguments& args) {
       [&](const certify::Certificate& header) {
         refuse_other_timing(args, header);
         refuse_other_ik(args, header, ik->name());
+        refuse_other_start(options.start, header);
       });
-  if (args.json && !args.quiet) print_json(report, trajectory_model);
-  if (!args.json && !args.quiet) print_text(report, robot, trajectory_model);
+  const std::string start = options.start ? args.start : "";
+  if (args.json && !args.quiet) print_json(report, trajectory_model, start);
+  if (!args.json && !args.quiet) print_text(report, robot, trajectory_model, start);
   return report.accepted ? kExitOk : kExitFinding;
 }
 
@@ -195,6 +225,7 @@ void register_check_certificate_command(CLI::App& app, int& exit_code) {
                       "Motion-time table the certificate was made with (docs/trajectories.md)");
   CLI::Option* ik = command->add_option(
       "--ik", args->ik_text, "IK: auto, ibm7545, opw, ur, numeric or plugin:PATH.so (must be the certificate's)");
+  add_start_option(*command, args->start);
   command->add_option("CERT", args->certificate_file, "Certificate written by verify")->required();
   command->add_flag("--json", args->json, "Print the result as JSON");
   command->add_flag("--quiet", args->quiet, "Print nothing; the exit code tells the result");

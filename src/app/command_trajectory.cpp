@@ -18,6 +18,7 @@
 #include "grpvss/motion/trajectory.hpp"
 #include "grpvss/report/trajectory_report.hpp"
 #include "program_inputs.hpp"
+#include "start_option.hpp"
 #include "trajectory_inputs.hpp"
 #include "verify_arguments.hpp"
 
@@ -32,6 +33,7 @@ struct TrajectoryArguments {
   std::string timing;  ///< empty: independent for thesis files, synchronized for a cell
   std::string profile_table;
   std::string ik = "auto";
+  std::string start;  ///< --start; empty: the home
   std::vector<double> at;
   double step = 0.0;
   double cp_speed = 1.0;
@@ -75,8 +77,10 @@ int print_trajectory(const TrajectoryArguments& args, const ModelInputs& model,
 int run_joint_trajectory(const TrajectoryArguments& args, const ModelInputs& model) {
   refuse_with_trajectory(!args.timing.empty(), "--timing");
   refuse_with_trajectory(!args.profile_table.empty(), "--profile-table");
-  const motion::Trajectory trajectory = motion::Trajectory::from_joint_motion(
-      model.robot, load_joint_trajectory(args.trajectory_file, model.robot));
+  const auto joint_motion = load_joint_trajectory(args.trajectory_file, model.robot);
+  check_trajectory_start(args.start, model, *joint_motion);
+  const motion::Trajectory trajectory =
+      motion::Trajectory::from_joint_motion(model.robot, joint_motion);
   return print_trajectory(args, model, trajectory, args.trajectory_file, "(not used)");
 }
 
@@ -90,7 +94,8 @@ int run_trajectory(const TrajectoryArguments& args) {
   if (!args.program_file.empty()) {
     refuse_with_program(!args.timing.empty() && args.timing != "synchronized", "--timing");
     refuse_with_program(!args.profile_table.empty(), "--profile-table");
-    const LoadedProgram loaded = load_program(args.program_file, model, *ik, false);
+    const LoadedProgram loaded =
+        load_program(args.program_file, model, *ik, false, start_of(args.start, model));
     if (!args.json) fmt::print("motion: {}\n", loaded.description);
     program = loaded.path.path;
   } else {
@@ -106,6 +111,7 @@ int run_trajectory(const TrajectoryArguments& args) {
         io::read_profile_table_file(args.profile_table));
   options.cp_speed = args.cp_speed;
   options.cp_spacing = args.cp_spacing;
+  options.start = start_of(args.start, model);
   const motion::Trajectory trajectory =
       motion::Trajectory::plan(robot, program, motion::make_kinematics_access(robot, ik), options);
 
@@ -139,6 +145,7 @@ void register_trajectory_command(CLI::App& app, int& exit_code) {
                       "Motion-time table replacing the ideal trapezoids (docs/trajectories.md)");
   command->add_option("--ik", args->ik, "IK: auto, ibm7545, opw, ur, numeric or plugin:PATH.so (docs/ik.md)")
       ->capture_default_str();
+  add_start_option(*command, args->start);
   command->add_option("--at", args->at, "Path times (s) at which to print the joints")
       ->delimiter(',')
       ->check(CLI::NonNegativeNumber);

@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "grpvss/batch/motion_statement.hpp"
 #include "grpvss/certify/verifier.hpp"
 #include "grpvss/common/input_error.hpp"
 #include "grpvss/io/path_file.hpp"
@@ -32,6 +33,7 @@
 #include "program_inputs.hpp"
 #include "progress_bar.hpp"
 #include "setup_cache_options.hpp"
+#include "start_option.hpp"
 #include "trajectory_inputs.hpp"
 #include "verify_arguments.hpp"
 #include "viewer_html_stream.hpp"
@@ -95,8 +97,6 @@ void refuse_trajectory_conflicts(const VerifyArguments& args) {
   refuse_with_trajectory(!args.timing.empty(), "--timing");
   refuse_with_trajectory(!args.profile_table.empty(), "--profile-table");
   refuse_with_trajectory(args.cp_speed > 0.0, "--cp-speed");
-  refuse_with_trajectory(!args.out.empty(), "--out",
-                         "the thesis output file describes path programs; use --json");
   refuse_with_trajectory(args.mode == "thesis", "--mode thesis",
                          "the thesis step rule is defined for PTP and CP segments");
 }
@@ -119,7 +119,8 @@ MotionInput read_motion(const VerifyArguments& args, const ModelInputs& model,
     refuse_with_program(!args.timing.empty() && args.timing != "synchronized", "--timing");
     refuse_with_program(!args.profile_table.empty(), "--profile-table");
     input.file = args.program_file;
-    input.robot_program = load_program(args.program_file, model, ik, args.quiet);
+    input.robot_program =
+        load_program(args.program_file, model, ik, args.quiet, start_of(args.start, model));
     input.program = input.robot_program->path.path;
     return input;
   }
@@ -144,8 +145,15 @@ int run_verify(const VerifyArguments& args) {
   const report::InputDigests digests = report::digest_input_files(
       model.robot_digest_file, model.environment_digest_file, motion_input.file);
   certify::SetupRequest request = make_setup_request(args, model);
+  if (motion_input.joint_motion) {  // a trajectory starts at its first point
+    check_trajectory_start(args.start, model, *motion_input.joint_motion);
+    request.motion.start.reset();
+  }
   request.path_label = file_label(motion_input.file);
-  const certify::VerificationSetup setup = certify::resolve_setup(request);
+  certify::VerificationSetup setup = certify::resolve_setup(request);
+  if (!motion_input.joint_motion) {  // a trajectory states its own (certify::verify)
+    setup.run.motion_model = batch::describe_path_motion(setup.run, request.path_label, ik->name());
+  }
   if (!args.certificate.empty() && setup.run.mode != certify::ResolutionMode::kCertified) {
     throw InputError("--certificate", 0, "--mode certified (thesis mode proves nothing)");
   }

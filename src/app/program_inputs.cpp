@@ -43,7 +43,8 @@ void require_named_joints(const std::string& file, const RobotModel& robot) {
 }  // namespace
 
 LoadedProgram load_program(const std::string& file, const ModelInputs& model,
-                           const kinematics::InverseKinematics& ik, bool quiet) {
+                           const kinematics::InverseKinematics& ik, bool quiet,
+                           const std::optional<Eigen::VectorXd>& start) {
   require_named_joints(file, model.robot);
   const RobotProgram program = io::read_robot_program(file);
   if (!quiet) {
@@ -55,7 +56,8 @@ LoadedProgram load_program(const std::string& file, const ModelInputs& model,
   loaded.file = file;
   const motion::ProgramFrames frames{
       model.X_WR * motion::controller_base_in_root(program.language), model.X_FE};
-  loaded.path = motion::resolve_program(program, model.robot, frames, ik, home_of(model.robot));
+  loaded.path = motion::resolve_program(program, model.robot, frames, ik,
+                                        start ? *start : home_of(model.robot));
   loaded.digest = digest_of_files(program.files);
   loaded.description = motion::describe_program_motion(loaded.path, file_label(file));
   return loaded;

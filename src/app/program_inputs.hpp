@@ -3,6 +3,7 @@
 // (docs/robot-programs.md#verifying-a-program): read, resolved into synchronized PTP motions,
 // and what the certificate records about it.
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,11 +24,13 @@ struct LoadedProgram {
 };
 
 /// \brief Reads FILE (io::read_robot_program), prints each reader warning to stderr unless
-/// `quiet`, and resolves it against the model (from the robot's home, the cell's base and tool).
+/// `quiet`, and resolves it against the model (from `start`, else the robot's home; the cell's
+/// base and tool).
 /// \throws InputError for a robot without joint names (programs need a URDF robot in a cell:
 /// their lengths are metres), a refused or unreachable motion, or a defect of the file.
 LoadedProgram load_program(const std::string& file, const ModelInputs& model,
-                           const kinematics::InverseKinematics& ik, bool quiet);
+                           const kinematics::InverseKinematics& ik, bool quiet,
+                           const std::optional<Eigen::VectorXd>& start = std::nullopt);
 
 /// The certificate's "inputs" entries of a program: its digest, language and joint targets.
 std::map<std::string, std::string> program_certificate_inputs(const LoadedProgram& program);

@@ -7,6 +7,7 @@
 
 #include "grpvss/common/input_error.hpp"
 #include "program_inputs.hpp"
+#include "start_option.hpp"
 
 
 namespace grpvss::app {
@@ -46,6 +47,7 @@ void add_input_options(CLI::App& command, VerifyArguments& args) {
                      "Motion-time table replacing the ideal trapezoids (docs/trajectories.md)");
   command.add_option("--ik", args.ik, "IK: auto, ibm7545, opw, ur, numeric or plugin:PATH.so (docs/ik.md)")
       ->capture_default_str();
+  add_start_option(command, args.start);
 }
 
 void add_verify_options(CLI::App& command, VerifyArguments& args) {
@@ -67,7 +69,9 @@ void add_verify_options(CLI::App& command, VerifyArguments& args) {
 }
 
 certify::SetupRequest make_setup_request(const VerifyArguments& args, const ModelInputs& model) {
-  return batch::make_setup_request(batch::resolve_model_defaults(args, model));
+  certify::SetupRequest request = batch::make_setup_request(batch::resolve_model_defaults(args, model));
+  request.motion.start = batch::resolve_start(args, model.robot, model.from_cell);
+  return request;
 }
 
 }  // namespace grpvss::app

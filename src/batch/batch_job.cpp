@@ -5,6 +5,7 @@
 #include <string>
 
 #include "grpvss/batch/joint_trajectory_input.hpp"
+#include "grpvss/batch/motion_statement.hpp"
 #include "grpvss/certify/verifier.hpp"
 #include "grpvss/common/input_error.hpp"
 #include "grpvss/io/path_file.hpp"
@@ -145,6 +146,7 @@ JobInputs load_inputs(const BatchJob& job, SharedInputs& shared) {
   if (!options.profile_table.empty()) {
     request.motion.table = shared.profile_table(options.profile_table);
   }
+  request.motion.start = resolve_start(options, inputs.robot->model, model.from_cell, "start");
   request.path_label = file_label(motion_digest.file);
   inputs.setup = certify::resolve_setup(request);
   return inputs;
@@ -197,11 +199,15 @@ void verify_job(const BatchJob& job, SharedInputs& shared, const BatchOptions& o
   hooks.keep_steps = false;
   attach_reports(job, robot, inputs.environment->model, options.force, reports, hooks);
   const motion::KinematicsAccess kinematics = motion::make_kinematics_access(robot, ik);
+  certify::RunSettings settings = inputs.setup.run;
+  if (!inputs.joint_motion) {  // a trajectory states its own (certify::verify)
+    settings.motion_model = describe_path_motion(settings, settings.path_label, ik->name());
+  }
   const certify::VerificationRun run =
       inputs.joint_motion
           ? certify::verify(cell->cell, motion::Trajectory::from_joint_motion(robot, inputs.joint_motion),
-                            kinematics, inputs.setup.run, hooks)
-          : certify::verify(cell->cell, inputs.program, kinematics, inputs.setup.run, hooks);
+                            kinematics, settings, hooks)
+          : certify::verify(cell->cell, inputs.program, kinematics, settings, hooks);
   publish_reports(job, run, inputs, *cell, ik->name(), options, reports, result);
   result.verdict = run.result.verdict;
   result.exit_code = verdict_exit_code(run.result.verdict);

@@ -65,6 +65,7 @@ const std::map<std::string, KeyRule>& key_rules() {
       {"profile_table",
        file_key([](BatchJob& j, const std::string& v) { j.options.profile_table = v; })},
       {"ik", text_key([](BatchJob& j, const std::string& v) { j.options.ik = v; })},
+      {"start", text_key([](BatchJob& j, const std::string& v) { j.options.start = v; })},
       {"cp_speed", number_key([](BatchJob& j, double v) { j.options.cp_speed = v; })},
       {"output", file_key([](BatchJob& j, const std::string& v) { j.outputs.thesis_output = v; })},
       {"json", file_key([](BatchJob& j, const std::string& v) { j.outputs.json = v; })},
@@ -130,6 +131,7 @@ void refuse_trajectory_conflicts(const BatchJob& job, const RawJob& raw, const s
   const std::string motion = "the trajectory's waypoint times and interpolation are the motion";
   const std::vector<std::pair<const char*, std::string>> refused{
       {"timing", motion}, {"profile_table", motion}, {"cp_speed", motion},
+      {"start", "a trajectory starts at its first waypoint"},
       {"output", "the thesis output file describes path programs; use `json`"}};
   for (const auto& [key, why] : refused) {
     if (has_key(raw, key)) {
@@ -297,8 +299,8 @@ std::vector<RawJob> raw_jobs(const std::string& text, const std::string& file) {
 
 const std::vector<std::string>& job_keys() {
   static const std::vector<std::string> keys{
-      "id", "robot", "env", "cell", "path", "trajectory", "tolerance", "mode", "offset", "timing", "profile_table",
-      "ik", "cp_speed", "output", "json", "html", "certificate"};
+      "id", "robot", "env", "cell", "path", "trajectory", "tolerance", "mode", "offset", "timing",
+      "profile_table", "ik", "cp_speed", "start", "output", "json", "html", "certificate"};
   return keys;
 }
 

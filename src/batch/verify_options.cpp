@@ -6,6 +6,8 @@
 
 #include <fmt/core.h>
 
+#include "grpvss/batch/motion_statement.hpp"
+#include "grpvss/cell/start_configuration.hpp"
 #include "grpvss/common/input_error.hpp"
 #include "grpvss/io/profile_table_file.hpp"
 #include "grpvss/motion/profile_table.hpp"
@@ -107,6 +109,13 @@ certify::SetupRequest make_setup_request(const VerifyOptions& options) {
   return request;
 }
 
+std::optional<Eigen::VectorXd> resolve_start(const VerifyOptions& options, const RobotModel& robot,
+                                             bool from_cell, const std::string& source) {
+  if (options.start.empty()) return std::nullopt;
+  return cell::start_configuration(cell::parse_start_list(options.start, source), robot,
+                                   from_cell, source);
+}
+
 kinematics::IkChoice parse_ik_choice(const std::string& text) {
   const std::string plugin_prefix = "plugin:";
   if (text == "auto") return {kinematics::IkMethod::kAuto, {}};
@@ -118,6 +127,39 @@ kinematics::IkChoice parse_ik_choice(const std::string& text) {
     return {kinematics::IkMethod::kPlugin, text.substr(plugin_prefix.size())};
   }
   throw InputError("--ik", 0, "auto, ibm7545, opw, ur, numeric or plugin:PATH.so", "'" + text + "'");
+}
+
+// ---- The motion statement (grpvss/batch/motion_statement.hpp) ----
+namespace {  // the motion statement (motion_statement.hpp)
+
+std::string ptp_part(const motion::MotionModel& model) {
+  std::string profiles = "trapezoid profiles";
+  if (model.table) {  // named as the path is, without its folder
+    const std::string& file = model.table->file_name();
+    profiles = "profile table " + file.substr(file.find_last_of('/') + 1);
+  }
+  return fmt::format("{} PTP timing ({}{})", motion::to_string(model.timing), profiles,
+                     model.timing == motion::PtpTiming::kSynchronized
+                         ? ", straight line in joint space"
+                         : ", each joint on its own");
+}
+
+// What the verdict claims (docs/verification.md#verdicts-and-exit-codes).
+std::string claim_part(certify::ResolutionMode mode) {
+  if (mode == certify::ResolutionMode::kThesis) return "claim: none (thesis mode, not certified)";
+  return "claim: CLEAR = robot clear along the whole motion and robot + tolerance clear at every "
+         "step";
+}
+
+}  // namespace
+
+std::string describe_path_motion(const certify::RunSettings& settings,
+                                 const std::string& path_label, const std::string& ik_name) {
+  return fmt::format(
+      "path {}, {}, CP lines at {} length units/s, IK {} (solution nearest the previous joints), "
+      "exact stops (no blending), {}",
+      path_label, ptp_part(settings.motion), settings.motion.cp_speed, ik_name,
+      claim_part(settings.mode));
 }
 
 }  // namespace grpvss::batch

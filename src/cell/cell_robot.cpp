@@ -73,6 +73,8 @@ Joint model_joint(const ChainJointDescription& joint, const kinematics::ChainJoi
   model.home = joint.home;
   model.acceleration = joint.acceleration;
   model.deceleration = joint.acceleration;
+  // URDF convention: a velocity of 0 (or no <limit>) leaves the joint's speed unlimited.
+  if (joint.velocity > 0.0) model.max_velocity = joint.velocity;
   return model;
 }
 

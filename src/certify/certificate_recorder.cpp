@@ -19,6 +19,7 @@ CertificateRecorder::CertificateRecorder(const RobotCell& cell, const RunSetting
   certificate_.names = certificate_names(cell.robot(), cell.environment());
   certificate_.self_collision_pairs = cell.robot().self_collision_pairs;
   certificate_.trajectory_interpolation = settings.trajectory_interpolation;
+  certificate_.start = settings.motion.start;
 }
 
 StepCertificate CertificateRecorder::certificate_step(const ProbeResult& probe, int index,

@@ -6,6 +6,8 @@
 #include <string>
 #include <utility>
 
+#include <fmt/core.h>
+
 #include "check_ledger.hpp"
 #include "checked_cell.hpp"
 #include "claim_check.hpp"
@@ -52,6 +54,9 @@ class Checker {
   std::optional<Eigen::VectorXd> planned_configuration(const motion::SegmentTrajectory& planned,
                                                        std::size_t k, const StepCertificate& step,
                                                        const StepCertificate* previous) const;
+  /// The certificate's start is the one the check is given (both unset: the robot's home; a
+  /// decision only when either is set).
+  void check_start();
   /// The joint trajectory of CheckOptions as the trajectory to check against.
   motion::Trajectory joint_trajectory_motion();
   /// A trajectory piece's exact joint variation bound over a transition; empty otherwise.
@@ -118,6 +123,7 @@ void Checker::start() {
   }
   steps_.emplace(*cell_, certificate_, ledger_, facts_);
   transitions_.emplace(*cell_, certificate_, ledger_, facts_, motion_clearances_);
+  check_start();  // a trajectory's start is its first waypoint: no start is recorded
   if (options_.joint_trajectory) {
     trajectory_ = joint_trajectory_motion();
   } else {
@@ -130,6 +136,7 @@ void Checker::start() {
     model.timing = certificate_.timing;
     model.cp_speed = certificate_.cp_speed;
     model.table = options_.profile_table;
+    model.start = options_.start;
     trajectory_ = motion::Trajectory::plan(robot_, program_, kinematics_, model);
   }
   if (segment_count_ != trajectory_->segments().size() || !trajectory_->errors().empty()) {
@@ -147,6 +154,28 @@ void Checker::start() {
   }
 }
 
+std::string start_text(const std::optional<Eigen::VectorXd>& start) {
+  if (!start) return "the robot's home";
+  std::string text;
+  for (Eigen::Index j = 0; j < start->size(); ++j) {
+    text += (j == 0 ? "" : ",") + fmt::format("{}", (*start)[j]);
+  }
+  return "start " + text;
+}
+
+void Checker::check_start() {
+  // Both at the home: nothing to compare (counts unchanged for certificates without a start).
+  if (!certificate_.start && !options_.start) return;
+  const bool same = certificate_.start.has_value() == options_.start.has_value() &&
+                    (!certificate_.start || (certificate_.start->size() == options_.start->size() &&
+                                                   *certificate_.start == *options_.start));
+  if (!same) {
+    ledger_.fail("the certificate was made for a path from " + start_text(certificate_.start) +
+                 ", the check is given a path from " + start_text(options_.start));
+  }
+  ledger_.decided();
+}
+
 // The joint trajectory's motion, re-derived: the interpolation must be the certificate's and
 // the limits must hold along it (the axis radii assume them).
 // proof: proofs/joint-variation.md#lemma-position-limits
@@ -162,7 +191,7 @@ motion::Trajectory Checker::joint_trajectory_motion() {
                  ", the check is given a joint trajectory with " + given + " interpolation");
   }
   ledger_.decided();
-  if (const auto violation = motion::first_limit_violation(motion, motion::position_limits_of(robot_))) {
+  if (const auto violation = motion::first_limit_violation(motion, motion::joint_limits_of(robot_))) {
     ledger_.fail("the joint trajectory leaves the robot's limits: " +
                  motion::describe(*violation, motion.trajectory()));
   }

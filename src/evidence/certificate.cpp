@@ -217,6 +217,7 @@ json certificate_to_json(const Certificate& certificate) {
   if (!certificate.trajectory_interpolation.empty()) {
     document["trajectory_interpolation"] = certificate.trajectory_interpolation;
   }
+  if (certificate.start) document["start"] = vector_to_json(*certificate.start);
   json errors = json::array();
   for (const PathError& error : certificate.errors) {
     errors.push_back({{"code", error.code}, {"segment", error.segment}, {"step", error.step},
@@ -295,6 +296,9 @@ Certificate certificate_header_from_json(const json& document, const std::string
       throw InputError(file, 0, "trajectory_interpolation linear or cubic-hermite",
                        certificate.trajectory_interpolation);
     }
+  }
+  if (document.contains("start")) {
+    certificate.start = vector_field(document, "start", top, file);
   }
   certificate.inputs = input_names(document, file);
   // Present; its elements are read one by one (segment_certificate_from_json).

@@ -214,6 +214,12 @@ JointLimits position_limits_of(const RobotModel& robot) {
   return limits;
 }
 
+JointLimits joint_limits_of(const RobotModel& robot) {
+  JointLimits limits = position_limits_of(robot);
+  for (int j = 0; j < robot.joint_count(); ++j) limits.max_speed[j] = robot.joints[j].max_velocity;
+  return limits;
+}
+
 std::optional<LimitViolation> first_limit_violation(const JointTrajectoryMotion& motion,
                                                     const JointLimits& limits) {
   validate(motion, limits);

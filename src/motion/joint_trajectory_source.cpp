@@ -22,14 +22,14 @@ std::shared_ptr<const JointTrajectoryMotion> certified_joint_motion(const RobotM
   }
   auto motion = std::make_shared<const JointTrajectoryMotion>(std::move(trajectory));
   const JointTrajectory& stored = motion->trajectory();
-  // proof: proofs/joint-variation.md#lemma-position-limits
-  if (const auto violation = first_limit_violation(*motion, position_limits_of(robot))) {
+  // proof: proofs/joint-variation.md#lemma-position-limits, #lemma-velocity-limits
+  if (const auto violation = first_limit_violation(*motion, joint_limits_of(robot))) {
     const int waypoint = violation->piece < 0 ? 0 : violation->piece;
     const int line = waypoint < static_cast<int>(stored.source_lines.size())
                          ? stored.source_lines[static_cast<std::size_t>(waypoint)]
                          : 0;
     throw InputError(stored.source_file, line,
-                     "joint values within the robot's limits along the interpolated motion",
+                     "joint positions and speeds within the robot's limits along the interpolated motion",
                      describe(*violation, stored));
   }
   return motion;

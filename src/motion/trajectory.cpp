@@ -91,7 +91,10 @@ Trajectory Trajectory::plan(const RobotModel& robot, const PathProgram& program,
   trajectory.robot_ = &robot;
   trajectory.kinematics_ = kinematics;
   trajectory.options_ = options;
-  trajectory.home_ = home_of(robot);
+  trajectory.home_ = options.start ? *options.start : home_of(robot);
+  if (trajectory.home_.size() != robot.joint_count()) {
+    throw std::invalid_argument("Trajectory::plan: the start has another joint count than the robot");
+  }
   const Planner planner{robot, kinematics, options};
   Eigen::VectorXd q = trajectory.home_;
   double time = 0.0;

@@ -80,6 +80,7 @@ void CertificateStream::finish(const certify::Certificate& certificate,
   head.names = certificate.names;
   head.self_collision_pairs = certificate.self_collision_pairs;
   head.trajectory_interpolation = certificate.trajectory_interpolation;
+  head.start = certificate.start;
   head.errors = certificate.errors;
   nlohmann::json document = certificate_document(head, inputs);
   document["segments"] = streamed_array_placeholder(0);

@@ -109,6 +109,11 @@ class ThesisWriter {
       line("THE RESOLUTION MODE = CERTIFIED");
       blank();
     }
+    // A joint trajectory's file states its motion (thesis inputs never have one).
+    if (has_trajectory_pieces()) {
+      line("THE MOTION MODEL = " + result_.motion_model);
+      blank();
+    }
     for (const certify::SegmentRecord& segment : result_.segments) {
       segment_block(segment);
       steps_of(segment.number);
@@ -124,6 +129,13 @@ class ThesisWriter {
   }
 
   void emit(const std::string& text) { sink_(text); }
+
+  bool has_trajectory_pieces() const {
+    for (const auto& segment : result_.segments) {
+      if (segment.trajectory_piece) return true;
+    }
+    return false;
+  }
 
   bool has_segment(int number) const {
     for (const auto& segment : result_.segments) {
@@ -171,7 +183,21 @@ class ThesisWriter {
     blank();
   }
 
+  // A piece of a joint trajectory: from one waypoint to the next, no desired speeds.
+  void trajectory_piece_block(const certify::SegmentRecord& segment, const PtpJointSegment& spec) {
+    line("--- JOINT TRAJECTORY PIECE ---");
+    line(" STARTING JOINT VALUE FINAL JOINT VALUE");
+    blank();
+    const std::vector<double> start = in_file_units(segment.start_q);
+    const std::vector<double> target = in_file_units(spec.target);
+    for (std::size_t i = 0; i < start.size(); ++i) {
+      line(fmt::format("JOINT {}\t{}\t{}", i + 1, fixed2(start[i]), fixed2(target[i])));
+    }
+    blank();
+  }
+
   void spec_block(const certify::SegmentRecord& segment, const PtpJointSegment& spec) {
+    if (segment.trajectory_piece) return trajectory_piece_block(segment, spec);
     line("--- PTP (JCS)---");
     line(" STARTING JOINT VALUE FINAL JOINT VALUE DESIRED VELOCITY");
     blank();

@@ -199,14 +199,61 @@ TEST_F(JointTrajectoryCli, JointNameMismatchesAndLimitViolationsAreRefusedWithTh
   const CliRun limit = run_cli(dir(), "verify " + inputs("ur5e-elbow-limit.csv"));
   EXPECT_EQ(limit.exit_code, grpvss::app::kExitInputError);
   EXPECT_EQ(limit.err, "grpvss: error: " + kTrajectories +
-                           "ur5e-elbow-limit.csv:3: expected joint values within the robot's "
-                           "limits along the interpolated motion, found joint 'elbow_joint' (3) "
+                           "ur5e-elbow-limit.csv:3: expected joint positions and speeds within the "
+                           "robot's limits along the interpolated motion, found joint 'elbow_joint' (3) "
                            "is above its upper position limit 3.141592653589793 at t = 3 s: 3.3 "
                            "(piece 2, between line 3 and line 4)\n");
   // The same refusals from trajectory and check-certificate (before any certificate is read).
   EXPECT_EQ(run_cli(dir(), "trajectory " + inputs("ur5e-elbow-limit.csv")).exit_code,
             grpvss::app::kExitInputError);
   EXPECT_EQ(run_cli(dir(), "check-certificate " + inputs("ur5e-names-mismatch.csv") + " none.json")
+                .exit_code,
+            grpvss::app::kExitInputError);
+}
+
+TEST_F(JointTrajectoryCli, TheThesisOutputFileListsThePiecesWithTheMotionModel) {
+  const CliRun verify = run_cli(dir(), "verify " + inputs("ur5e-clear.json") + " --out o.txt");
+  ASSERT_EQ(verify.exit_code, grpvss::app::kExitOk) << verify.err;
+  const std::string out = grpvss::test::read_text_file(dir() + "/o.txt");
+  // Waypoints 0 and 1 in the robot's joint order, degrees: lift -1.5708 rad = -90.00, the pan
+  // -0.3 rad = -17.19, lift and elbow -+1.4 rad = -+80.21.
+  EXPECT_EQ(out.rfind("THE TOLERANCE VALUE = 0.005\n\nTHE RESOLUTION MODE = CERTIFIED\n\n"
+                      "THE MOTION MODEL = joint trajectory ur5e-clear.json, cubic Hermite "
+                      "interpolation, 3 waypoints, 0..3 s\n\n"
+                      "THE 1TH SEGMENT OF THE PATH INPUT FROM FILE ur5e-clear.json\n\n"
+                      "--- JOINT TRAJECTORY PIECE ---\n STARTING JOINT VALUE FINAL JOINT VALUE\n\n"
+                      "JOINT 1\t0.00\t-17.19\nJOINT 2\t-90.00\t-80.21\nJOINT 3\t90.00\t80.21\n"
+                      "JOINT 4\t0.00\t0.00\nJOINT 5\t0.00\t0.00\nJOINT 6\t0.00\t0.00\n\n"
+                      "IN 1TH STEP, THE JOINT VALUES ARE\n",
+                      0),
+            0u)
+      << out;
+  EXPECT_NE(out.find("THE 2TH SEGMENT OF THE PATH INPUT FROM FILE ur5e-clear.json\n\n"
+                     "--- JOINT TRAJECTORY PIECE ---\n"),
+            std::string::npos);
+  const std::string end = "\nTOTAL 8 STEPS IN THIS PATH\nNO COLLISION DETECTED IN THIS PATH\n";
+  ASSERT_GE(out.size(), end.size());
+  EXPECT_EQ(out.substr(out.size() - end.size()), end) << out;
+}
+
+// The UR5e's URDF limits every joint to 3.141592653589793 rad/s (`<limit velocity>`).
+TEST_F(JointTrajectoryCli, SpeedsBeyondTheUrdfVelocityLimitAreRefusedNamingJointTimeAndLimit) {
+  // Cubic, at rest at both waypoints: the pan's speed peaks mid-piece at 1.5 * 1.1 / 0.5 = 3.3.
+  const CliRun cubic = run_cli(dir(), "verify " + inputs("ur5e-pan-too-fast.csv"));
+  EXPECT_EQ(cubic.exit_code, grpvss::app::kExitInputError);
+  EXPECT_EQ(cubic.err, "grpvss: error: " + kTrajectories + "ur5e-pan-too-fast.csv:2: expected joint positions and speeds within the robot's "
+                        "limits along the interpolated motion, found joint 'shoulder_pan_joint' "
+                        "(1) is faster than its speed limit 3.141592653589793 at t = 0.25 s: "
+                        "3.3000000000000003 (piece 1, between line 2 and line 3)\n");
+  // Linear: the second piece's slope (0.6 - 0.2) / 0.1 = 4 rad/s.
+  const CliRun linear = run_cli(dir(), "trajectory " + inputs("ur5e-pan-too-fast-linear.csv"));
+  EXPECT_EQ(linear.exit_code, grpvss::app::kExitInputError);
+  EXPECT_EQ(linear.err, "grpvss: error: " + kTrajectories + "ur5e-pan-too-fast-linear.csv:3: expected joint positions and speeds within the "
+                         "robot's limits along the interpolated motion, found joint "
+                         "'shoulder_pan_joint' (1) is faster than its speed limit "
+                         "3.141592653589793 at t = 1 s: 3.999999999999996 (piece 2, between "
+                         "line 3 and line 4)\n");
+  EXPECT_EQ(run_cli(dir(), "check-certificate " + inputs("ur5e-pan-too-fast.csv") + " none.json")
                 .exit_code,
             grpvss::app::kExitInputError);
 }

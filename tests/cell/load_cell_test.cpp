@@ -158,3 +158,27 @@ TEST_F(LoadCell, AMillimetreCellAroundAUrdfRobotIsConvertedToMetres) {
 }
 
 }  // namespace
+
+// A URDF's `<limit velocity>` is the joint's speed limit; 0 means none (the URDF convention).
+TEST(LoadCellVelocity, UrdfVelocityLimitsBecomeTheJointsMaxVelocityAndZeroMeansUnlimited) {
+  const grpvss::cell::LoadedCell demo = grpvss::cell::load_cell(kSixAxis + "cell.yaml");
+  for (const grpvss::Joint& joint : demo.robot.joints) EXPECT_EQ(joint.max_velocity, 6.28);
+  // The same robot with joint_2's velocity 0, beside a link to the demo's meshes.
+  const std::filesystem::path folder = std::filesystem::temp_directory_path() /
+                                       ("grpvss-velocity-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(folder);
+  std::filesystem::create_directory_symlink(kSixAxis + "meshes", folder / "meshes");
+  std::ifstream in(kSixAxis + "sixaxis.urdf");
+  std::string urdf((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string joint_2 = "upper=\"0.785\" effort=\"100\" velocity=\"6.28\"";
+  ASSERT_NE(urdf.find(joint_2), std::string::npos);
+  urdf.replace(urdf.find(joint_2), joint_2.size(), "upper=\"0.785\" effort=\"100\" velocity=\"0\"");
+  std::ofstream(folder / "robot.urdf") << urdf;
+  std::ofstream(folder / "cell.yaml")
+      << "units: m\nrobot:\n  urdf: robot.urdf\nobstacles:\n"
+         "  - {name: far, box: [0.1, 0.1, 0.1], pose: {xyz: [9, 9, 9]}}\n";
+  const grpvss::cell::LoadedCell cell = grpvss::cell::load_cell((folder / "cell.yaml").string());
+  std::filesystem::remove_all(folder);
+  EXPECT_EQ(cell.robot.joints[0].max_velocity, 6.28);
+  EXPECT_EQ(cell.robot.joints[1].max_velocity, std::numeric_limits<double>::infinity());
+}

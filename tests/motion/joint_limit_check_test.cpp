@@ -231,6 +231,33 @@ TEST(JointLimitCheck, PositionLimitsComeFromTheRobotModel) {
   EXPECT_TRUE(std::isinf(from_robot.max_speed[0]) && std::isinf(from_robot.max_speed[1]));
 }
 
+TEST(JointLimitCheck, SpeedLimitsComeFromTheJointsMaxVelocity) {
+  RobotModel robot;
+  robot.joints.resize(2);
+  robot.joints[0].minimum = -1;
+  robot.joints[0].maximum = 1;
+  robot.joints[0].max_velocity = 2.5;
+  robot.joints[1].minimum = -1;
+  robot.joints[1].maximum = 1;  // max_velocity left at its default: no limit
+  const JointLimits from_robot = joint_limits_of(robot);
+  EXPECT_EQ(from_robot.lower, Eigen::Vector2d(-1, -1));
+  EXPECT_EQ(from_robot.max_speed[0], 2.5);
+  EXPECT_TRUE(std::isinf(from_robot.max_speed[1]));
+  // 0 -> 1 in 0.5 s at rest at both ends (cubic): peak 1.5 * 1 / 0.5 = 3 rad/s at t = 0.25 s,
+  // beyond joint 1's 2.5; joint 2 moves as fast unchecked.
+  const JointTrajectoryMotion motion =
+      motion_from_csv("time,a,b,a.vel,b.vel\n0,0,0,0,0\n0.5,1,1,0,0\n");
+  const auto violation = first_limit_violation(motion, from_robot);
+  ASSERT_TRUE(violation);
+  EXPECT_EQ(violation->joint, 0);
+  EXPECT_EQ(violation->kind, LimitKind::kOverSpeed);
+  EXPECT_EQ(violation->time, 0.25);
+  EXPECT_EQ(violation->value, 3.0);
+  EXPECT_EQ(violation->limit, 2.5);
+  robot.joints[0].max_velocity = 3.0;  // touching the limit is within it
+  EXPECT_FALSE(first_limit_violation(motion, joint_limits_of(robot)));
+}
+
 TEST(JointLimitCheck, RejectsMalformedLimits) {
   const JointTrajectoryMotion motion = motion_from_csv("time,a\n0,0\n1,1\n");
   EXPECT_THROW(first_limit_violation(motion, limits({0, 0}, {1, 1}, {1, 1})), std::invalid_argument);

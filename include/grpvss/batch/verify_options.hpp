@@ -4,8 +4,11 @@
 /// a batch manifest takes as keys), checked and turned into the typed request in one place for
 /// both front ends (docs/batch.md, docs/user-guide.md).
 
+#include <optional>
 #include <string>
 #include <vector>
+
+#include <Eigen/Core>
 
 #include "grpvss/cell/model_inputs.hpp"
 #include "grpvss/evidence/setup.hpp"
@@ -32,6 +35,9 @@ struct VerifyOptions {
   std::string profile_table;  ///< empty: the ideal trapezoids
   std::string ik = "auto";
   double cp_speed = 0.0;  ///< length units per s (of the cell, with a cell); 0: unset
+  /// The path's start, "q1,q2,..." in the model files' units (cell::start_configuration);
+  /// empty: the robot's home (a cell's `home`).
+  std::string start;
 };
 
 /// The model sources the options name.
@@ -57,6 +63,12 @@ VerifyOptions resolve_model_defaults(const VerifyOptions& options, const cell::M
 /// The words turned into the typed request, once (reads the profile table file). Tolerance and
 /// CP speed must be set (resolve_model_defaults()).
 certify::SetupRequest make_setup_request(const VerifyOptions& options);
+
+/// \brief The start configuration `options.start` names for `robot` (units: a cell's when
+/// `from_cell`, else the thesis files'), in library units; nullopt when it is empty.
+/// \throws InputError(source, 0, ...) as cell::parse_start_list(), cell::start_configuration().
+std::optional<Eigen::VectorXd> resolve_start(const VerifyOptions& options, const RobotModel& robot,
+                                             bool from_cell, const std::string& source = "--start");
 
 /// `ik`: auto, ibm7545, opw, ur, numeric or plugin:PATH.so. \throws InputError ("--ik", line 0).
 kinematics::IkChoice parse_ik_choice(const std::string& text);

@@ -10,6 +10,7 @@
 
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -54,6 +55,10 @@ struct CheckOptions {
   /// checked against instead of the path program's, with the exact variation bound
   /// (docs/certificate.md#joint-trajectories). Null: the path program.
   std::shared_ptr<const motion::JointTrajectoryMotion> joint_trajectory;
+  /// The path program's start configuration (library units), as verify was given it
+  /// (`--start`); unset: the robot's home. A certificate recording another start (or one
+  /// recording a start when this is unset, or none when it is set) is rejected.
+  std::optional<Eigen::VectorXd> start;
   /// SHA-256 of the files the check runs on ("robot", "environment", "path" or "trajectory"). When the
   /// certificate names its inputs, each must match, else the certificate is rejected.
   std::map<std::string, std::string> input_digests;

@@ -7,6 +7,7 @@
 /// Format: docs/certificate.md.
 
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -106,6 +107,10 @@ struct Certificate {
   /// piece; a step's time is its piece's waypoint time + parameter): its interpolation,
   /// "linear" or "cubic-hermite". Empty for a path program; written only when set.
   std::string trajectory_interpolation;
+  /// The path's start configuration (library units) when the run was given one (`--start`);
+  /// empty: the robot's home (a cell's `home`). The checker rejects a certificate whose start
+  /// differs from the one it is given (docs/certificate.md#start). Written only when set.
+  std::optional<Eigen::VectorXd> start;
   std::vector<SegmentCertificate> segments;
   std::vector<PathError> errors;
   /// What the certificate was made from (the file's "inputs": SHA-256 digests of the robot,

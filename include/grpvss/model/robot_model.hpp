@@ -7,6 +7,7 @@
 /// joint values in RADIANS, prismatic joint values in length units, velocities per second.
 /// Degrees exist only at the input/output boundary (io/, report/).
 
+#include <limits>
 #include <optional>
 #include <string>
 #include <tuple>
@@ -56,6 +57,9 @@ struct Joint {
   double maximum = 0.0;       ///< upper joint limit
   double acceleration = 0.0;  ///< maximum admissible acceleration (> 0), per s^2
   double deceleration = 0.0;  ///< maximum admissible deceleration (> 0, a magnitude), per s^2
+  /// Largest |dq/dt| (rad/s or length/s) a joint trajectory may ask of the joint: a URDF
+  /// `<limit velocity>`; +infinity (no limit) for thesis files and for a velocity 0 or absent.
+  double max_velocity = std::numeric_limits<double>::infinity();
 };
 
 /// \brief Link i is rigidly attached to frame i (link 0 is the base, fixed in the world).

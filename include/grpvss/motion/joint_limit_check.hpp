@@ -27,6 +27,10 @@ struct JointLimits {
 /// The robot's position limits (Joint::minimum, Joint::maximum) and no speed limits.
 JointLimits position_limits_of(const RobotModel& robot);
 
+/// The robot's position limits and its speed limits (Joint::max_velocity: a URDF's
+/// `<limit velocity>`, +infinity where it gives none): what a joint trajectory is held to.
+JointLimits joint_limits_of(const RobotModel& robot);
+
 enum class LimitKind {
   kBelowLower,  ///< q_j < lower_j
   kAboveUpper,  ///< q_j > upper_j

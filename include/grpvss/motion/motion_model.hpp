@@ -8,6 +8,8 @@
 #include <optional>
 #include <string_view>
 
+#include <Eigen/Core>
+
 namespace grpvss::motion {
 
 class ProfileTable;
@@ -39,6 +41,10 @@ struct MotionModel {
   double cp_speed = 1.0;
   /// Largest path-length spacing of the CP samples (IK check points), length units.
   double cp_spacing = 0.5;
+  /// Where the path starts (library units: rad, length), one value per joint, within the
+  /// limits (the caller checked it: cell::start_configuration). Unset: the robot's home.
+  /// A joint trajectory starts at its first waypoint instead (`--start` must equal it).
+  std::optional<Eigen::VectorXd> start;
 };
 
 }  // namespace grpvss::motion

@@ -52,7 +52,7 @@ struct SegmentTrajectory {
 /// outlive the trajectory.
 class Trajectory {
  public:
-  /// Plans every segment from the robot's home. Thesis errors 3-5 stop the plan at the
+  /// Plans every segment from `options.start`, else the robot's home. Thesis errors 3-5 stop the plan at the
   /// failing segment: `segments()` holds the earlier ones, `errors()` the error.
   /// \throws grpvss::InputError if the table's joint count differs from the robot's.
   static Trajectory plan(const RobotModel& robot, const PathProgram& program,

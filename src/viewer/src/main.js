@@ -302,6 +302,7 @@ function auditPanel() {
     <table>
       <tr><th>Robot</th><td>${escapeHtml(report.robot.name)} (${report.robot.joint_count} joints)</td></tr>
       <tr><th>Mode</th><td>${escapeHtml(report.mode)}${certified ? '' : ' — NOT certified'}</td></tr>
+      ${report.motion_model ? `<tr><th>Motion</th><td id="motion">${escapeHtml(report.motion_model)}</td></tr>` : ''}
       <tr><th>Tolerance</th><td>${report.tolerance}</td></tr>
       <tr><th>Expansion</th><td>radius ${fmt(scene.expansion.radius, 6)}, ${escapeHtml(scene.expansion.shape)}</td></tr>
       <tr><th>Steps</th><td>${report.total_steps}; cycle time ${fmt(report.total_cycle_time, 3)} s</td></tr>

@@ -66,6 +66,8 @@ try {
     'audit panel shows the three input SHA-256 digests');
   // Clearances are proven lower bounds: shown rounded down, never above the report's number.
   const auditText = await page.locator('#audit-panel').innerText();
+  check(typeof report.motion_model === 'string' && auditText.includes(report.motion_model),
+    'audit panel states the motion model (the report\'s motion_model)');
   // Every link with hulls is listed, link 0 (the base) included.
   const linksWithHulls = report.scene.links.filter((l) => l.hulls.length > 0).map((l) => l.link);
   check(linksWithHulls.includes(0), 'the IBM 7545 base (link 0) has hulls');
