@@ -16,6 +16,7 @@
 #include "commands.hpp"
 #include "grpvss/certify/verifier.hpp"
 #include "grpvss/common/input_error.hpp"
+#include "grpvss/io/length_unit.hpp"
 #include "grpvss/io/path_file.hpp"
 #include "grpvss/motion/kinematics_adapter.hpp"
 #include "grpvss/motion/trajectory.hpp"
@@ -128,8 +129,9 @@ int run_verify(const VerifyArguments& args) {
   const Environment& environment = model.environment;
   const MotionInput motion_input = read_motion(args, model);
   const PathProgram& program = motion_input.program;
-  const report::InputDigests digests = report::digest_input_files(
+  report::InputDigests digests = report::digest_input_files(
       model.robot_digest_file, model.environment_digest_file, motion_input.file);
+  if (model.model_unit) digests.length_unit = io::length_unit_name(*model.model_unit);
   certify::SetupRequest request = make_setup_request(args, model);
   request.path_label = file_label(motion_input.file);
   const certify::VerificationSetup setup = certify::resolve_setup(request);

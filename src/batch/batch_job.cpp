@@ -10,6 +10,7 @@
 #include "grpvss/io/text_file.hpp"
 #include "grpvss/motion/kinematics_adapter.hpp"
 #include "grpvss/report/certificate_output.hpp"
+#include "grpvss/io/length_unit.hpp"
 #include "grpvss/report/file_units.hpp"
 #include "grpvss/report/input_digests.hpp"
 #include "grpvss/report/json_report.hpp"
@@ -122,7 +123,8 @@ JobInputs load_inputs(const BatchJob& job, SharedInputs& shared) {
   cell::convert_path_lengths(inputs.program, inputs.robot->model, model.model_units_per_cell_unit);
   inputs.digests = {{model.robot_digest_file, inputs.robot->sha256},
                     {model.environment_digest_file, inputs.environment->sha256},
-                    {options.path_file, report::sha256_hex(path_text)}};
+                    {options.path_file, report::sha256_hex(path_text)},
+                    model.model_unit ? std::string(io::length_unit_name(*model.model_unit)) : ""};
   VerifyOptions without_table = resolve_model_defaults(options, model);
   without_table.profile_table.clear();  // read once per batch, below
   certify::SetupRequest request = make_setup_request(without_table);

@@ -30,6 +30,10 @@ ModelInputs load_cell_inputs(const ModelSources& sources) {
   if (loaded.description.motion.cp_speed) {
     inputs.cp_speed = *loaded.description.motion.cp_speed * loaded.model_units_per_cell_unit;
   }
+  if (loaded.description.motion.cp_spacing) {
+    inputs.cp_spacing = *loaded.description.motion.cp_spacing * loaded.model_units_per_cell_unit;
+  }
+  inputs.model_unit = loaded.model_unit;
   inputs.warnings = std::move(loaded.warnings);
   return inputs;
 }
