@@ -11,6 +11,7 @@
 
 #include "commands.hpp"
 #include "grpvss/common/input_error.hpp"
+#include "grpvss/io/length_unit.hpp"
 #include "grpvss/io/path_file.hpp"
 #include "grpvss/io/profile_table_file.hpp"
 #include "grpvss/motion/kinematics_adapter.hpp"
@@ -37,9 +38,19 @@ struct TrajectoryArguments {
   std::vector<double> at;
   double step = 0.0;
   double cp_speed = 1.0;
-  double cp_spacing = 0.5;
+  double cp_spacing = 0.0;  ///< 0: the cell's motion.cp_spacing, else default_cp_spacing()
   bool json = false;
 };
+
+/// The default CP sample spacing, 0.5 in (the thesis's), in the model's unit: 0.5 for thesis
+/// files (inches, or whatever unit they use), 0.0127 for a URDF robot (metres).
+constexpr double kDefaultCpSpacingInches = 0.5;
+
+double default_cp_spacing(const ModelInputs& model) {
+  if (model.cp_spacing) return *model.cp_spacing;
+  if (!model.model_unit) return kDefaultCpSpacingInches;
+  return kDefaultCpSpacingInches * io::length_unit_factor(LengthUnit::kInch, *model.model_unit);
+}
 
 /// Most time samples --step may produce (a guard against an accidental tiny step).
 constexpr double kMaxSteps = 1e6;
@@ -110,7 +121,7 @@ int run_trajectory(const TrajectoryArguments& args) {
     options.table = std::make_shared<const motion::ProfileTable>(
         io::read_profile_table_file(args.profile_table));
   options.cp_speed = args.cp_speed;
-  options.cp_spacing = args.cp_spacing;
+  options.cp_spacing = args.cp_spacing > 0.0 ? args.cp_spacing : default_cp_spacing(model);
   options.start = start_of(args.start, model);
   const motion::Trajectory trajectory =
       motion::Trajectory::plan(robot, program, motion::make_kinematics_access(robot, ik), options);
@@ -156,9 +167,11 @@ void register_trajectory_command(CLI::App& app, int& exit_code) {
       ->check(positive_number())
       ->capture_default_str();
   command->add_option("--cp-spacing", args->cp_spacing,
-                      "Largest path-length spacing of the CP IK samples")
-      ->check(positive_number())
-      ->capture_default_str();
+                      "Largest path-length spacing of the CP IK samples, in the model's length "
+                      "unit (m for a URDF robot, else the cell's or the robot file's; default: "
+                      "the cell's motion.cp_spacing, else 0.5 in: 0.5 for thesis files, "
+                      "0.0127 m for a URDF robot)")
+      ->check(positive_number());
   command->add_flag("--json", args->json, "Print a JSON document instead of text");
   command->callback([args, &exit_code] { exit_code = run_trajectory(*args); });
 }

@@ -17,6 +17,7 @@
 #include "grpvss/batch/motion_statement.hpp"
 #include "grpvss/certify/verifier.hpp"
 #include "grpvss/common/input_error.hpp"
+#include "grpvss/io/length_unit.hpp"
 #include "grpvss/io/path_file.hpp"
 #include "grpvss/motion/kinematics_adapter.hpp"
 #include "grpvss/motion/trajectory.hpp"
@@ -142,8 +143,9 @@ int run_verify(const VerifyArguments& args) {
   const auto ik = motion::select_ik(parse_ik_choice(args.ik), robot, model.robot_label_file);
   const MotionInput motion_input = read_motion(args, model, *ik);
   const PathProgram& program = motion_input.program;
-  const report::InputDigests digests = report::digest_input_files(
+  report::InputDigests digests = report::digest_input_files(
       model.robot_digest_file, model.environment_digest_file, motion_input.file);
+  if (model.model_unit) digests.length_unit = io::length_unit_name(*model.model_unit);
   certify::SetupRequest request = make_setup_request(args, model);
   if (motion_input.joint_motion) {  // a trajectory starts at its first point
     check_trajectory_start(args.start, model, *motion_input.joint_motion);

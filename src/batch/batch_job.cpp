@@ -13,6 +13,7 @@
 #include "grpvss/motion/kinematics_adapter.hpp"
 #include "grpvss/motion/trajectory.hpp"
 #include "grpvss/report/certificate_output.hpp"
+#include "grpvss/io/length_unit.hpp"
 #include "grpvss/report/file_units.hpp"
 #include "grpvss/report/input_digests.hpp"
 #include "grpvss/report/json_report.hpp"
@@ -139,7 +140,8 @@ JobInputs load_inputs(const BatchJob& job, SharedInputs& shared) {
   const report::InputFileDigest motion_digest = load_motion(options, model, inputs);
   inputs.digests = {{model.robot_digest_file, inputs.robot->sha256},
                     {model.environment_digest_file, inputs.environment->sha256},
-                    motion_digest};
+                    motion_digest,
+                    model.model_unit ? std::string(io::length_unit_name(*model.model_unit)) : ""};
   VerifyOptions without_table = resolve_model_defaults(options, model);
   without_table.profile_table.clear();  // read once per batch, below
   certify::SetupRequest request = make_setup_request(without_table);

@@ -49,6 +49,10 @@ ModelInputs load_cell_inputs(const ModelSources& sources) {
   }
   inputs.X_WR = isometry_of(loaded.description.robot.base, loaded.model_units_per_cell_unit);
   inputs.X_FE = isometry_of(loaded.description.robot.tool, loaded.model_units_per_cell_unit);
+  if (loaded.description.motion.cp_spacing) {
+    inputs.cp_spacing = *loaded.description.motion.cp_spacing * loaded.model_units_per_cell_unit;
+  }
+  inputs.model_unit = loaded.model_unit;
   inputs.warnings = std::move(loaded.warnings);
   return inputs;
 }

@@ -260,7 +260,8 @@ class JsonWriter {
           {"environment", input(digests.environment)},
           {"path", input(digests.path)}}},
         {"units",
-         {{"length", "unit of the input files"},
+         {{"length", digests.length_unit.empty() ? std::string("unit of the input files")
+                                                 : digests.length_unit},
           {"revolute_joint", "deg"},
           {"prismatic_joint", "length"},
           {"revolute_joint_velocity", "deg/s"},

@@ -30,6 +30,13 @@ std::string fixed2(double x) {
   return text;
 }
 
+// A length with two decimals when they show it exactly (0.50, the thesis's output), else with
+// the digits its size needs (0.0127 m is not 0.01).
+std::string length_text(double x) {
+  if (std::round(x * 100.0) / 100.0 == x) return fixed2(x);
+  return fmt::format("{:.6g}", x);
+}
+
 std::string joint_row(const RobotModel& robot, const Eigen::VectorXd& q) {
   std::string row;
   for (double value : display_joints(robot, q)) row += fmt::format(" {:>8}", fixed2(value));
@@ -67,7 +74,7 @@ std::string trajectory_text(const RobotModel& robot, const motion::Trajectory& t
                        model.table ? "TABLE " + model.table->file_name() : "IDEAL TRAPEZOIDS",
                        settings.ik_name);
     out += fmt::format("CP SEGMENTS: NOMINAL SPEED {} PER S, SAMPLE SPACING {}\n",
-                       fixed2(model.cp_speed), fixed2(model.cp_spacing));
+                       fixed2(model.cp_speed), length_text(model.cp_spacing));
   }
   out += "JOINT VALUES IN DEGREES (REVOLUTE) AND LENGTH UNITS (PRISMATIC)\n";
   out += fmt::format("\nHOME JOINT VALUES {}\n", joint_row(robot, trajectory.home()));

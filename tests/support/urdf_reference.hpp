@@ -54,11 +54,11 @@ ReferenceUrdf read_reference_urdf(const std::string& path);
 /// The three decimals of "x y z" as text.
 std::vector<std::string> three_words(const std::string& text);
 
-/// A decimal string in scalar S (strtold for long double, S(string) otherwise).
+/// A decimal string in scalar S (strtold for long double and double, S(string) otherwise).
 template <typename S>
 S decimal(const std::string& text) {
-  if constexpr (std::is_same_v<S, long double>) {
-    return std::strtold(text.c_str(), nullptr);
+  if constexpr (std::is_floating_point_v<S>) {
+    return static_cast<S>(std::strtold(text.c_str(), nullptr));
   } else {
     return S(text);
   }

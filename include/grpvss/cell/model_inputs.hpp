@@ -12,6 +12,7 @@
 #include <Eigen/Geometry>
 
 #include "grpvss/io/input_warning.hpp"
+#include "grpvss/model/cell_description.hpp"
 #include "grpvss/model/environment.hpp"
 #include "grpvss/model/path_program.hpp"
 #include "grpvss/model/robot_model.hpp"
@@ -52,6 +53,11 @@ struct ModelInputs {
   /// (docs/robot-programs.md#verifying-a-program).
   Eigen::Isometry3d X_WR = Eigen::Isometry3d::Identity();
   Eigen::Isometry3d X_FE = Eigen::Isometry3d::Identity();
+  /// The cell's CP sample spacing `motion.cp_spacing` (model units), when it gives one.
+  std::optional<double> cp_spacing;
+  /// The unit of every length of the model, for a cell (metres for a URDF robot, the cell's
+  /// unit for a thesis robot); unset for thesis files, whose unit is whatever they use.
+  std::optional<LengthUnit> model_unit;
   /// Every warning of the files read (the library never prints them).
   std::vector<io::InputWarning> warnings;
 };

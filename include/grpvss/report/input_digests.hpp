@@ -14,11 +14,14 @@ struct InputFileDigest {
   std::string sha256;
 };
 
-/// The robot, environment and path files of one run.
+/// The robot, environment and path files of one run, and the unit their lengths are given in.
 struct InputDigests {
   InputFileDigest robot;
   InputFileDigest environment;
   InputFileDigest path;
+  /// The model's length unit when a cell states it ("m", "mm", "in"): the report's `units.length`.
+  /// Empty for thesis files, whose unit is whatever they use ("unit of the input files").
+  std::string length_unit;
 };
 
 /// SHA-256 of `bytes`, lowercase hex.

@@ -1,0 +1,83 @@
+// The Panda of ../shared/robots folding its hand into its arm (tests/data/cells/panda-self.yaml,
+// which keeps the Panda's self pairs): elbow (joint 4) from -135 to -165 degrees and wrist
+// (joint 6) from 90 to 60 degrees bring the hand's capsule into the upper arm's, a COLLISION
+// naming both links at the exact first step, with the certificate accepted; the same fold
+// stopped short (-145 / 35 degrees; -147 / 37 already touches) is CLEAR and accepted. The
+// independent oracle (support/urdf_cell_oracle.hpp: own FK, exact LP) confirms the named step
+// is a self-contact and the step before is not.
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "grpvss/cell/load_cell.hpp"
+#include "grpvss/certify/verifier.hpp"
+#include "grpvss/checker/certificate_checker.hpp"
+#include "grpvss/io/path_file.hpp"
+#include "grpvss/motion/kinematics_adapter.hpp"
+#include "support/urdf_cell_oracle.hpp"
+
+namespace grpvss::certify {
+namespace {
+
+const std::string kCells = std::string(GRPVSS_SOURCE_DIR) + "/tests/data/cells/";
+
+struct PandaRun {
+  cell::LoadedCell cell;
+  PathProgram program;
+  motion::KinematicsAccess kinematics;
+  VerificationRun verified;
+};
+
+// As `grpvss verify --cell panda-self.yaml --path <path>`: the cell's tolerance, synchronized
+// PTP timing (the cells' default).
+PandaRun run(const std::string& path) {
+  PandaRun r{cell::load_cell(kCells + "panda-self.yaml"), {}, {}, {}};
+  r.program = io::read_path_file(kCells + path, r.cell.robot);
+  r.kinematics = motion::make_kinematics_access(r.cell.robot, motion::select_ik({}, r.cell.robot, "panda"));
+  SetupRequest request;
+  request.tolerance = r.cell.tolerance;
+  request.motion.timing = motion::PtpTiming::kSynchronized;
+  r.verified = verify(r.cell.robot, r.cell.environment, r.program, r.kinematics, resolve_setup(request));
+  return r;
+}
+
+CheckReport check(const PandaRun& r) {
+  return check_certificate(r.cell.robot, r.cell.environment, r.program, r.kinematics, r.verified.certificate);
+}
+
+TEST(PandaSelfCollision, FoldingTheHandIntoTheUpperArmIsACollisionNamingBothLinks) {
+  const PandaRun r = run("panda-fold.txt");
+  ASSERT_FALSE(r.cell.robot.self_collision_pairs.empty());
+  const VerificationResult& result = r.verified.result;
+  EXPECT_EQ(result.verdict, Verdict::kCollision);
+  ASSERT_TRUE(result.collision_step.has_value());
+  EXPECT_EQ(*result.collision_step, 26);
+  ASSERT_FALSE(result.self_collision_episodes.empty());
+  const SelfCollisionEpisode& first = result.self_collision_episodes.front();
+  EXPECT_EQ(self_pair_label(r.cell.robot, first.pair), "panda_hand_sc / panda_link2_sc");
+  EXPECT_EQ(link_label(r.cell.robot, first.pair.link_b), "panda_hand_tcp");  // the hand rides link 7
+  EXPECT_EQ(first.pair.link_b, 7);
+  EXPECT_EQ(link_label(r.cell.robot, first.pair.link_a), "panda_link2");
+  EXPECT_EQ(first.first_step, 26);
+  EXPECT_TRUE(result.interference_episodes.empty());  // the table is never touched
+  const CheckReport report = check(r);
+  EXPECT_TRUE(report.accepted) << (report.failures.empty() ? "" : report.failures.front());
+  EXPECT_EQ(report.claim, Verdict::kCollision);
+  // The oracle's own FK and exact LP: the named step is a self-contact, the step before is not.
+  const test::UrdfCellOracle oracle(r.cell);
+  const test::UrdfOracleContact at = oracle.check(result.steps.at(25).q);
+  EXPECT_TRUE(at.contact && at.self);
+  EXPECT_FALSE(oracle.check(result.steps.at(24).q).contact);
+}
+
+TEST(PandaSelfCollision, TheFoldStoppedShortIsClearAndItsCertificateIsAccepted) {
+  const PandaRun r = run("panda-near-fold.txt");
+  EXPECT_EQ(r.verified.result.verdict, Verdict::kClear);
+  EXPECT_TRUE(r.verified.result.self_collision_episodes.empty());
+  const CheckReport report = check(r);
+  EXPECT_TRUE(report.accepted) << (report.failures.empty() ? "" : report.failures.front());
+  EXPECT_EQ(report.claim, Verdict::kClear);
+}
+
+}  // namespace
+}  // namespace grpvss::certify
