@@ -29,6 +29,9 @@ struct LoadedRobot {
   bool from_cell = false;
   /// Model units per unit of a thesis path file's lengths (a URDF robot in a cell in mm: 0.001).
   double path_length_scale = 1.0;
+  /// The model's length unit a cell states ("m", "mm", "in"), the report's `units.length`;
+  /// empty for thesis files (cell::ModelInputs::model_unit).
+  std::string length_unit;
 };
 
 struct LoadedEnvironment {

@@ -13,6 +13,7 @@
 
 #include "bindings.hpp"
 #include "grpvss/cell/model_inputs.hpp"
+#include "grpvss/io/length_unit.hpp"
 #include "grpvss/io/environment_file.hpp"
 #include "grpvss/io/path_file.hpp"
 #include "grpvss/io/robot_file.hpp"
@@ -65,6 +66,7 @@ py::tuple load_cell(const std::string& file, const std::vector<std::string>& pac
   robot->model = std::move(inputs.robot);
   robot->from_cell = true;
   robot->path_length_scale = inputs.model_units_per_cell_unit;
+  if (inputs.model_unit) robot->length_unit = io::length_unit_name(*inputs.model_unit);
   auto environment = std::make_shared<LoadedEnvironment>();
   environment->file = file;
   environment->sha256 = digest;

@@ -73,7 +73,8 @@ int exit_code_of(certify::Verdict verdict) {
 report::InputDigests digests_of(const RunRecord& record) {
   return {{record.session->robot().file, record.session->robot().sha256},
           {record.session->environment().file, record.session->environment().sha256},
-          {record.motion_file(), record.motion_sha256()}};
+          {record.motion_file(), record.motion_sha256()},
+          record.session->robot().length_unit};
 }
 
 // The report `grpvss verify --json` writes: report_to_json() plus the scene of the cell the

@@ -7,8 +7,10 @@
 // mode never says CLEAR where the oracle finds contact (obstacle or self), a COLLISION's step
 // really collides, and every certificate is accepted by check_certificate. Each shard must
 // produce contact and clear cases. Counts: docs/soundness-oracle.md#urdf-cells.
-// The shards run only with GRPVSS_URDF_ORACLE=1 (too slow for the suite today);
-// GRPVSS_URDF_ORACLE_CASES_PER_SHARD=<n> sets the cases; GRPVSS_ORACLE_VERBOSE=1 prints each.
+// The shards are DISABLED_ (too slow for the suite today; ctest lists them as disabled, never as
+// passed). Run them with `build/tests/grpvss_tests --gtest_also_run_disabled_tests
+// --gtest_filter='UrdfOracleSoundness.DISABLED_*'`; GRPVSS_URDF_ORACLE_CASES_PER_SHARD=<n> sets
+// the cases; GRPVSS_ORACLE_VERBOSE=1 prints each.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -264,10 +266,9 @@ int cases_per_shard() {
 }
 
 void run_shard(Robot robot, int shard) {
-  // Opt-in: a clear UR5e/Panda case costs the oracle minutes (every sample decides every
-  // hull pair on meshes of up to ~1,000 vertices), far beyond the suite's budget
-  // (docs/soundness-oracle.md#urdf-cells).
-  if (std::getenv("GRPVSS_URDF_ORACLE") == nullptr) GTEST_SKIP() << "set GRPVSS_URDF_ORACLE=1 to run";
+  // Disabled by default: a clear UR5e/Panda case costs the oracle minutes (every sample
+  // decides every hull pair on meshes of up to ~1,000 vertices), far beyond the suite's
+  // budget (docs/soundness-oracle.md#urdf-cells).
   Statistics stats;
   const std::uint64_t base = robot == Robot::kUr5e ? 0x0e5e0000ULL : 0xba4da000ULL;
   for (int k = 0; k < cases_per_shard(); ++k) {
@@ -292,14 +293,14 @@ void run_shard(Robot robot, int shard) {
   EXPECT_EQ(stats.rejected, 0);
 }
 
-TEST(UrdfOracleSoundness, Ur5eShard0) { run_shard(Robot::kUr5e, 0); }
-TEST(UrdfOracleSoundness, Ur5eShard1) { run_shard(Robot::kUr5e, 1); }
-TEST(UrdfOracleSoundness, Ur5eShard2) { run_shard(Robot::kUr5e, 2); }
-TEST(UrdfOracleSoundness, Ur5eShard3) { run_shard(Robot::kUr5e, 3); }
-TEST(UrdfOracleSoundness, PandaShard0) { run_shard(Robot::kPanda, 0); }
-TEST(UrdfOracleSoundness, PandaShard1) { run_shard(Robot::kPanda, 1); }
-TEST(UrdfOracleSoundness, PandaShard2) { run_shard(Robot::kPanda, 2); }
-TEST(UrdfOracleSoundness, PandaShard3) { run_shard(Robot::kPanda, 3); }
+TEST(UrdfOracleSoundness, DISABLED_Ur5eShard0) { run_shard(Robot::kUr5e, 0); }
+TEST(UrdfOracleSoundness, DISABLED_Ur5eShard1) { run_shard(Robot::kUr5e, 1); }
+TEST(UrdfOracleSoundness, DISABLED_Ur5eShard2) { run_shard(Robot::kUr5e, 2); }
+TEST(UrdfOracleSoundness, DISABLED_Ur5eShard3) { run_shard(Robot::kUr5e, 3); }
+TEST(UrdfOracleSoundness, DISABLED_PandaShard0) { run_shard(Robot::kPanda, 0); }
+TEST(UrdfOracleSoundness, DISABLED_PandaShard1) { run_shard(Robot::kPanda, 1); }
+TEST(UrdfOracleSoundness, DISABLED_PandaShard2) { run_shard(Robot::kPanda, 2); }
+TEST(UrdfOracleSoundness, DISABLED_PandaShard3) { run_shard(Robot::kPanda, 3); }
 
 // The sampling bound the oracle rests on: over random joint-monotone (joint-linear) moves,
 // no hull point of either robot travels farther than motion_bound(dq) (path length measured
