@@ -160,6 +160,9 @@ TEST(BatchTrajectoryManifest, ExactlyOneMotionAndNoKeyThatContradictsTheTrajecto
   EXPECT_EQ(manifest_error("jobs:\n  - {cell: c.yaml, trajectory: t, profile_table: x.txt}\n"),
             "m.yaml:2: expected no `profile_table` with `trajectory` (the trajectory's waypoint "
             "times and interpolation are the motion), found `profile_table`");
+  EXPECT_EQ(manifest_error("jobs:\n  - {cell: c.yaml, trajectory: t, start: \"0,0,0,0,0,0\"}\n"),
+            "m.yaml:2: expected no `start` with `trajectory` (a trajectory starts at its first "
+            "waypoint), found `start`");
   EXPECT_EQ(manifest_error("jobs:\n  - {cell: c.yaml, trajectory: t, output: o.txt}\n"),
             "m.yaml:2: expected no `output` with `trajectory` (the thesis output file describes "
             "path programs; use `json`), found `output`");
