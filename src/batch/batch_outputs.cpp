@@ -44,7 +44,7 @@ std::unordered_set<std::string> input_identities(const BatchManifest& manifest) 
     const VerifyOptions& o = job.options;
     for (const std::string* file :
          {&o.robot_file, &o.environment_file, &o.cell_file, &o.path_file, &o.trajectory_file,
-          &o.profile_table}) {
+          &o.program_file, &o.profile_table}) {
       if (!file->empty()) inputs.insert(file_identity(*file));
     }
   }
