@@ -100,6 +100,35 @@ TEST_F(BatchProgram, ReportsCertificatesAndResultLinesAreThoseOfVerifyProgram) {
   EXPECT_EQ(check.exit_code, 0) << check.out << check.err;
 }
 
+TEST_F(BatchProgram, AStartAndThesisModeGiveVerifysOutputs) {
+  // `start` (rad with a cell) is where the first PTP motion starts; `mode: thesis` and `output`
+  // are accepted, as verify --program accepts --mode thesis and --out.
+  const std::string start = "0.3,-1.5707963267948966,1.5707963267948966,0,0,0";
+  std::ofstream(directory_ + "/m.yaml")
+      << "jobs:\n"
+      << job("started", "ur5e-clear.script", ", start: \"" + start + "\", certificate: s.cert")
+      << job("thesis", "ur5e-clear.script", ", mode: thesis, output: t.txt");
+  const CliRun batch = run_cli(directory_, "batch m.yaml");
+  ASSERT_EQ(batch.exit_code, 0) << batch.out << batch.err;
+  const CliRun started = run_cli(directory_, "verify " + std::string("--cell ") + kCell +
+                                                 " --program " + kPrograms +
+                                                 "ur5e-clear.script --start " + start +
+                                                 " --certificate v-s.cert --no-cache");
+  ASSERT_EQ(started.exit_code, 0) << started.err;
+  EXPECT_EQ(read("s.cert"), read("v-s.cert"));
+  const nlohmann::json recorded_start = nlohmann::json::parse(read("s.cert"))["start"];
+  ASSERT_TRUE(recorded_start.is_array());
+  EXPECT_EQ(recorded_start[0].get<double>(), 0.3);
+  const CliRun thesis = run_cli(directory_, "verify --cell " + kCell + " --program " + kPrograms +
+                                                "ur5e-clear.script --mode thesis --out v-t.txt "
+                                                "--no-cache");
+  ASSERT_EQ(thesis.exit_code, 0) << thesis.err;
+  EXPECT_EQ(read("t.txt"), read("v-t.txt"));
+  const auto lines = grpvss::test::split_lines(batch.out);
+  ASSERT_EQ(lines.size(), 2u) << batch.out;
+  EXPECT_EQ(nlohmann::json::parse(lines[1])["steps"].get<int>(), summary_steps(thesis.out));
+}
+
 TEST_F(BatchProgram, ARefusedMotionIsThatJobsErrorWithVerifysMessage) {
   std::ofstream(directory_ + "/m.yaml") << "jobs:\n"
                                         << job("movel", "ur5e-movel.script", "")
