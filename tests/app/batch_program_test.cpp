@@ -14,6 +14,7 @@
 
 #include "grpvss/batch/batch_manifest.hpp"
 #include "grpvss/common/input_error.hpp"
+#include "grpvss/io/robot_program_file.hpp"
 #include "support/cli_run.hpp"
 #include "support/text_files.hpp"
 
@@ -175,3 +176,35 @@ TEST(BatchProgramManifest, ExactlyOneMotionAndNoKeyThatContradictsTheProgram) {
 }
 
 }  // namespace
+
+// A KRL program reads its .dat and $config.dat too: an output naming either is refused before
+// any job runs, and the file is left as it was.
+TEST_F(BatchProgram, AnOutputNamingAKrlProgramsDataFileIsRefused) {
+  for (const char* name : {"sixaxis_ptp.src", "sixaxis_ptp.dat", "$config.dat"}) {
+    std::filesystem::copy_file(kPrograms + name, directory_ + "/" + name);
+  }
+  const std::string six_axis_cell = std::string(GRPVSS_SOURCE_DIR) + "/data/sixaxis/cell.yaml";
+  for (const char* data_file : {"sixaxis_ptp.dat", "$config.dat"}) {
+    std::ofstream(directory_ + "/m.yaml")
+        << "jobs:\n  - {cell: " << six_axis_cell << ", program: sixaxis_ptp.src, json: '"
+        << data_file << "'}\n";
+    const std::string before = read(data_file);
+    const CliRun batch = run_cli(directory_, "batch m.yaml --force");
+    EXPECT_EQ(batch.exit_code, 2) << batch.out;
+    EXPECT_EQ(batch.out, "");
+    EXPECT_EQ(batch.err, std::string("grpvss: error: m.yaml:2: expected `json`: a file that is "
+                                     "not an input of the batch, found ") +
+                             data_file + "\n");
+    EXPECT_EQ(read(data_file), before);
+  }
+}
+
+TEST(RobotProgramFiles, AKrlSourceListsTheDataFilesBesideItAndOtherProgramsOnlyThemselves) {
+  EXPECT_EQ(grpvss::io::robot_program_files(kPrograms + "sixaxis_ptp.src"),
+            (std::vector<std::string>{kPrograms + "sixaxis_ptp.src", kPrograms + "$config.dat",
+                                      kPrograms + "sixaxis_ptp.dat"}));
+  EXPECT_EQ(grpvss::io::robot_program_files(kPrograms + "sixaxis_cptp.src"),
+            (std::vector<std::string>{kPrograms + "sixaxis_cptp.src", kPrograms + "$config.dat"}));
+  EXPECT_EQ(grpvss::io::robot_program_files(kPrograms + "ur5e-clear.script"),
+            (std::vector<std::string>{kPrograms + "ur5e-clear.script"}));
+}
