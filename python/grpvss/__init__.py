@@ -1,5 +1,6 @@
-"""GRPVSS from Python: load cells and the thesis files, forward kinematics, verify paths and
-planners' joint trajectories (numpy arrays or CSV / ROS JSON files), certificates.
+"""GRPVSS from Python: load cells and the thesis files, forward kinematics, verify paths,
+planners' joint trajectories (numpy arrays or CSV / ROS JSON files) and robot programs
+(URScript, KUKA KRL, ABB RAPID), certificates.
 
 The native module ``_grpvss`` (pybind11, python/src/) calls the C++ library exactly as the
 ``grpvss`` command does; this package adds keyword arguments, file-name conveniences and the
@@ -12,14 +13,14 @@ import tempfile
 import _grpvss as _native
 from _grpvss import (Certificate, CheckedMotionClearance, CheckReport, Environment, Episode,
                      InterferencePoint, JointTrajectory, LinkClearance, Path, PathError, Result,
-                     Robot, Segment, Verdict, exit_code_of)
+                     Robot, RobotProgram, Segment, Verdict, exit_code_of)
 
 __all__ = [
     "InputError", "Verdict", "Robot", "Environment", "Path", "Result", "Certificate",
     "CheckReport", "Episode", "PathError", "LinkClearance", "Segment", "InterferencePoint",
     "CheckedMotionClearance", "VerificationSession", "Cell", "load_cell", "load_robot",
     "load_environment", "load_path", "verify", "check_certificate", "exit_code_of",
-    "JointTrajectory", "joint_trajectory", "load_trajectory",
+    "JointTrajectory", "joint_trajectory", "load_trajectory", "RobotProgram", "load_program",
 ]
 
 #: The label of a trajectory given as arrays: the name reports give it (``motion_model``,
@@ -119,6 +120,25 @@ class Cell:
                                                                               self.robot),
                                  certificate, ik=ik)
 
+    def verify_program(self, file, tolerance=None, mode="certified", offset="auto", ik="auto",
+                       start=None):
+        """Verifies a robot program (URScript ``.script``, KUKA KRL ``.src``, ABB RAPID
+        ``.mod``) as ``grpvss verify --cell --program FILE`` does: each joint motion a
+        synchronized PTP segment, Cartesian targets by IK (``ik``) in the configuration the
+        program names, from ``start`` (joint values in rad) or the robot's home. Returns a
+        :class:`Result`; ``result.warnings`` holds the reader's warnings as (file, line, text)
+        and ``result.program`` the :class:`RobotProgram`. A refused motion (linear, circular,
+        blended) or an unreachable target raises :class:`InputError` naming its file and line."""
+        program = load_program(file, self.robot, ik=ik, start=start)
+        return self.session(tolerance, mode=mode, offset=offset).verify_program(program)
+
+    def check_program_certificate(self, program, certificate, ik="auto", start=None):
+        """Re-verifies a program's certificate, as ``grpvss check-certificate --cell --program``
+        does. ``program``: a :class:`RobotProgram` (``result.program``) or a program file (read
+        with ``ik`` and ``start``)."""
+        return check_certificate(self.robot, self.environment,
+                                 _as_program(program, self.robot, ik, start), certificate)
+
     def __repr__(self):
         return (f"<grpvss.Cell {self.file}: {self.robot.joint_count} joints, "
                 f"{self.environment.obstacle_count} obstacle hulls>")
@@ -162,6 +182,24 @@ def load_trajectory(file, robot):
     """Reads a trajectory file (CSV or ROS ``JointTrajectory`` JSON, docs/trajectories.md
     section 9) for ``robot``, as ``grpvss verify --trajectory`` reads it."""
     return _native._load_trajectory(os.fspath(file), _as_robot(robot))
+
+
+def load_program(file, robot, ik="auto", start=None):
+    """Reads a robot program (docs/robot-programs.md#verifying-a-program) and resolves it
+    against ``robot`` (a cell's: its base and tool place the targets) with the IK ``ik``, from
+    ``start`` (rad) or the robot's home, as ``grpvss verify --program`` does. Returns a
+    :class:`RobotProgram` (``warnings``, ``targets``, ``motion_model``, ``digest``)."""
+    import numpy
+    start = None if start is None else numpy.asarray(start, dtype=float)
+    return _native._load_program(os.fspath(file), _as_robot(robot), ik, start)
+
+
+def _as_program(program, robot, ik="auto", start=None):
+    if not isinstance(program, RobotProgram):
+        return load_program(program, robot, ik=ik, start=start)
+    if program.robot is robot:
+        return program
+    raise ValueError(f"{program.file} was loaded for another robot ({program.robot.file})")
 
 
 def _as_trajectory(trajectory, robot):
@@ -228,6 +266,13 @@ class VerificationSession:
         return self._native._verify_trajectory(_as_trajectory(trajectory, self.robot), timing,
                                                self._cp_speed, ik)
 
+    def verify_program(self, program, ik="auto", start=None):
+        """Verifies a :class:`RobotProgram` (or a program file, read with ``ik`` and ``start``)
+        as ``grpvss verify --program`` does: synchronized PTP, the session's CP speed; the GIL
+        is released while it runs."""
+        return self._native._verify_program(_as_program(program, self.robot, ik, start),
+                                            self._cp_speed)
+
     def verify_trajectory(self, times, positions, velocities=None, joint_names=None, ik="auto",
                           label=ARRAYS_LABEL):
         """Verifies a joint trajectory given as arrays (:func:`joint_trajectory`)."""
@@ -256,9 +301,16 @@ def check_certificate(robot, environment, path, certificate, timing=None, ik=Non
     expects (unset: the certificate's; another is refused with :class:`InputError`).
     ``path`` may be a :class:`JointTrajectory` (arrays or a file, as verified): its
     certificate is checked as ``grpvss check-certificate --trajectory`` checks it, and
-    ``timing`` and ``profile_table`` are refused (the trajectory is the motion)."""
+    ``timing`` and ``profile_table`` are refused (the trajectory is the motion). ``path`` may
+    be a :class:`RobotProgram` (``result.program``, or :func:`load_program`): checked as
+    ``grpvss check-certificate --program`` checks it, with the program's IK (``ik``, if
+    given, must name the same); ``timing`` other than synchronized and ``profile_table`` are
+    refused."""
     robot = _as_robot(robot)
     environment = _as_environment(environment)
+    if isinstance(path, RobotProgram):
+        return _check_program(robot, environment, _as_program(path, robot), certificate,
+                              timing, ik, profile_table)
     if isinstance(path, JointTrajectory):
         return _check_trajectory(robot, environment, _as_trajectory(path, robot), certificate,
                                  timing, ik, profile_table)
@@ -288,3 +340,23 @@ def _check_trajectory(robot, environment, trajectory, certificate, timing, ik, p
         certificate.save(file)
         return _native._check_trajectory_certificate_file(robot, environment, trajectory, file,
                                                           ik)
+
+
+def _check_program(robot, environment, program, certificate, timing, ik, profile_table):
+    why = "a program is verified as the controller runs it: synchronized PTP, exact stops"
+    if ik is not None and ik != program.ik:
+        raise InputError(f"ik:0: expected the IK the program was resolved with "
+                         f"('{program.ik}'), found '{ik}'", "ik", 0,
+                         f"the IK the program was resolved with ('{program.ik}')", f"'{ik}'")
+    for option, given in (("timing", timing not in (None, "synchronized")),
+                          ("profile_table", profile_table is not None)):
+        if given:
+            raise InputError(f"{option}:0: expected no {option} with a program ({why}), found "
+                             f"{option}", option, 0, f"no {option} with a program ({why})", option)
+    if not isinstance(certificate, Certificate):
+        return _native._check_program_certificate_file(robot, environment, program,
+                                                       os.fspath(certificate))
+    with tempfile.TemporaryDirectory(prefix="grpvss-certificate-") as folder:
+        file = os.path.join(folder, "certificate.json")
+        certificate.save(file)
+        return _native._check_program_certificate_file(robot, environment, program, file)

@@ -1,10 +1,12 @@
 """Batches of verifications on Dask distributed (docs/scale-out.md).
 
-A job names its input files and options (:class:`Job`); :func:`verify_batch` runs the jobs on
-a ``distributed.Client``'s workers and returns one :func:`summarize` dict per job, in job
+A job names its input files and options (:class:`Job`): its model (thesis ``robot`` and
+``environment`` files, or a ``cell`` file) and its motion (a thesis ``path``, a planner's
+``trajectory`` or a robot ``program``). :func:`verify_batch` runs the jobs on a
+``distributed.Client``'s workers and returns one :func:`summarize` dict per job, in job
 order. Each worker process builds the prepared cell (:class:`grpvss.VerificationSession`)
-once per distinct robot + environment + tolerance + mode + offset and reuses it for every
-job that shares them. The files must be readable on every worker under the same names.
+once per distinct model + tolerance + mode + offset and reuses it for every job that shares
+them. The files must be readable on every worker under the same names.
 :func:`verify_local` is the same batch in this process: the reference the Dask run matches.
 """
 import dataclasses
@@ -17,23 +19,58 @@ import grpvss
 
 @dataclasses.dataclass(frozen=True)
 class Job:
-    """One verification, ``grpvss verify``'s inputs and options."""
-    robot: str
-    environment: str
-    path: str
-    tolerance: float
+    """One verification, ``grpvss verify``'s inputs and options: ``robot`` and
+    ``environment`` (thesis files) or ``cell``; exactly one of ``path``, ``trajectory`` and
+    ``program``. Unset (None), ``tolerance``, ``timing`` and ``cp_speed`` are the model's (a
+    cell's tolerance and CP speed and synchronized timing; a thesis robot's independent timing
+    and CP speed 1). A trajectory or a program is the motion: ``timing`` and
+    ``profile_table`` are refused with it (a program's timing may be "synchronized");
+    ``start`` (joint values, rad) is a program's start, else the robot's home."""
+    robot: str = None
+    environment: str = None
+    path: str = None
+    tolerance: float = None
     mode: str = "certified"
     offset: str = "auto"
-    timing: str = "independent"
-    cp_speed: float = 1.0
+    timing: str = None
+    cp_speed: float = None
     ik: str = "auto"
     profile_table: str = None
+    cell: str = None
+    trajectory: str = None
+    program: str = None
+    start: tuple = None
+
+    def __post_init__(self):
+        motions = [key for key in ("path", "trajectory", "program") if getattr(self, key)]
+        if len(motions) != 1:
+            _refuse("exactly one of path, trajectory and program",
+                    "neither" if not motions else ", ".join(motions))
+        if bool(self.cell) == bool(self.robot or self.environment):
+            _refuse("either cell, or robot with environment", "both" if self.cell else "neither")
+        if not self.cell and not (self.robot and self.environment and self.tolerance):
+            _refuse("robot, environment and tolerance (or a cell)", "a job without them")
+        if self.trajectory or self.program:
+            motion = "trajectory" if self.trajectory else "program"
+            if self.timing not in (None, "synchronized") or (self.trajectory and self.timing):
+                _refuse(f"no timing with {motion}", "timing")
+            if self.profile_table:
+                _refuse(f"no profile_table with {motion}", "profile_table")
+        if self.start is not None and not self.program:
+            _refuse("start only with a program", "start")
 
     def cell_key(self):
         """What the prepared cell depends on (the files by name and content)."""
-        return (os.path.abspath(self.robot), _digest(self.robot),
-                os.path.abspath(self.environment), _digest(self.environment),
-                float(self.tolerance), self.mode, self.offset)
+        model = ((os.path.abspath(self.cell), _digest(self.cell)) if self.cell else
+                 (os.path.abspath(self.robot), _digest(self.robot),
+                  os.path.abspath(self.environment), _digest(self.environment)))
+        tolerance = None if self.tolerance is None else float(self.tolerance)
+        return model + (tolerance, self.mode, self.offset)
+
+
+def _refuse(expected, found):
+    raise grpvss.InputError(f"job:0: expected {expected}, found {found}", "job", 0, expected,
+                            found)
 
 
 def _digest(file):
@@ -52,8 +89,12 @@ def _session_for(job):
     with _sessions_lock:
         session = _sessions.get(key)
         if session is None:
-            session = grpvss.VerificationSession(job.robot, job.environment, job.tolerance,
-                                                 mode=job.mode, offset=job.offset)
+            if job.cell:
+                session = grpvss.load_cell(job.cell).session(job.tolerance, mode=job.mode,
+                                                             offset=job.offset)
+            else:
+                session = grpvss.VerificationSession(job.robot, job.environment, job.tolerance,
+                                                     mode=job.mode, offset=job.offset)
             _sessions[key] = session
             _built += 1
         return session
@@ -74,11 +115,14 @@ def clear_cache():
 
 
 def summarize(result):
-    """A result as plain, picklable data: verdict, exit code, steps, clearances, episodes,
-    errors, and the SHA-256 of its JSON report (``generated_at`` blanked) and certificate."""
+    """A result as plain, picklable data: verdict, exit code, steps, motion model,
+    clearances, episodes, errors, a program's reader warnings, and the SHA-256 of its JSON
+    report (``generated_at`` blanked) and certificate."""
     certificate = result.certificate
     return {
         "verdict": result.verdict.name,
+        "motion_model": result.motion_model,
+        "warnings": [tuple(warning) for warning in result.warnings],
         "exit_code": result.exit_code,
         "step_count": result.step_count,
         "collision_step": result.collision_step,
@@ -102,8 +146,14 @@ def run_job(job):
     """Verifies one job (a :class:`Job` or a dict of its fields) with this process's cached
     cell; returns :func:`summarize` of the result."""
     job = _as_job(job)
-    result = _session_for(job).verify(job.path, timing=job.timing, cp_speed=job.cp_speed,
-                                      ik=job.ik, profile_table=job.profile_table)
+    session = _session_for(job)
+    if job.program:
+        result = session.verify_program(job.program, ik=job.ik, start=job.start)
+    elif job.trajectory:
+        result = session.verify_trajectory_file(job.trajectory, ik=job.ik)
+    else:
+        result = session.verify(job.path, timing=job.timing, cp_speed=job.cp_speed, ik=job.ik,
+                                profile_table=job.profile_table)
     return summarize(result)
 
 

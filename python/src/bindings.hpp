@@ -4,9 +4,13 @@
 // Every verification goes through the library's public API exactly as `grpvss verify` does
 // (io readers, resolve_setup, RobotCell built once, certify::verify); docs/python.md.
 #include <memory>
+#include <optional>
 #include <string>
 
+#include <Eigen/Geometry>
 #include <pybind11/pybind11.h>
+
+#include "grpvss/batch/robot_program_input.hpp"
 
 #include "grpvss/kinematics/inverse_kinematics.hpp"
 
@@ -32,6 +36,9 @@ struct LoadedRobot {
   /// The model's length unit a cell states ("m", "mm", "in"), the report's `units.length`;
   /// empty for thesis files (cell::ModelInputs::model_unit).
   std::string length_unit;
+  /// A cell's `base` (X_WR) and `tool` (X_FE), m: where a robot program's targets are placed.
+  Eigen::Isometry3d X_WR = Eigen::Isometry3d::Identity();
+  Eigen::Isometry3d X_FE = Eigen::Isometry3d::Identity();
 };
 
 struct LoadedEnvironment {
@@ -59,6 +66,17 @@ struct LoadedTrajectory {
   std::shared_ptr<LoadedRobot> robot;
 };
 
+/// A robot program resolved against one robot by batch::load_robot_program (the loader
+/// `grpvss verify --program` uses) with the IK `ik` names, which its runs and checks use too.
+struct LoadedProgram {
+  std::string file;
+  std::string sha256;  ///< of the program file itself (the JSON report's inputs.path)
+  std::string ik = "auto";
+  std::optional<Eigen::VectorXd> start;  ///< rad; unset: the robot's home
+  batch::LoadedRobotProgram program;
+  std::shared_ptr<LoadedRobot> robot;
+};
+
 /// The per-run choices that do not change the cell (`grpvss verify`'s --timing, --cp-speed,
 /// --ik, --profile-table).
 struct RunOptions {
@@ -66,6 +84,7 @@ struct RunOptions {
   double cp_speed = 1.0;
   std::string ik = "auto";
   std::string profile_table;  ///< empty: the ideal trapezoids
+  std::optional<Eigen::VectorXd> start;  ///< a robot program's start (rad); unset: home
 };
 
 /// \brief The prepared set-up (a RobotCell: exact hulls and tolerance offsets) for one robot,
@@ -96,10 +115,15 @@ struct RunRecord {
   std::shared_ptr<const Session> session;
   std::shared_ptr<LoadedPath> path;              ///< null for a trajectory's run
   std::shared_ptr<LoadedTrajectory> trajectory;  ///< null for a path's run
+  std::shared_ptr<LoadedProgram> program;        ///< set for a robot program's run
   /// The motion's file (or label) and digest, and the certificate's key for it.
-  const std::string& motion_file() const { return path ? path->file : trajectory->file; }
-  const std::string& motion_sha256() const { return path ? path->sha256 : trajectory->sha256; }
-  const char* motion_key() const { return path ? "path" : "trajectory"; }
+  const std::string& motion_file() const {
+    return path ? path->file : trajectory ? trajectory->file : program->file;
+  }
+  const std::string& motion_sha256() const {
+    return path ? path->sha256 : trajectory ? trajectory->sha256 : program->sha256;
+  }
+  const char* motion_key() const { return path ? "path" : trajectory ? "trajectory" : "program"; }
   std::string ik_name;
   certify::VerificationRun run;
 };
@@ -124,5 +148,8 @@ void bind_verification(pybind11::module_& module);
 void bind_results(pybind11::module_& module);
 void bind_certificates(pybind11::module_& module);
 void bind_trajectories(pybind11::module_& module);
+void bind_programs(pybind11::module_& module);
+/// A program's reader warnings as a list of (file, line, text).
+pybind11::list program_warnings(const LoadedProgram& program);
 
 }  // namespace grpvss::python

@@ -11,6 +11,7 @@
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
+#include "grpvss/batch/robot_program_input.hpp"
 #include "grpvss/checker/certificate_checker.hpp"
 #include "grpvss/checker/certificate_file_check.hpp"
 #include "grpvss/common/input_error.hpp"
@@ -30,10 +31,16 @@ struct CertificateView {
 
   std::string text() const {
     const RunRecord& r = *record;
-    const nlohmann::json inputs = {{"robot", r.session->robot().sha256},
-                                   {"environment", r.session->environment().sha256},
-                                   {r.motion_key(), r.motion_sha256()},
-                                   {"ik", r.ik_name}};
+    nlohmann::json inputs = {{"robot", r.session->robot().sha256},
+                             {"environment", r.session->environment().sha256},
+                             {"ik", r.ik_name}};
+    if (r.program) {  // as `grpvss verify --program` records it
+      for (const auto& [name, value] : batch::program_certificate_inputs(r.program->program)) {
+        inputs[name] = value;
+      }
+    } else {
+      inputs[r.motion_key()] = r.motion_sha256();
+    }
     return report::render_certificate(r.run.certificate, inputs);
   }
 };
@@ -45,6 +52,7 @@ struct CheckInputs {
   std::shared_ptr<LoadedEnvironment> environment;
   std::shared_ptr<LoadedPath> path;
   std::shared_ptr<LoadedTrajectory> trajectory;
+  std::shared_ptr<LoadedProgram> program;  ///< a robot program (synchronized PTP)
   std::optional<std::string> timing;  ///< unset: the certificate's
   std::optional<std::string> ik;      ///< unset: "auto"
   std::string profile_table;
@@ -70,6 +78,13 @@ void refuse_other_motion(const CheckInputs& inputs, const certify::Certificate& 
 // The motion the checker replays and its digest's key: the path program, or the trajectory.
 const PathProgram& motion_of(const CheckInputs& inputs, certify::CheckOptions& options) {
   static const PathProgram no_program;
+  if (inputs.program) {
+    if (inputs.program->robot != inputs.robot) {
+      throw std::invalid_argument("the program was loaded for another robot");
+    }
+    options.input_digests["program"] = inputs.program->program.digest;
+    return inputs.program->program.path.path;
+  }
   if (inputs.trajectory) {
     if (inputs.trajectory->robot != inputs.robot) {
       throw std::invalid_argument("the trajectory was loaded for another robot");
@@ -157,7 +172,7 @@ void bind_certificates(py::module_& module) {
          std::shared_ptr<LoadedPath> path, const std::string& certificate,
          std::optional<std::string> timing, std::optional<std::string> ik,
          const std::string& profile_table) {
-        return check_file({robot, environment, path, nullptr, timing, ik, profile_table},
+        return check_file({robot, environment, path, nullptr, nullptr, timing, ik, profile_table},
                           certificate);
       },
       py::arg("robot"), py::arg("environment"), py::arg("path"), py::arg("certificate"),
@@ -167,11 +182,21 @@ void bind_certificates(py::module_& module) {
       [](std::shared_ptr<LoadedRobot> robot, std::shared_ptr<LoadedEnvironment> environment,
          std::shared_ptr<LoadedTrajectory> trajectory, const std::string& certificate,
          std::optional<std::string> ik) {
-        return check_file({robot, environment, nullptr, trajectory, std::nullopt, ik, ""},
+        return check_file({robot, environment, nullptr, trajectory, nullptr, std::nullopt, ik, ""},
                           certificate);
       },
       py::arg("robot"), py::arg("environment"), py::arg("trajectory"), py::arg("certificate"),
       py::arg("ik") = py::none());
+  // The program was resolved with its IK (RobotProgram.ik): the check uses the same.
+  module.def(
+      "_check_program_certificate_file",
+      [](std::shared_ptr<LoadedRobot> robot, std::shared_ptr<LoadedEnvironment> environment,
+         std::shared_ptr<LoadedProgram> program, const std::string& certificate) {
+        return check_file({robot, environment, nullptr, nullptr, program, std::nullopt, program->ik,
+                           ""},
+                          certificate);
+      },
+      py::arg("robot"), py::arg("environment"), py::arg("program"), py::arg("certificate"));
 }
 
 }  // namespace grpvss::python

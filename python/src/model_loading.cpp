@@ -66,6 +66,8 @@ py::tuple load_cell(const std::string& file, const std::vector<std::string>& pac
   robot->model = std::move(inputs.robot);
   robot->from_cell = true;
   robot->path_length_scale = inputs.model_units_per_cell_unit;
+  robot->X_WR = inputs.X_WR;
+  robot->X_FE = inputs.X_FE;
   if (inputs.model_unit) robot->length_unit = io::length_unit_name(*inputs.model_unit);
   auto environment = std::make_shared<LoadedEnvironment>();
   environment->file = file;

@@ -9,6 +9,7 @@ PYBIND11_MODULE(_grpvss, module) {
   auto robot = grpvss::python::bind_model_loading(module);
   grpvss::python::bind_kinematics(robot);
   grpvss::python::bind_trajectories(module);
+  grpvss::python::bind_programs(module);
   grpvss::python::bind_results(module);
   grpvss::python::bind_certificates(module);
   grpvss::python::bind_verification(module);

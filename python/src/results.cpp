@@ -214,6 +214,11 @@ void bind_results(py::module_& module) {
                              "The Path verified (None for a trajectory)")
       .def_property_readonly("trajectory", [](const RunRecord& r) { return r.trajectory; },
                              "The JointTrajectory verified (None for a path)")
+      .def_property_readonly("program", [](const RunRecord& r) { return r.program; },
+                             "The RobotProgram verified (None for a path or a trajectory)")
+      .def_property_readonly("warnings", [](const RunRecord& r) {
+        return r.program ? program_warnings(*r.program) : py::list();
+      }, "The program reader's warnings as (file, line, text) ([] for a path or a trajectory)")
       .def_property_readonly("motion_model",
                              [](const RunRecord& r) { return r.run.result.motion_model; },
                              "'joint trajectory T, cubic Hermite interpolation, ...' ('' for a path)")

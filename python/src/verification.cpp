@@ -9,6 +9,7 @@
 #include <mutex>
 #include <string>
 
+#include <pybind11/eigen.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
@@ -75,8 +76,9 @@ struct ActiveVerification {
 std::shared_ptr<RunRecord> verify_motion(const std::shared_ptr<const Session>& session,
                                          std::shared_ptr<RunRecord> record,
                                          const RunOptions& options) {
-  const LoadedRobot* motion_robot =
-      record->path ? record->path->robot.get() : record->trajectory->robot.get();
+  const LoadedRobot* motion_robot = record->path         ? record->path->robot.get()
+                                    : record->trajectory ? record->trajectory->robot.get()
+                                                         : record->program->robot.get();
   if (motion_robot != &session->robot()) {
     throw std::invalid_argument(std::string("the ") + record->motion_key() +
                                 " was loaded for another robot than the session's");
@@ -90,6 +92,7 @@ std::shared_ptr<RunRecord> verify_motion(const std::shared_ptr<const Session>& s
   certify::SetupRequest request = session->request();
   request.motion = parse_motion(options);
   request.path_label = file_label(record->motion_file());
+  if (record->program) request.motion.start = options.start;
   certify::VerificationSetup setup = certify::resolve_setup(request);
   const kinematics::IkChoice ik_choice = parse_ik_choice(options.ik);
   record->session = session;
@@ -100,15 +103,20 @@ std::shared_ptr<RunRecord> verify_motion(const std::shared_ptr<const Session>& s
     const auto ik = motion::select_ik(ik_choice, robot, session->robot().file);
     record->ik_name = ik->name();
     const motion::KinematicsAccess kinematics = motion::make_kinematics_access(robot, ik);
-    if (record->path) {  // a trajectory states its own (certify::verify)
+    if (!record->trajectory) {  // a trajectory states its own (certify::verify)
       setup.run.motion_model = batch::describe_path_motion(setup.run, request.path_label, ik->name());
     }
-    record->run =
-        record->path
-            ? certify::verify(session->cell(), record->path->program, kinematics, setup.run)
-            : certify::verify(session->cell(),
-                              motion::Trajectory::from_joint_motion(robot, record->trajectory->motion),
-                              kinematics, setup.run);
+    if (record->trajectory) {
+      record->run = certify::verify(
+          session->cell(), motion::Trajectory::from_joint_motion(robot, record->trajectory->motion),
+          kinematics, setup.run);
+    } else {
+      const PathProgram& program =
+          record->path ? record->path->program : record->program->program.path.path;
+      record->run = certify::verify(session->cell(), program, kinematics, setup.run);
+    }
+    // As `grpvss verify --program` states it.
+    if (record->program) record->run.result.motion_model = record->program->program.description;
   }
   return record;
 }
@@ -191,7 +199,7 @@ void bind_verification(py::module_& module) {
               const std::string& profile_table) {
              auto record = std::make_shared<RunRecord>();
              record->path = path;
-             return verify_motion(session, record, RunOptions{timing, cp_speed, ik, profile_table});
+             return verify_motion(session, record, RunOptions{timing, cp_speed, ik, profile_table, std::nullopt});
            },
            py::arg("path"), py::arg("timing"), py::arg("cp_speed"), py::arg("ik"),
            py::arg("profile_table"))
@@ -201,9 +209,18 @@ void bind_verification(py::module_& module) {
               double cp_speed, const std::string& ik) {
              auto record = std::make_shared<RunRecord>();
              record->trajectory = trajectory;
-             return verify_motion(session, record, RunOptions{timing, cp_speed, ik, ""});
+             return verify_motion(session, record, RunOptions{timing, cp_speed, ik, "", std::nullopt});
            },
            py::arg("trajectory"), py::arg("timing"), py::arg("cp_speed"), py::arg("ik"))
+      .def("_verify_program",
+           [](const std::shared_ptr<Session>& session, const std::shared_ptr<LoadedProgram>& program,
+              double cp_speed) {
+             auto record = std::make_shared<RunRecord>();
+             record->program = program;
+             RunOptions options{"synchronized", cp_speed, program->ik, "", program->start};
+             return verify_motion(session, record, options);
+           },
+           py::arg("program"), py::arg("cp_speed"))
       .def_property_readonly("tolerance", [](const Session& s) { return s.cell().tolerance(); })
       .def_property_readonly("mode",
                              [](const Session& s) { return certify::to_string(s.request().mode); })

@@ -4,8 +4,11 @@
 #include <optional>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "grpvss/batch/joint_trajectory_input.hpp"
 #include "grpvss/batch/motion_statement.hpp"
+#include "grpvss/batch/robot_program_input.hpp"
 #include "grpvss/certify/verifier.hpp"
 #include "grpvss/common/input_error.hpp"
 #include "grpvss/io/path_file.hpp"
@@ -89,13 +92,16 @@ std::optional<SmallestClearance> smallest_clearance(const certify::VerificationR
   return smallest;
 }
 
-/// Everything the job reads: the shared robot, environment and cell, its own motion (a path
-/// program, or a joint trajectory: `joint_motion` set).
+/// Everything the job reads: the shared robot, environment and cell, the IK, its own motion (a
+/// path program, a joint trajectory: `joint_motion` set, or a robot program: `robot_program`
+/// set, its `path` in `program`).
 struct JobInputs {
   std::shared_ptr<const LoadedRobot> robot;
   std::shared_ptr<const LoadedEnvironment> environment;
+  std::shared_ptr<const kinematics::InverseKinematics> ik;
   PathProgram program;
   std::shared_ptr<const motion::JointTrajectoryMotion> joint_motion;
+  std::optional<LoadedRobotProgram> robot_program;
   report::InputDigests digests;
   certify::VerificationSetup setup;
   std::vector<io::InputWarning> warnings;
@@ -119,10 +125,22 @@ cell::ModelInputs load_model(const VerifyOptions& options, SharedInputs& shared,
   return thesis_model;
 }
 
-/// The job's motion and its file's digest: the path program, or the joint trajectory read by
-/// the loader `grpvss verify --trajectory` uses.
+/// The job's motion and its file's digest: the path program, or the joint trajectory or the
+/// robot program read by the loader `grpvss verify --trajectory|--program` uses.
 report::InputFileDigest load_motion(const VerifyOptions& options, const cell::ModelInputs& model,
                                JobInputs& inputs) {
+  if (!options.program_file.empty()) {
+    const std::optional<Eigen::VectorXd> start =
+        resolve_start(options, inputs.robot->model, model.from_cell, "start");
+    inputs.robot_program = load_robot_program(options.program_file, inputs.robot->model,
+                                              ProgramPlacement{model.X_WR, model.X_FE},
+                                              *inputs.ik, start);
+    inputs.program = inputs.robot_program->path.path;
+    for (const ProgramWarning& w : inputs.robot_program->warnings) {
+      inputs.warnings.push_back({w.file, w.line, w.text});
+    }
+    return {options.program_file, report::sha256_hex_of_file(options.program_file)};
+  }
   if (!options.trajectory_file.empty()) {
     inputs.joint_motion = load_joint_trajectory(options.trajectory_file, inputs.robot->model);
     return {options.trajectory_file, report::sha256_hex_of_file(options.trajectory_file)};
@@ -137,6 +155,9 @@ JobInputs load_inputs(const BatchJob& job, SharedInputs& shared) {
   const VerifyOptions& options = job.options;
   JobInputs inputs;
   const cell::ModelInputs model = load_model(options, shared, inputs);
+  const std::string& robot_label_file =
+      options.cell_file.empty() ? options.robot_file : options.cell_file;
+  inputs.ik = motion::select_ik(parse_ik_choice(options.ik), inputs.robot->model, robot_label_file);
   const report::InputFileDigest motion_digest = load_motion(options, model, inputs);
   inputs.digests = {{model.robot_digest_file, inputs.robot->sha256},
                     {model.environment_digest_file, inputs.environment->sha256},
@@ -176,11 +197,17 @@ void publish_reports(const BatchJob& job, const certify::VerificationRun& run,
   }
   if (reports.certificate) {
     const report::InputDigests& d = inputs.digests;
-    reports.certificate->finish(run.certificate, {{"robot", d.robot.sha256},
-                                                  {"environment", d.environment.sha256},
-                                                  {inputs.joint_motion ? "trajectory" : "path",
-                                                   d.path.sha256},
-                                                  {"ik", ik_name}});
+    nlohmann::json recorded = {{"robot", d.robot.sha256},
+                               {"environment", d.environment.sha256},
+                               {"ik", ik_name}};
+    if (inputs.robot_program) {
+      for (const auto& [name, value] : program_certificate_inputs(*inputs.robot_program)) {
+        recorded[name] = value;
+      }
+    } else {
+      recorded[inputs.joint_motion ? "trajectory" : "path"] = d.path.sha256;
+    }
+    reports.certificate->finish(run.certificate, recorded);
     result.outputs.push_back({"certificate", out.certificate});
   }
 }
@@ -191,9 +218,7 @@ void verify_job(const BatchJob& job, SharedInputs& shared, const BatchOptions& o
   const JobInputs inputs = load_inputs(job, shared);
   const RobotModel& robot = inputs.robot->model;
   result.warnings = inputs.warnings;
-  const std::string& robot_label_file =
-      job.options.cell_file.empty() ? job.options.robot_file : job.options.cell_file;
-  const auto ik = motion::select_ik(parse_ik_choice(job.options.ik), robot, robot_label_file);
+  const std::shared_ptr<const kinematics::InverseKinematics>& ik = inputs.ik;
   const std::shared_ptr<const SharedCell> cell =
       shared.cell(inputs.robot, inputs.environment, inputs.setup.cell);
   JobReports reports;
@@ -205,11 +230,12 @@ void verify_job(const BatchJob& job, SharedInputs& shared, const BatchOptions& o
   if (!inputs.joint_motion) {  // a trajectory states its own (certify::verify)
     settings.motion_model = describe_path_motion(settings, settings.path_label, ik->name());
   }
-  const certify::VerificationRun run =
+  certify::VerificationRun run =
       inputs.joint_motion
           ? certify::verify(cell->cell, motion::Trajectory::from_joint_motion(robot, inputs.joint_motion),
                             kinematics, settings, hooks)
           : certify::verify(cell->cell, inputs.program, kinematics, settings, hooks);
+  if (inputs.robot_program) run.result.motion_model = inputs.robot_program->description;
   publish_reports(job, run, inputs, *cell, ik->name(), options, reports, result);
   result.verdict = run.result.verdict;
   result.exit_code = verdict_exit_code(run.result.verdict);

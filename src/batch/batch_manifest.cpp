@@ -58,6 +58,8 @@ const std::map<std::string, KeyRule>& key_rules() {
       {"path", file_key([](BatchJob& j, const std::string& v) { j.options.path_file = v; })},
       {"trajectory",
        file_key([](BatchJob& j, const std::string& v) { j.options.trajectory_file = v; })},
+      {"program",
+       file_key([](BatchJob& j, const std::string& v) { j.options.program_file = v; })},
       {"tolerance", number_key([](BatchJob& j, double v) { j.options.tolerance = v; })},
       {"mode", text_key([](BatchJob& j, const std::string& v) { j.options.mode = v; })},
       {"offset", text_key([](BatchJob& j, const std::string& v) { j.options.offset = v; })},
@@ -113,13 +115,30 @@ bool has_key(const RawJob& raw, const std::string& key) {
   return false;
 }
 
-/// Exactly one motion: a `path` program or a planner's `trajectory`.
+/// Exactly one motion: a `path` program, a planner's `trajectory` or a robot `program`.
 void require_one_motion(const RawJob& raw, const std::string& file) {
-  const bool path = has_key(raw, "path");
-  const bool trajectory = has_key(raw, "trajectory");
-  if (path == trajectory) {
-    throw InputError(file, raw.line, "exactly one of `path` and `trajectory`",
-                     path ? "both" : "neither");
+  const int given = (has_key(raw, "path") ? 1 : 0) + (has_key(raw, "trajectory") ? 1 : 0) +
+                    (has_key(raw, "program") ? 1 : 0);
+  if (given != 1) {
+    throw InputError(file, raw.line, "exactly one of `path`, `trajectory` and `program`",
+                     given == 0 ? "neither" : "several");
+  }
+}
+
+/// A robot program is verified as its controller runs it (docs/robot-programs.md): the keys
+/// `grpvss verify --program` refuses (--timing other than synchronized, --profile-table) are
+/// refused.
+void refuse_program_conflicts(const BatchJob& job, const RawJob& raw, const std::string& file) {
+  if (job.options.program_file.empty()) return;
+  const std::string why = "a program is verified as the controller runs it: synchronized PTP, exact stops";
+  const bool other_timing = has_key(raw, "timing") && job.options.timing != "synchronized";
+  for (const auto& [key, refused] :
+       {std::pair<const char*, bool>{"timing", other_timing},
+        std::pair<const char*, bool>{"profile_table", has_key(raw, "profile_table")}}) {
+    if (refused) {
+      throw InputError(file, raw.line, std::string("no `") + key + "` with `program` (" + why + ")",
+                       std::string("`") + key + "`");
+    }
   }
 }
 
@@ -183,6 +202,7 @@ BatchJob job_from(const RawJob& raw, std::size_t index, const std::string& file,
   require_keys(raw, file);
   check_verify_options(job.options, file, job.line);
   refuse_trajectory_conflicts(job, raw, file);
+  refuse_program_conflicts(job, raw, file);
   const std::string plugin = "plugin:";
   if (job.options.ik.rfind(plugin, 0) == 0) {
     job.options.ik = plugin + resolved(job.options.ik.substr(plugin.size()), base);
@@ -299,7 +319,7 @@ std::vector<RawJob> raw_jobs(const std::string& text, const std::string& file) {
 
 const std::vector<std::string>& job_keys() {
   static const std::vector<std::string> keys{
-      "id", "robot", "env", "cell", "path", "trajectory", "tolerance", "mode", "offset", "timing",
+      "id", "robot", "env", "cell", "path", "trajectory", "program", "tolerance", "mode", "offset", "timing",
       "profile_table", "ik", "cp_speed", "start", "output", "json", "html", "certificate"};
   return keys;
 }

@@ -7,6 +7,7 @@
 
 #include "grpvss/batch/batch_runner.hpp"
 #include "grpvss/common/input_error.hpp"
+#include "grpvss/io/robot_program_file.hpp"
 
 namespace grpvss::batch {
 namespace {
@@ -46,6 +47,10 @@ std::unordered_set<std::string> input_identities(const BatchManifest& manifest) 
          {&o.robot_file, &o.environment_file, &o.cell_file, &o.path_file, &o.trajectory_file,
           &o.profile_table}) {
       if (!file->empty()) inputs.insert(file_identity(*file));
+    }
+    if (o.program_file.empty()) continue;
+    for (const std::string& file : io::robot_program_files(o.program_file)) {
+      inputs.insert(file_identity(file));
     }
   }
   return inputs;

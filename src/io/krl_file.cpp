@@ -423,16 +423,23 @@ RobotProgram parse_krl(std::string_view src_text, const std::string& src_name,
   return recorder.take();
 }
 
-RobotProgram read_krl_file(const std::string& src_path) {
-  const std::string text = read_text_file(src_path);
+std::vector<std::string> krl_data_files_beside(const std::string& src_path) {
   const std::filesystem::path path(src_path);
   const std::filesystem::path directory = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
-  std::vector<KrlDataText> data_files;
+  std::vector<std::string> found_files;
   for (const std::string& name : {std::string("$config.dat"), path.stem().string() + ".dat"}) {
     if (const std::optional<std::string> found = find_beside(directory, name)) {
-      const std::string file_name = path.has_parent_path() ? *found : std::filesystem::path(*found).filename().string();
-      data_files.push_back({file_name, read_text_file(*found)});
+      found_files.push_back(path.has_parent_path() ? *found : std::filesystem::path(*found).filename().string());
     }
+  }
+  return found_files;
+}
+
+RobotProgram read_krl_file(const std::string& src_path) {
+  const std::string text = read_text_file(src_path);
+  std::vector<KrlDataText> data_files;
+  for (const std::string& file_name : krl_data_files_beside(src_path)) {
+    data_files.push_back({file_name, read_text_file(file_name)});
   }
   return parse_krl(text, src_path, data_files);
 }

@@ -31,4 +31,12 @@ RobotProgram read_robot_program(const std::string& path) {
                    written.empty() ? "no extension" : quote_source(written));
 }
 
+std::vector<std::string> robot_program_files(const std::string& path) {
+  std::vector<std::string> files{path};
+  if (upper_name(std::filesystem::path(path).extension().string()) == ".SRC") {
+    for (std::string& data_file : krl_data_files_beside(path)) files.push_back(std::move(data_file));
+  }
+  return files;
+}
+
 }  // namespace grpvss::io

@@ -84,11 +84,11 @@ TEST(BatchManifest, YamlJobsAreTheSameJobsWithTheirLines) {
 
 TEST(BatchManifest, UnknownKeysAreRefusedWithTheLineAndTheKnownKeys) {
   EXPECT_EQ(manifest_error("{" + kJob + "}\n{" + kJob + R"(,"cel":"c.yaml"})"),
-            "cells/m.jsonl:2: expected one of the job keys id, robot, env, cell, path, trajectory, "
+            "cells/m.jsonl:2: expected one of the job keys id, robot, env, cell, path, trajectory, program, "
             "tolerance, mode, offset, timing, profile_table, ik, cp_speed, start, output, json, "
             "html, certificate, found `cel`");
   EXPECT_EQ(manifest_error("jobs:\n  - robot: r.txt\n    robt: r.txt\n", "m.yml"),
-            "m.yml:2: expected one of the job keys id, robot, env, cell, path, trajectory, "
+            "m.yml:2: expected one of the job keys id, robot, env, cell, path, trajectory, program, "
             "tolerance, mode, offset, timing, profile_table, ik, cp_speed, start, output, json, "
             "html, certificate, found `robt`");
   EXPECT_EQ(manifest_error("job:\n  - robot: r.txt\n", "m.yml"),
@@ -110,7 +110,7 @@ TEST(BatchManifest, ACellJobNeedsOnlyThePathAndNamesNoThesisFiles) {
   EXPECT_EQ(manifest_error(R"({"cell":"c.yaml","robot":"r.txt","path":"p"})"),
             "cells/m.jsonl:1: expected either `cell`, or `robot` with `env`, not both");
   EXPECT_EQ(manifest_error(R"({"cell":"c.yaml","tolerance":1})"),
-            "cells/m.jsonl:1: expected exactly one of `path` and `trajectory`, found neither");
+            "cells/m.jsonl:1: expected exactly one of `path`, `trajectory` and `program`, found neither");
   EXPECT_EQ(manifest_error(R"({"cell":"c.yaml","path":"p","cp_speed":0})"),
             "cells/m.jsonl:1: expected `cp_speed`: a finite number > 0, found 0");
   EXPECT_EQ(manifest_error(R"({"env":"e.txt","path":"p","tolerance":1})"),
@@ -121,7 +121,7 @@ TEST(BatchManifest, ACellJobNeedsOnlyThePathAndNamesNoThesisFiles) {
 
 TEST(BatchManifest, MissingKeysWrongTypesAndBadChoicesNameTheLine) {
   EXPECT_EQ(manifest_error(R"({"robot":"r.txt","env":"e.txt","tolerance":1})"),
-            "cells/m.jsonl:1: expected exactly one of `path` and `trajectory`, found neither");
+            "cells/m.jsonl:1: expected exactly one of `path`, `trajectory` and `program`, found neither");
   EXPECT_EQ(manifest_error(R"({"robot":"r.txt","env":"e.txt","path":"p","tolerance":"1"})"),
             "cells/m.jsonl:1: expected `tolerance`: a number, found a string");
   EXPECT_EQ(manifest_error(R"({"robot":["r"],"env":"e.txt","path":"p","tolerance":1})"),

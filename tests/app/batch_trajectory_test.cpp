@@ -148,9 +148,9 @@ TEST(BatchTrajectoryManifest, ExactlyOneMotionAndNoKeyThatContradictsTheTrajecto
   EXPECT_EQ(manifest.jobs[0].options.trajectory_file, "cells/t.csv");
   EXPECT_EQ(manifest.jobs[0].options.path_file, "");
   EXPECT_EQ(manifest_error("jobs:\n  - {cell: c.yaml}\n  - {cell: c.yaml, path: p, trajectory: t}\n"),
-            "m.yaml:2: expected exactly one of `path` and `trajectory`, found neither");
+            "m.yaml:2: expected exactly one of `path`, `trajectory` and `program`, found neither");
   EXPECT_EQ(manifest_error("jobs:\n  - {cell: c.yaml, path: p}\n  - {cell: c.yaml, path: p, trajectory: t}\n"),
-            "m.yaml:3: expected exactly one of `path` and `trajectory`, found both");
+            "m.yaml:3: expected exactly one of `path`, `trajectory` and `program`, found several");
   EXPECT_EQ(manifest_error("jobs:\n  - {cell: c.yaml, trajectory: t, timing: independent}\n"),
             "m.yaml:2: expected no `timing` with `trajectory` (the trajectory's waypoint times "
             "and interpolation are the motion), found `timing`");

@@ -38,7 +38,8 @@ struct BatchManifest {
 /// The keys a job may have, in the order docs/batch.md lists them.
 const std::vector<std::string>& job_keys();
 
-/// \brief Reads and checks a manifest: every job has `robot`, `env`, `path` and `tolerance`;
+/// \brief Reads and checks a manifest: every job has a model (`cell`, or `robot`, `env` and
+/// `tolerance`) and exactly one motion (`path`, `trajectory` or `program`);
 /// every key is known and of the right type; every choice is valid (check_verify_options);
 /// `certificate` only in certified mode. File names relative to the manifest's folder. The
 /// input files themselves are NOT read here (a bad robot file is that job's error).

@@ -28,6 +28,9 @@ struct VerifyOptions {
   /// A planner's joint trajectory (CSV or ROS JSON) instead of path_file
   /// (docs/trajectories.md#verifying-a-trajectory).
   std::string trajectory_file;
+  /// A robot program (URScript, KRL, RAPID) instead of path_file
+  /// (docs/robot-programs.md#verifying-a-program).
+  std::string program_file;
   double tolerance = 0.0;  ///< Delta > 0, length units (of the cell, with a cell); 0: unset
   std::string mode = "certified";
   std::string offset = "auto";

@@ -25,6 +25,10 @@ struct KrlDataText {
 /// reader does not read (PTP_REL, SPLINE, ...).
 RobotProgram read_krl_file(const std::string& src_path);
 
+/// \brief The data files read_krl_file() reads beside `src_path`, in its order: `$config.dat`
+/// and the .dat of the same name, each only when it exists (names matched ignoring case).
+std::vector<std::string> krl_data_files_beside(const std::string& src_path);
+
 /// \brief As read_krl_file() on texts in memory: `data_files` are read in order (later
 /// declarations replace earlier ones), before the program runs.
 RobotProgram parse_krl(std::string_view src_text, const std::string& src_name,

@@ -4,6 +4,7 @@
 /// extension (docs/robot-programs.md).
 
 #include <string>
+#include <vector>
 
 #include "grpvss/model/robot_program.hpp"
 
@@ -16,5 +17,9 @@ namespace grpvss::io {
 /// \throws InputError(path, 0, ...) for another extension (a PolyScope `.urp` and a KRL
 /// `.dat` alone are named as such), and whatever the chosen reader throws.
 RobotProgram read_robot_program(const std::string& path);
+
+/// \brief Every file read_robot_program(path) reads: the program itself and, for a KRL .src,
+/// the .dat files beside it that exist. A batch refuses outputs that name any of them.
+std::vector<std::string> robot_program_files(const std::string& path);
 
 }  // namespace grpvss::io
