@@ -44,8 +44,9 @@ std::shared_ptr<LoadedPath> load_path(const std::string& file,
                                             std::shared_ptr<LoadedRobot> robot) {
   auto path = std::make_shared<LoadedPath>();
   path->file = file;
-  path->program = io::read_path_file(file, robot->model);
-  cell::convert_path_lengths(path->program, robot->model, robot->path_length_scale);
+  path->program = cell::parse_model_path(
+      io::read_text_file(file), file, robot->model, robot->path_length_scale,
+      io::PathPlacement{io::length_unit_from_name(robot->length_unit), robot->X_WR});
   path->sha256 = report::sha256_hex_of_file(file);
   path->robot = std::move(robot);
   return path;

@@ -167,8 +167,7 @@ int run_check(const CheckArguments& args) {
     trajectory_model =
         motion::describe_motion_model(*options.joint_trajectory, file_label(args.trajectory_file));
   } else {
-    program = io::read_path_file(args.path_file, robot);
-    convert_path_lengths(program, robot, model.model_units_per_cell_unit);
+    program = read_model_path(args.path_file, model);
     options.start = start_of(args.start, model);
   }
   if (!args.profile_table.empty()) {
@@ -210,7 +209,7 @@ void register_check_certificate_command(CLI::App& app, int& exit_code) {
   auto* command = app.add_subcommand(
       "check-certificate", "Re-verify a certificate exactly from the input files alone");
   add_model_source_options(*command, args->model);
-  CLI::Option* path = command->add_option("--path", args->path_file, "Path file (thesis A.1.3)");
+  CLI::Option* path = command->add_option("--path", args->path_file, "Path file: thesis A.1.3, or a YAML path with absolute poses (.yaml, docs/input-formats.md#yaml-path)");
   CLI::Option* trajectory =
       command
           ->add_option("--trajectory", args->trajectory_file,

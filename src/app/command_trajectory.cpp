@@ -110,8 +110,7 @@ int run_trajectory(const TrajectoryArguments& args) {
     if (!args.json) fmt::print("motion: {}\n", loaded.description);
     program = loaded.path.path;
   } else {
-    program = io::read_path_file(args.path_file, robot);
-    convert_path_lengths(program, robot, model.model_units_per_cell_unit);
+    program = read_model_path(args.path_file, model);
   }
   motion::MotionModel options;
   options.timing = motion::ptp_timing_from_string(args.timing)
@@ -141,7 +140,7 @@ void register_trajectory_command(CLI::App& app, int& exit_code) {
                       "Cell file: its robot (docs/cell-format.md)");
   command->add_option("--package-path", args->model.package_paths,
                       "Directory searched for package://NAME/... (repeatable; before the cell's)");
-  CLI::Option* path = command->add_option("--path", args->path_file, "Path file (thesis A.1.3)");
+  CLI::Option* path = command->add_option("--path", args->path_file, "Path file: thesis A.1.3, or a YAML path with absolute poses (.yaml, docs/input-formats.md#yaml-path)");
   CLI::Option* trajectory =
       command
           ->add_option("--trajectory", args->trajectory_file,

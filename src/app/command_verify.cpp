@@ -131,8 +131,7 @@ MotionInput read_motion(const VerifyArguments& args, const ModelInputs& model,
     return input;
   }
   input.file = args.path_file;
-  input.program = io::read_path_file(args.path_file, model.robot);
-  convert_path_lengths(input.program, model.robot, model.model_units_per_cell_unit);
+  input.program = read_model_path(args.path_file, model);
   return input;
 }
 

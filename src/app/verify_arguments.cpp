@@ -31,7 +31,7 @@ CLI::Validator positive_number() {
 void add_input_options(CLI::App& command, VerifyArguments& args) {
   add_model_source_options(command, args.robot_file, args.environment_file, args.cell_file,
                            args.package_paths);
-  CLI::Option* path = command.add_option("--path", args.path_file, "Path file (thesis A.1.3)");
+  CLI::Option* path = command.add_option("--path", args.path_file, "Path file: thesis A.1.3, or a YAML path with absolute poses (.yaml, docs/input-formats.md#yaml-path)");
   CLI::Option* trajectory =
       command
           .add_option("--trajectory", args.trajectory_file,

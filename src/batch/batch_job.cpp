@@ -146,8 +146,8 @@ report::InputFileDigest load_motion(const VerifyOptions& options, const cell::Mo
     return {options.trajectory_file, report::sha256_hex_of_file(options.trajectory_file)};
   }
   const std::string path_text = io::read_text_file(options.path_file);
-  inputs.program = io::parse_path_file(path_text, options.path_file, inputs.robot->model);
-  cell::convert_path_lengths(inputs.program, inputs.robot->model, model.model_units_per_cell_unit);
+  inputs.program = cell::parse_model_path(path_text, options.path_file, inputs.robot->model,
+                                          model.model_units_per_cell_unit, cell::path_placement(model));
   return {options.path_file, report::sha256_hex(path_text)};
 }
 

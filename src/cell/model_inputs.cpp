@@ -8,6 +8,7 @@
 #include "grpvss/cell/load_cell.hpp"
 #include "grpvss/common/input_error.hpp"
 #include "grpvss/io/environment_file.hpp"
+#include "grpvss/io/text_file.hpp"
 #include "grpvss/io/robot_file.hpp"
 
 namespace grpvss::cell {
@@ -109,6 +110,24 @@ void convert_path_lengths(PathProgram& program, const RobotModel& robot, double 
       line->target.position_W *= scale;
     }
   }
+}
+
+PathProgram parse_model_path(std::string_view text, const std::string& file_name,
+                             const RobotModel& robot, double model_units_per_cell_unit,
+                             const io::PathPlacement& placement) {
+  PathProgram program = io::parse_path_file(text, file_name, robot, placement);
+  // A YAML path declares its units and is read in model units already.
+  if (!io::is_yaml_path_file_name(file_name)) convert_path_lengths(program, robot, model_units_per_cell_unit);
+  return program;
+}
+
+PathProgram read_model_path(const std::string& file, const ModelInputs& model) {
+  return parse_model_path(io::read_text_file(file), file, model.robot,
+                          model.model_units_per_cell_unit, path_placement(model));
+}
+
+io::PathPlacement path_placement(const ModelInputs& model) {
+  return io::PathPlacement{model.model_unit, model.X_WR};
 }
 
 double to_model_units(double length, const ModelInputs& model) {

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "number_reader.hpp"
+#include "yaml_path.hpp"
 #include "grpvss/io/text_file.hpp"
 #include "grpvss/io/units.hpp"
 
@@ -113,10 +114,11 @@ PathSegment read_segment(NumberReader& reader, const RobotModel& robot, int segm
 }  // namespace
 
 PathProgram parse_path_file(std::string_view text, const std::string& file_name,
-                            const RobotModel& robot) {
+                            const RobotModel& robot, const PathPlacement& placement) {
   if (robot.joint_count() < 1) {
     throw std::logic_error("parse_path_file: the robot model has no joints");
   }
+  if (is_yaml_path_file_name(file_name)) return parse_yaml_path(text, file_name, robot, placement);
   NumberReader reader(text, file_name);
   const long long count =
       reader.read_integer("the number of motion segments NOMS", 1, kMaxSegments);
@@ -127,8 +129,9 @@ PathProgram parse_path_file(std::string_view text, const std::string& file_name,
   return program;
 }
 
-PathProgram read_path_file(const std::string& path, const RobotModel& robot) {
-  return parse_path_file(read_text_file(path), path, robot);
+PathProgram read_path_file(const std::string& path, const RobotModel& robot,
+                           const PathPlacement& placement) {
+  return parse_path_file(read_text_file(path), path, robot, placement);
 }
 
 }  // namespace grpvss::io

@@ -17,17 +17,28 @@ Eigen::Matrix3d rotation_about(const Eigen::Vector3d& axis, double angle) {
 Eigen::Isometry3d world_target_pose(const Eigen::Isometry3d& X_WE_start,
                                     const WorldTarget& target) {
   Eigen::Isometry3d X_WE = Eigen::Isometry3d::Identity();
-  X_WE.linear() = rotation_about(target.axis_W, target.angle) * X_WE_start.linear();
+  const Eigen::Matrix3d rotation = rotation_about(target.axis_W, target.angle);
+  X_WE.linear() = target.orientation_is_absolute ? rotation : rotation * X_WE_start.linear();
   X_WE.translation() = target.position_W;
   return X_WE;
+}
+
+Eigen::AngleAxisd orientation_change_W(const Eigen::Isometry3d& X_WE_start, const WorldTarget& target) {
+  if (!target.orientation_is_absolute) {
+    if (target.angle == 0.0 || target.axis_W.norm() == 0.0) return Eigen::AngleAxisd(0.0, Eigen::Vector3d::Zero());
+    return Eigen::AngleAxisd(target.angle, target.axis_W.normalized());
+  }
+  // The shortest turn from the start orientation to R_WE (angle in [0, pi]).
+  const Eigen::AngleAxisd change(rotation_about(target.axis_W, target.angle) *
+                                 X_WE_start.linear().transpose());
+  return change.angle() == 0.0 ? Eigen::AngleAxisd(0.0, Eigen::Vector3d::Zero()) : change;
 }
 
 CpLine::CpLine(const Eigen::Isometry3d& X_WE_start, const WorldTarget& target)
     : X_WE_start_(X_WE_start),
       p_W_end_(target.position_W),
-      axis_W_(target.axis_W.norm() > 0.0 ? Eigen::Vector3d(target.axis_W.normalized())
-                                         : Eigen::Vector3d::Zero()),
-      angle_(target.angle),
+      axis_W_(orientation_change_W(X_WE_start, target).axis()),
+      angle_(orientation_change_W(X_WE_start, target).angle()),
       length_((target.position_W - X_WE_start.translation()).norm()) {}
 
 Eigen::Isometry3d CpLine::pose_at(double l) const {

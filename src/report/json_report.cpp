@@ -83,6 +83,8 @@ class JsonWriter {
       out["target_position"] = vector3(target.position_W, "target position");
       out["target_axis"] = vector3(target.axis_W, "target axis");
       out["target_angle"] = finite(degrees(target.angle), "target angle");
+      // Only YAML paths give absolute orientations; thesis reports keep their fields.
+      if (target.orientation_is_absolute) out["target_orientation"] = "absolute";
     };
     if (record.trajectory_piece) {
       // A piece of a planner's joint trajectory: its target is the next waypoint.

@@ -156,6 +156,7 @@ class ThesisWriter {
     line(joined({target.position_W.x(), target.position_W.y(), target.position_W.z(),
                  target.axis_W.x(), target.axis_W.y(), target.axis_W.z(), degrees(target.angle)},
                 " "));
+    if (target.orientation_is_absolute) line("(THE ORIENTATION ABOVE IS THE END-EFFECTOR'S IN THE WORLD FRAME, NOT A CHANGE)");
   }
 
   void segment_block(const certify::SegmentRecord& segment) {

@@ -49,6 +49,33 @@ TEST(CpLine, AxisMinusZThirtyDegreesLowersYawByThirty) {
   EXPECT_TRUE(X.linear().isApprox(pose(0, 0, 0, 0.5 - M_PI / 6).linear(), 1e-15));
 }
 
+// A YAML path's absolute orientation: the target pose ignores the start orientation, and the
+// line turns the shortest way about one world axis, from the start to exactly that orientation.
+TEST(CpLine, AnAbsoluteOrientationIsReachedByTheShortestTurnFromTheStart) {
+  Eigen::Isometry3d X_WE_start = pose(1, 2, 3, 0.3);
+  X_WE_start.linear() = Eigen::AngleAxisd(0.4, Eigen::Vector3d::UnitX()) * X_WE_start.linear();
+  WorldTarget absolute = target(4, 6, 3, Eigen::Vector3d(0, 1, 1), 2.0);
+  absolute.orientation_is_absolute = true;
+  const Eigen::Matrix3d R_WE_target =
+      Eigen::AngleAxisd(2.0, Eigen::Vector3d(0, 1, 1).normalized()).toRotationMatrix();
+  EXPECT_TRUE(world_target_pose(X_WE_start, absolute).linear().isApprox(R_WE_target, 1e-15));
+  const CpLine line(X_WE_start, absolute);
+  EXPECT_TRUE(line.end_pose().linear().isApprox(R_WE_target, 1e-14));
+  const Eigen::AngleAxisd change = orientation_change_W(X_WE_start, absolute);
+  EXPECT_TRUE((change.toRotationMatrix() * X_WE_start.linear()).isApprox(R_WE_target, 1e-14));
+  EXPECT_LE(change.angle(), M_PI);
+  // Halfway, the orientation is the start turned by half the angle about the same axis.
+  const Eigen::Matrix3d R_half = Eigen::AngleAxisd(change.angle() / 2, change.axis()) * X_WE_start.linear();
+  EXPECT_TRUE(line.pose_at(line.length() / 2).linear().isApprox(R_half, 1e-14));
+  // The start orientation itself as the target: no turn at all.
+  WorldTarget same = target(4, 6, 3, Eigen::Vector3d::UnitZ(), 0.0);
+  same.orientation_is_absolute = true;
+  const Eigen::AngleAxisd start_as_axis_angle(X_WE_start.linear());
+  same.axis_W = start_as_axis_angle.axis();
+  same.angle = start_as_axis_angle.angle();
+  EXPECT_LT(orientation_change_W(X_WE_start, same).angle(), 1e-15);
+}
+
 TEST(CpLine, SamplesAreUniformNoWiderThanTheSpacingAndSolveIk) {
   const RobotModel robot = testing::cartesian_robot();
   const Eigen::Vector4d q_start(0, 0, 1, 0.2);

@@ -12,6 +12,7 @@
 #include <Eigen/Geometry>
 
 #include "grpvss/io/input_warning.hpp"
+#include "grpvss/io/path_file.hpp"
 #include "grpvss/model/cell_description.hpp"
 #include "grpvss/model/environment.hpp"
 #include "grpvss/model/path_program.hpp"
@@ -75,6 +76,19 @@ ModelInputs load_model_inputs(const ModelSources& sources,
 /// \brief Scales the lengths of a thesis path file (prismatic joint values and speeds, world
 /// positions) by `scale` model units per file unit; angles are untouched.
 void convert_path_lengths(PathProgram& program, const RobotModel& robot, double scale);
+
+/// \brief A path file's text for a model: a thesis-format path (lengths in the cell's unit,
+/// scaled by `model_units_per_cell_unit`) or a YAML path (its own declared units, converted
+/// to `placement.model_unit`, `frame: base` poses through `placement.X_WR`), in model units.
+PathProgram parse_model_path(std::string_view text, const std::string& file_name,
+                             const RobotModel& robot, double model_units_per_cell_unit,
+                             const io::PathPlacement& placement);
+
+/// \brief parse_model_path() of a file, for the model `model` loaded.
+PathProgram read_model_path(const std::string& file, const ModelInputs& model);
+
+/// \brief Where `model`'s robot stands, for YAML paths: its unit and X_WR.
+io::PathPlacement path_placement(const ModelInputs& model);
 
 /// \brief A length given with a cell (in the cell's unit) in model units, rounded up when
 /// converted so that a tolerance never shrinks by the conversion.

@@ -9,12 +9,15 @@
 
 namespace grpvss {
 
-/// \brief A world-frame target: end-effector position and the orientation CHANGE
-/// Rot(K, theta) applied to the orientation at the segment's start (Eq. 4-18).
+/// \brief A world-frame target: end-effector position and an orientation Rot(K, theta):
+/// either the CHANGE applied to the orientation at the segment's start (Eq. 4-18, thesis path
+/// files) or, when `orientation_is_absolute`, the end-effector orientation R_WE itself (YAML
+/// paths, docs/input-formats.md#yaml-path).
 struct WorldTarget {
   Eigen::Vector3d position_W = Eigen::Vector3d::Zero();
   Eigen::Vector3d axis_W = Eigen::Vector3d::UnitZ();  ///< K, not necessarily unit in the file
   double angle = 0.0;                                 ///< theta, RADIANS
+  bool orientation_is_absolute = false;               ///< Rot(K, theta) is R_WE, not a change
 };
 
 /// IND = 1: PTP with joint targets (rad / length) and desired joint speeds (> 0).

@@ -25,8 +25,14 @@ Eigen::Matrix3d rotation_about(const Eigen::Vector3d& axis, double angle);
 
 /// \brief The end pose of a segment with world target `target` that starts at X_WE_start:
 /// position P_f, orientation \f$o_f = Rot(K,\theta)\,o_s\f$ (Eq. 4-18: the change is applied to
-/// the orientation at the segment's START, in the world frame).
+/// the orientation at the segment's START, in the world frame), or \f$Rot(K,\theta)\f$ itself
+/// for an absolute orientation (YAML paths).
 Eigen::Isometry3d world_target_pose(const Eigen::Isometry3d& X_WE_start, const WorldTarget& target);
+
+/// \brief The turn of a segment in the world frame, from the orientation at X_WE_start to its
+/// target's: Rot(K, theta) for a change (zero axis when theta = 0), the shortest turn (angle in
+/// [0, pi]) to an absolute orientation.
+Eigen::AngleAxisd orientation_change_W(const Eigen::Isometry3d& X_WE_start, const WorldTarget& target);
 
 /// \brief The straight line of one CP segment, parametrised by path length l in [0, L]:
 /// \f$P(l) = P_s + (P_f - P_s)\,l/L\f$ (Eq. 4-17), \f$o(l) = Rot(K, \theta l/L)\,o_s\f$
