@@ -43,9 +43,9 @@ const std::string kBracket = std::string(GRPVSS_SOURCE_DIR) + "/tests/data/cells
 constexpr int kShards = 4;  // per robot
 #ifdef __SANITIZE_ADDRESS__
 // Under the sanitizers (~10x slower) only Ur5eShard0 runs (the others are `heavy`), fewer cases.
-constexpr int kCiCasesPerShard = 3;
+constexpr int kCiCasesPerShard = 2;
 #else
-constexpr int kCiCasesPerShard = 5;  // 2 robots x 4 shards x 5 = 40 cases
+constexpr int kCiCasesPerShard = 3;  // 2 robots x 4 shards x 3 = 24 cases
 #endif
 constexpr int kLongCasesPerShard = 40;  // 320 cases
 constexpr double kSpacingFraction = 1.0 / 20.0;  // oracle spacing, of the tolerance
