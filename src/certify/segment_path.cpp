@@ -19,7 +19,9 @@ std::optional<Eigen::VectorXd> SegmentPath::q_at(double s, const Eigen::VectorXd
   if (is_trajectory_piece()) {
     return motion::step_configuration(*segment_->joint_motion, *robot_, time_at(s));
   }
-  if (!is_cp()) return segment_->ptp->joints_at(s);
+  // A PTP segment ends at its target exactly (the checker's planned configuration there; the
+  // profile at its duration may differ from it by a rounding).
+  if (!is_cp()) return s >= parameter_end() ? segment_->q_end : segment_->ptp->joints_at(s);
   if (s <= 0.0) return segment_->q_start;
   if (s >= parameter_end()) return segment_->q_end;
   return motion::solve_within_limits(*robot_, *kinematics_, segment_->cp->pose_at(s), q_previous);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <optional>
 #include <stdexcept>
+#include <utility>
 #include <variant>
 
 #include <Eigen/Geometry>
@@ -28,11 +29,14 @@ double max_abs(const std::vector<Eigen::Vector3d>& points) {
 }
 
 // Gilbert's 1966 iteration (Frank-Wolfe on conv(A - B)): proposes a direction only.
-Eigen::Vector3d gilbert_direction(const std::vector<Eigen::Vector3d>& a, const Eigen::Vector3d& a_center,
-                                  const std::vector<Eigen::Vector3d>& b, const Eigen::Vector3d& b_center) {
-  Eigen::Vector3d v = a_center - b_center;
-  if (v.squaredNorm() == 0.0) v = Eigen::Vector3d::UnitX();
-  for (int iteration = 0; iteration < 256; ++iteration) {
+// `v` starts at a point of conv(A - B).
+Eigen::Vector3d gilbert_direction(const std::vector<Eigen::Vector3d>& a, const std::vector<Eigen::Vector3d>& b,
+                                  Eigen::Vector3d v) {
+  if (v.squaredNorm() == 0.0) return Eigen::Vector3d::UnitX();
+  // 256 iterations towards a near-optimal plane; nearly touching pairs (1e-8 m over hulls of a
+  // metre) may need thousands before any plane clears the rounding margin, still far cheaper
+  // than the exact LP: after 256, stop at a plane separating by half of |v|.
+  for (int iteration = 0; iteration < 8192; ++iteration) {
     const Eigen::Vector3d* a_low = &a.front();
     for (const auto& p : a) {
       if (v.dot(p) < v.dot(*a_low)) a_low = &p;
@@ -44,7 +48,7 @@ Eigen::Vector3d gilbert_direction(const std::vector<Eigen::Vector3d>& a, const E
     const Eigen::Vector3d w = *a_low - *b_high;
     const double vv = v.squaredNorm();
     const double vw = v.dot(w);
-    if (vw > 0.0 && vv - vw <= 1e-4 * vv) break;
+    if (vw > 0.0 && (vv - vw <= 1e-4 * vv || (iteration >= 256 && vw >= 0.5 * vv))) break;
     const Eigen::Vector3d d = w - v;
     const double dd = d.squaredNorm();
     if (dd == 0.0) break;
@@ -54,6 +58,23 @@ Eigen::Vector3d gilbert_direction(const std::vector<Eigen::Vector3d>& a, const E
     if (v.squaredNorm() < 1e-30) break;
   }
   return v;
+}
+
+// Gilbert's start: the centres' difference, or (warm start) the support point of A - B along
+// the pair's last direction.
+template <typename Shape>
+Eigen::Vector3d start_point(const Shape& a, const Shape& b, const Eigen::Vector3d* direction) {
+  if (direction == nullptr || direction->squaredNorm() == 0.0) return a.center - b.center;
+  const Eigen::Vector3d& v = *direction;
+  const Eigen::Vector3d* a_low = &a.points.front();
+  for (const auto& p : a.points) {
+    if (v.dot(p) < v.dot(*a_low)) a_low = &p;
+  }
+  const Eigen::Vector3d* b_high = &b.points.front();
+  for (const auto& p : b.points) {
+    if (v.dot(p) > v.dot(*b_high)) b_high = &p;
+  }
+  return *a_low - *b_high;
 }
 
 Pose<double> base_pose(const CellDescription& description) {
@@ -110,78 +131,138 @@ UrdfCellOracle::UrdfCellOracle(const cell::LoadedCell& cell) : cell_(&cell) {
     shape.radius *= 1.0 + 1e-12;
     obstacles_.push_back(shape);
   }
-  // R_j: rotating joint j moves a point p carried by it at most |dq| |p - o_j|, o_j the
-  // origin of joint j's frame (on its axis). Walking from p's URDF link up to joint j,
-  // |p - o_j| <= sum of |xyz| of the joint origins below j (+ the travel of prismatic ones)
-  // + |xyz of the collision origin| + max |p_C|. A prismatic chain joint moves points by |dq|.
-  reach_.assign(chain_joints_.size(), 0.0);
-  for (const auto& link_hulls : hulls_) {
-    for (const Hull& hull : link_hulls) {
-      double below = hull.X_LC.topRightCorner<3, 1>().norm();
-      double farthest = 0.0;
-      for (const auto& p : hull.points_C) farthest = std::max(farthest, p.norm());
-      below += farthest;
-      for (std::string link = hull.urdf_link; urdf_.joint_to_child.count(link) > 0;) {
-        const ReferenceJoint& joint = urdf_.joints[urdf_.joint_to_child.at(link)];
-        const auto chain = std::find(chain_joints_.begin(), chain_joints_.end(), joint.name);
-        if (chain != chain_joints_.end()) {
-          const auto j = static_cast<std::size_t>(chain - chain_joints_.begin());
-          reach_[j] = std::max(reach_[j], joint.type == "prismatic" ? 1.0 : below);
+  compute_reach();
+}
+
+// r_{h,j}: a revolute joint j moves a point p it carries at speed |dq_j| dist(p, axis_j), and
+// that distance does not depend on q through joint j itself. Per vertex, walking from the
+// hull's URDF link up to the root: through fixed joints p is carried exactly (their origin
+// poses); at the first moving joint dist(p, axis) is exact in its frame; above it only
+// |p - o| is known, bounded by |p| + the joint origins' |xyz| (+ prismatic travel). A
+// prismatic chain joint moves points by |dq_j|.
+void UrdfCellOracle::compute_reach() {
+  const auto joint_count = static_cast<Eigen::Index>(chain_joints_.size());
+  reach_.assign(hulls_.size(), {});
+  for (std::size_t l = 0; l < hulls_.size(); ++l) {
+    for (const Hull& hull : hulls_[l]) {
+      Eigen::VectorXd reach = Eigen::VectorXd::Zero(joint_count);
+      for (const auto& p_C : hull.points_C) {
+        Eigen::Vector3d p = hull.X_LC.topLeftCorner<3, 3>() * p_C + hull.X_LC.topRightCorner<3, 1>();
+        bool exact = true;  // p is this vertex in `link`'s frame (else only |p| bounds it)
+        double norm = p.norm();
+        for (std::string link = hull.urdf_link; urdf_.joint_to_child.count(link) > 0;) {
+          const ReferenceJoint& joint = urdf_.joints[urdf_.joint_to_child.at(link)];
+          const auto chain = std::find(chain_joints_.begin(), chain_joints_.end(), joint.name);
+          if (chain != chain_joints_.end()) {
+            const auto j = static_cast<Eigen::Index>(chain - chain_joints_.begin());
+            double r = norm;
+            if (joint.type == "prismatic") {
+              r = 1.0;
+            } else if (exact) {
+              const Eigen::Vector3d n = decimal3<double>(joint.axis).normalized();
+              r = std::min(norm, (p - p.dot(n) * n).norm());
+            }
+            reach[j] = std::max(reach[j], r);
+          }
+          if (joint.type == "fixed" && exact) {
+            const Pose<double> X = origin_pose<double>(joint.xyz, joint.rpy);
+            p = X.topLeftCorner<3, 3>() * p + X.topRightCorner<3, 1>();
+            norm = p.norm();
+          } else {
+            exact = false;
+            norm += decimal3<double>(joint.xyz).norm();
+            if (joint.type == "prismatic") norm += std::max(std::abs(joint.lower), std::abs(joint.upper));
+          }
+          link = joint.parent;
         }
-        below += decimal3<double>(joint.xyz).norm();
-        if (joint.type == "prismatic") below += std::max(std::abs(joint.lower), std::abs(joint.upper));
-        link = joint.parent;
       }
+      reach_[l].push_back(reach * (1.0 + 1e-9));
     }
   }
-  for (double& r : reach_) r *= 1.0 + 1e-9;
+}
+
+double UrdfCellOracle::hull_motion_bound(int link, int hull, const Eigen::VectorXd& dq) const {
+  return reach_[static_cast<std::size_t>(link)][static_cast<std::size_t>(hull)].dot(dq.cwiseAbs());
 }
 
 double UrdfCellOracle::motion_bound(const Eigen::VectorXd& dq) const {
   double bound = 0.0;
-  for (int j = 0; j < dq.size(); ++j) bound += std::abs(dq[j]) * reach_[static_cast<std::size_t>(j)];
+  for (std::size_t l = 0; l < reach_.size(); ++l) {
+    for (std::size_t h = 0; h < reach_[l].size(); ++h) {
+      bound = std::max(bound, hull_motion_bound(static_cast<int>(l), static_cast<int>(h), dq));
+    }
+  }
   return bound;
 }
 
-double UrdfCellOracle::relative_motion_bound(int link_a, int link_b, const Eigen::VectorXd& dq) const {
+double UrdfCellOracle::relative_motion_bound(int link_a, int link_b, int hull_b, const Eigen::VectorXd& dq) const {
+  const Eigen::VectorXd& reach = reach_[static_cast<std::size_t>(link_b)][static_cast<std::size_t>(hull_b)];
   double bound = 0.0;
-  for (int j = link_a; j < link_b; ++j) bound += std::abs(dq[j]) * reach_[static_cast<std::size_t>(j)];
+  for (int j = link_a; j < link_b; ++j) bound += std::abs(dq[j]) * reach[j];
   return bound;
 }
 
-std::vector<std::vector<std::vector<Eigen::Vector3d>>> UrdfCellOracle::place(const Eigen::VectorXd& q) const {
+std::map<std::string, Pose<double>> UrdfCellOracle::link_poses(const Eigen::VectorXd& q) const {
   std::map<std::string, double> set = side_values_;
   for (std::size_t j = 0; j < chain_joints_.size(); ++j) set[chain_joints_[j]] = q[static_cast<Eigen::Index>(j)];
   const std::map<std::string, double> values = joint_values<double>(urdf_, set);
-  std::map<std::string, Pose<double>> link_poses;
+  std::map<std::string, Pose<double>> poses;
+  for (const auto& link_hulls : hulls_) {
+    for (const Hull& hull : link_hulls) {
+      if (poses.count(hull.urdf_link) == 0) {
+        poses.emplace(hull.urdf_link, (X_W_root_ * link_pose<double>(urdf_, hull.urdf_link, values)).eval());
+      }
+    }
+  }
+  return poses;
+}
+
+std::vector<std::vector<Pose<double>>> UrdfCellOracle::hull_poses(const Eigen::VectorXd& q) const {
+  const auto poses = link_poses(q);
+  std::vector<std::vector<Pose<double>>> X_WC(hulls_.size());
+  for (std::size_t l = 0; l < hulls_.size(); ++l) {
+    for (const Hull& h : hulls_[l]) X_WC[l].push_back((poses.at(h.urdf_link) * h.X_LC).eval());
+  }
+  return X_WC;
+}
+
+UrdfCellOracle::Shape UrdfCellOracle::placed_shape(const std::map<std::string, Pose<double>>& poses, int link,
+                                                   int hull) const {
+  const Hull& h = hulls_[static_cast<std::size_t>(link)][static_cast<std::size_t>(hull)];
+  const Pose<double> X_WC = poses.at(h.urdf_link) * h.X_LC;
+  const Eigen::Matrix3d R = X_WC.topLeftCorner<3, 3>();
+  const Eigen::Vector3d t = X_WC.topRightCorner<3, 1>();
+  Shape shape;
+  shape.points.reserve(h.points_C.size());
+  for (const auto& p : h.points_C) shape.points.push_back(R * p + t);
+  shape.center = Eigen::Vector3d::Zero();
+  for (const auto& p : shape.points) shape.center += p;
+  shape.center /= static_cast<double>(shape.points.size());
+  for (const auto& p : shape.points) shape.radius = std::max(shape.radius, (p - shape.center).norm());
+  shape.radius *= 1.0 + 1e-12;
+  return shape;
+}
+
+std::vector<std::vector<std::vector<Eigen::Vector3d>>> UrdfCellOracle::place(const Eigen::VectorXd& q) const {
+  const auto poses = link_poses(q);
   std::vector<std::vector<std::vector<Eigen::Vector3d>>> placed(hulls_.size());
   for (std::size_t i = 0; i < hulls_.size(); ++i) {
-    for (const Hull& hull : hulls_[i]) {
-      auto pose = link_poses.find(hull.urdf_link);
-      if (pose == link_poses.end()) {
-        pose = link_poses.emplace(hull.urdf_link, (X_W_root_ * link_pose<double>(urdf_, hull.urdf_link, values)).eval())
-                   .first;
-      }
-      const Pose<double> X_WC = pose->second * hull.X_LC;
-      const Eigen::Matrix3d R = X_WC.topLeftCorner<3, 3>();
-      const Eigen::Vector3d t = X_WC.topRightCorner<3, 1>();
-      std::vector<Eigen::Vector3d> points;
-      points.reserve(hull.points_C.size());
-      for (const auto& p : hull.points_C) points.push_back(R * p + t);
-      placed[i].push_back(std::move(points));
+    for (std::size_t h = 0; h < hulls_[i].size(); ++h) {
+      placed[i].push_back(placed_shape(poses, static_cast<int>(i), static_cast<int>(h)).points);
     }
   }
   return placed;
 }
 
-bool UrdfCellOracle::decide(const Shape& a, const Shape& b, double& distance) const {
+bool UrdfCellOracle::decide(const Shape& a, const Shape& b, double& distance, Eigen::Vector3d* direction) const {
   const double scale = std::max(max_abs(a.points), max_abs(b.points));
   const double sphere_gap = (a.center - b.center).norm() - a.radius - b.radius - 3.0 * rounding_margin(scale);
   if (sphere_gap > 0.0) {
     distance = sphere_gap;
     return false;
   }
-  const Eigen::Vector3d v = gilbert_direction(a.points, a.center, b.points, b.center);
+  const Eigen::Vector3d v = gilbert_direction(a.points, b.points, start_point(a, b, direction));
+  if (direction != nullptr) *direction = v;
   double a_low = std::numeric_limits<double>::infinity(), b_high = -a_low;
   for (const auto& p : a.points) a_low = std::min(a_low, v.dot(p));
   for (const auto& p : b.points) b_high = std::max(b_high, v.dot(p));
@@ -196,18 +277,11 @@ bool UrdfCellOracle::decide(const Shape& a, const Shape& b, double& distance) co
 }
 
 UrdfOracleContact UrdfCellOracle::check(const Eigen::VectorXd& q, bool stop_at_contact) const {
-  const auto placed = place(q);
-  std::vector<std::vector<Shape>> shapes(placed.size());
-  for (std::size_t i = 0; i < placed.size(); ++i) {
-    for (const auto& points : placed[i]) {
-      Shape shape;
-      shape.points = points;
-      shape.center = Eigen::Vector3d::Zero();
-      for (const auto& p : points) shape.center += p;
-      shape.center /= static_cast<double>(points.size());
-      for (const auto& p : points) shape.radius = std::max(shape.radius, (p - shape.center).norm());
-      shape.radius *= 1.0 + 1e-12;
-      shapes[i].push_back(std::move(shape));
+  const auto poses = link_poses(q);
+  std::vector<std::vector<Shape>> shapes(hulls_.size());
+  for (std::size_t i = 0; i < hulls_.size(); ++i) {
+    for (std::size_t h = 0; h < hulls_[i].size(); ++h) {
+      shapes[i].push_back(placed_shape(poses, static_cast<int>(i), static_cast<int>(h)));
     }
   }
   UrdfOracleContact result;
@@ -251,49 +325,111 @@ UrdfOracleContact UrdfCellOracle::check(const Eigen::VectorXd& q, bool stop_at_c
   return result;
 }
 
-// Each PTP segment: t in [0, 1] of the segment's duration; a step is taken when its world
-// motion bound (every joint is monotone on a PTP move) is at most max(spacing, obstacle
-// clearance - reserve) and each self pair's relative bound at most max(spacing, its distance -
-// reserve), distances at the last sample: the skipped motion stays `reserve` clear.
+// One decided pair: its proven gap at its last decision and the motion bound accumulated since.
+struct UrdfCellOracle::PairState {
+  bool self = false;
+  int link = -1, hull = -1, other_link = -1, other_hull = -1, obstacle = -1;
+  Eigen::VectorXd reach;  ///< motion bound per |dq_j| of the pair's moving hull (relative for self)
+  double gap = -1.0;      ///< proven distance lower bound at the last decision (-1: never decided)
+  double moved = 0.0;     ///< motion bound accumulated since the last decision
+  Eigen::Vector3d direction = Eigen::Vector3d::Zero();  ///< Gilbert's last direction
+};
+
+std::vector<UrdfCellOracle::PairState> UrdfCellOracle::pair_states() const {
+  std::vector<PairState> pairs;
+  for (int link = 0; link < static_cast<int>(hulls_.size()); ++link) {
+    for (int h = 0; h < static_cast<int>(hulls_[static_cast<std::size_t>(link)].size()); ++h) {
+      for (int o = 0; o < static_cast<int>(obstacles_.size()); ++o) {
+        if (cell_->environment.contact_allowed(link, h, o)) continue;
+        PairState pair;
+        pair.link = link;
+        pair.hull = h;
+        pair.obstacle = o;
+        pair.reach = reach_[static_cast<std::size_t>(link)][static_cast<std::size_t>(h)];
+        pairs.push_back(pair);
+      }
+    }
+  }
+  for (const SelfCollisionPair& self : cell_->robot.self_collision_pairs) {
+    PairState pair;
+    pair.self = true;
+    pair.link = self.link_a;
+    pair.hull = self.hull_a;
+    pair.other_link = self.link_b;
+    pair.other_hull = self.hull_b;
+    // Hull b in link a's frame: joints a..b-1 only (relative_motion_bound).
+    pair.reach = reach_[static_cast<std::size_t>(self.link_b)][static_cast<std::size_t>(self.hull_b)];
+    for (int j = 0; j < pair.reach.size(); ++j) {
+      if (j < self.link_a || j >= self.link_b) pair.reach[j] = 0.0;
+    }
+    pairs.push_back(pair);
+  }
+  return pairs;
+}
+
+// Each PTP segment: t in [0, 1] of the segment's duration (every joint is monotone on a PTP
+// move, so the reach bounds apply). A pair is decided again only when the motion bound
+// accumulated since its last decision comes within `spacing` of its last proven gap (until
+// then the pair is proven apart, and one more step of `spacing` keeps it so); a step is taken only if, for every pair, that accumulated bound stays at most
+// max(spacing, gap): between two decisions a pair's hulls move at most `spacing` unless its
+// gap proves the motion clear. Contact is claimed only by decide()'s exact LP.
 UrdfOraclePath UrdfCellOracle::sample_path(const PathProgram& program, motion::PtpTiming timing,
                                            double spacing) const {
   const RobotModel& robot = cell_->robot;
-  const double reserve = 40.0 * spacing;
   const long long exact_before = exact_checks_;
   UrdfOraclePath result;
   Eigen::VectorXd q(robot.joint_count());
   for (int j = 0; j < robot.joint_count(); ++j) q[j] = robot.joints[static_cast<std::size_t>(j)].home;
-  double clearance = 0.0;
-  std::vector<double> self_distances;
-  const auto& pairs = robot.self_collision_pairs;
-  // Every hull point moves at most max(spacing, clearance - reserve) in the world, and every
-  // self pair's hull b at most max(spacing, its distance - reserve) in link a's frame.
+  std::vector<PairState> pairs = pair_states();
   auto step_ok = [&](const Eigen::VectorXd& dq) {
-    if (motion_bound(dq) > std::max(spacing, clearance - reserve)) return false;
-    for (std::size_t p = 0; p < pairs.size() && p < self_distances.size(); ++p) {
-      if (relative_motion_bound(pairs[p].link_a, pairs[p].link_b, dq) > std::max(spacing, self_distances[p] - reserve)) {
-        return false;
-      }
+    const Eigen::VectorXd motion = dq.cwiseAbs();
+    for (const PairState& pair : pairs) {
+      if (pair.moved + pair.reach.dot(motion) > std::max(spacing, pair.gap)) return false;
     }
     return true;
   };
-  auto visit = [&](const Eigen::VectorXd& at, int segment) {
+  auto visit = [&](const Eigen::VectorXd& at, const Eigen::VectorXd& dq, int segment) {
     ++result.samples;
-    const UrdfOracleContact contact = check(at);
-    clearance = contact.obstacle_distance;
-    self_distances = contact.self_pair_distances;
-    result.min_obstacle_distance = std::min(result.min_obstacle_distance, contact.obstacle_distance);
-    if (contact.self_distance < result.min_self_distance) {
-      result.min_self_distance = contact.self_distance;
-      std::copy(contact.nearest_self, contact.nearest_self + 4, result.nearest_self);
+    const auto poses = link_poses(at);
+    std::map<std::pair<int, int>, Shape> shapes;
+    auto shape = [&](int link, int hull) -> const Shape& {
+      auto found = shapes.find({link, hull});
+      if (found == shapes.end()) found = shapes.emplace(std::make_pair(link, hull), placed_shape(poses, link, hull)).first;
+      return found->second;
+    };
+    const Eigen::VectorXd motion = dq.cwiseAbs();
+    for (PairState& pair : pairs) {
+      pair.moved += pair.reach.dot(motion);
+      // Still proven apart (moved < gap), and the next step may move it by spacing: skip.
+      if (pair.gap >= 0.0 && (pair.moved == 0.0 || pair.moved + spacing <= pair.gap)) continue;
+      ++result.decisions;
+      const Shape& other = pair.self ? shape(pair.other_link, pair.other_hull) : obstacles_[static_cast<std::size_t>(pair.obstacle)];
+      const bool contact = decide(shape(pair.link, pair.hull), other, pair.gap, &pair.direction);
+      pair.moved = 0.0;
+      double& smallest = pair.self ? result.min_self_distance : result.min_obstacle_distance;
+      if (pair.gap < smallest) {
+        smallest = pair.gap;
+        if (pair.self) {
+          const int nearest[4] = {pair.link, pair.hull, pair.other_link, pair.other_hull};
+          std::copy(nearest, nearest + 4, result.nearest_self);
+        }
+      }
+      if (!contact) continue;
+      UrdfOracleContact& found = result.first_contact;
+      found.contact = true;
+      found.self = pair.self;
+      found.link = pair.link;
+      found.hull = pair.hull;
+      found.other_link = pair.other_link;
+      found.other_hull = pair.other_hull;
+      found.obstacle = pair.obstacle;
+      result.contact_segment = segment;
+      result.contact_q = at;
+      return true;
     }
-    if (!contact.contact) return false;
-    result.first_contact = contact;
-    result.contact_segment = segment;
-    result.contact_q = at;
-    return true;
+    return false;
   };
-  bool done = visit(q, 0);
+  bool done = visit(q, Eigen::VectorXd::Zero(q.size()), 0);
   for (int s = 0; s < static_cast<int>(program.segments.size()) && !done; ++s) {
     const auto* ptp = std::get_if<PtpJointSegment>(&program.segments[static_cast<std::size_t>(s)].spec);
     if (ptp == nullptr) throw std::invalid_argument("UrdfCellOracle: PTP(JCS) segments only");
@@ -311,8 +447,8 @@ UrdfOraclePath UrdfCellOracle::sample_path(const PathProgram& program, motion::P
       }
       if (step_ok(2.0 * (q1 - q_t))) h = std::min(0.25, h * 1.5);
       t = t1;
+      done = visit(q1, q1 - q_t, s + 1);
       q_t = q1;
-      done = visit(q_t, s + 1);
     }
     q = ptp->target;
   }

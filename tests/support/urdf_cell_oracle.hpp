@@ -12,12 +12,14 @@
 ///   every point with a margin far above rounding, else the exact rational LP
 ///   (exact_hull_lp.hpp); robot/obstacle pairs except allowed contacts, and the self-collision
 ///   pairs the cell keeps;
-/// - sampling: consecutive samples move every hull point at most `spacing`, from a
-///   configuration-independent reach bound per joint (urdf_motion_bound()), farther where the
-///   clearance at the last sample proves the skipped motion clear.
+/// - sampling: a configuration-independent reach per hull and joint (hull_motion_bound(),
+///   relative_motion_bound()); each pair is decided again only when the motion bound
+///   accumulated since its last decision comes within `spacing` of its last proven gap, and between
+///   two decisions of a pair its hulls move at most max(spacing, that gap).
 /// It calls nothing of src/kinematics' chain, src/geometry's contact code or src/certify.
 
 #include <limits>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -52,6 +54,7 @@ struct UrdfOraclePath {
   Eigen::VectorXd contact_q;
   long long samples = 0;
   long long exact_checks = 0;
+  long long decisions = 0;  ///< pair decisions (sphere, plane or exact LP)
   double min_obstacle_distance = std::numeric_limits<double>::infinity();
   double min_self_distance = std::numeric_limits<double>::infinity();
   int nearest_self[4] = {-1, -1, -1, -1};  ///< the self pair of min_self_distance
@@ -74,14 +77,22 @@ class UrdfCellOracle {
   /// may be small. Stops at the first contact.
   UrdfOraclePath sample_path(const PathProgram& program, motion::PtpTiming timing, double spacing) const;
 
-  /// \f$\sum_j |\Delta q_j| R_j\f$: a bound on the path length of any hull point for a motion
-  /// monotone in every joint with increments dq.
+  /// \f$\sum_j |\Delta q_j| r_{h,j}\f$: a bound on the world path length of any point of hull
+  /// (link, hull) for a motion monotone in every joint with increments dq. r_{h,j} bounds the
+  /// distance of the hull's vertices to joint j's axis (exact for the link joint j carries,
+  /// plus the joint origins' offsets above it).
+  double hull_motion_bound(int link, int hull, const Eigen::VectorXd& dq) const;
+
+  /// The largest hull_motion_bound over every hull.
   double motion_bound(const Eigen::VectorXd& dq) const;
 
-  /// \f$\sum_{j=a+1}^{b} |\Delta q_j| R_j\f$: a bound on the path of any point of link b in
-  /// link a's frame (only joints a+1..b move it there; a point's distance to joint j's axis does
-  /// not depend on the frame).
-  double relative_motion_bound(int link_a, int link_b, const Eigen::VectorXd& dq) const;
+  /// \f$\sum_{j=a}^{b-1} |\Delta q_j| r_{h_b,j}\f$: a bound on the path of any point of hull
+  /// (link_b, hull_b) in link_a's frame (only joints a..b-1 move it there; a point's distance to
+  /// a joint's axis does not depend on the frame).
+  double relative_motion_bound(int link_a, int link_b, int hull_b, const Eigen::VectorXd& dq) const;
+
+  /// World pose of every hull's collision frame [link][hull] at q (reference FK).
+  std::vector<std::vector<Pose<double>>> hull_poses(const Eigen::VectorXd& q) const;
 
  private:
   struct Hull {
@@ -94,7 +105,14 @@ class UrdfCellOracle {
     Eigen::Vector3d center;
     double radius = 0.0;
   };
-  bool decide(const Shape& a, const Shape& b, double& distance) const;
+  struct PairState;
+  /// Decides a pair: false with `distance` a proven lower bound of the distance, or true (exact
+  /// contact). `direction`, when given, starts Gilbert's iteration and receives its result.
+  bool decide(const Shape& a, const Shape& b, double& distance, Eigen::Vector3d* direction = nullptr) const;
+  std::map<std::string, Pose<double>> link_poses(const Eigen::VectorXd& q) const;
+  Shape placed_shape(const std::map<std::string, Pose<double>>& poses, int link, int hull) const;
+  std::vector<PairState> pair_states() const;
+  void compute_reach();
 
   const cell::LoadedCell* cell_;
   ReferenceUrdf urdf_;
@@ -103,7 +121,7 @@ class UrdfCellOracle {
   std::map<std::string, double> side_values_;              ///< side joints, fixed
   std::vector<std::vector<Hull>> hulls_;                   ///< [link][hull]
   std::vector<Shape> obstacles_;
-  std::vector<double> reach_;  ///< R_j per model joint
+  std::vector<std::vector<Eigen::VectorXd>> reach_;  ///< r_{h,j}: [link][hull](model joint)
   mutable long long exact_checks_ = 0;
 };
 
