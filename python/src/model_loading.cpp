@@ -17,6 +17,7 @@
 #include "grpvss/io/environment_file.hpp"
 #include "grpvss/io/path_file.hpp"
 #include "grpvss/io/robot_file.hpp"
+#include "grpvss/io/text_file.hpp"
 #include "grpvss/report/input_digests.hpp"
 
 namespace py = pybind11;

@@ -4,6 +4,7 @@ import json
 import os
 import pathlib
 import subprocess
+import threading
 
 import pytest
 
@@ -52,3 +53,33 @@ def pinned(report_text):
 @pytest.fixture
 def sample_paths():
     return ROBOT, ENVIRONMENT, PATH
+
+
+def run_in_two_threads_at_once(verify):
+    """[verify(0), verify(1)], each in its own thread. Each verification waits (with the GIL
+    released) until two are active: they can only meet if the GIL is released; otherwise the
+    first times out alone and the peak stays 1. Asserts that both ran at once, and that no
+    thread raised (an exception is never lost in the thread)."""
+    import _grpvss  # the extension, found through PYTHONPATH like the tests' own imports
+
+    results, errors = [None, None], []
+
+    def work(index):
+        try:
+            results[index] = verify(index)
+        except Exception as error:
+            errors.append(error)
+
+    _grpvss._reset_activity(rendezvous=2)
+    try:
+        threads = [threading.Thread(target=work, args=(i,)) for i in range(2)]
+        for thread in threads:
+            thread.start()
+        for thread in threads:
+            thread.join()
+        active, peak = _grpvss._activity()
+    finally:
+        _grpvss._reset_activity(rendezvous=0)
+    assert not errors
+    assert (active, peak) == (0, 2)
+    return results

@@ -9,14 +9,12 @@ an edited program; a refused motion raises InputError with the file and line the
 two threads verify programs at once (the GIL released)."""
 import json
 import subprocess
-import threading
 
 import numpy
 import pytest
 
-import _grpvss
 import grpvss
-from conftest import SOURCE_DIR, cli_path, run_cli
+from conftest import SOURCE_DIR, cli_path, run_cli, run_in_two_threads_at_once
 
 CELL = str(SOURCE_DIR / "tests" / "data" / "cells" / "ur5e-post-no-self.yaml")
 PROGRAMS = SOURCE_DIR / "tests" / "data" / "programs"
@@ -134,24 +132,5 @@ def test_two_threads_verify_programs_at_once(cell):
     session = cell.session()
     programs = [grpvss.load_program(PROGRAMS / name, cell.robot)
                 for name in ("ur5e-clear.script", "ur5e-through-post.script")]
-    results, errors = [None, None], []
-
-    def work(index):
-        try:
-            results[index] = session.verify_program(programs[index])
-        except Exception as error:  # reported below, never lost in the thread
-            errors.append(error)
-
-    _grpvss._reset_activity(rendezvous=2)
-    try:
-        threads = [threading.Thread(target=work, args=(i,)) for i in range(2)]
-        for thread in threads:
-            thread.start()
-        for thread in threads:
-            thread.join()
-        active, peak = _grpvss._activity()
-    finally:
-        _grpvss._reset_activity(rendezvous=0)
-    assert not errors
-    assert (active, peak) == (0, 2)
+    results = run_in_two_threads_at_once(lambda i: session.verify_program(programs[i]))
     assert [r.verdict.name for r in results] == ["CLEAR", "COLLISION"]

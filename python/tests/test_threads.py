@@ -2,9 +2,8 @@
 one shared cell, with the results of a sequential run."""
 import threading
 
-import _grpvss
 import grpvss
-from conftest import DATA, ROBOT
+from conftest import DATA, ROBOT, run_in_two_threads_at_once
 
 JOBS = [(str(DATA / "environment.txt"), str(DATA / "path.txt")),
         (str(DATA / "bench-environment.txt"), str(DATA / "path-output-sample.txt"))]
@@ -13,29 +12,7 @@ JOBS = [(str(DATA / "environment.txt"), str(DATA / "path.txt")),
 def test_two_threads_overlap_and_agree_with_a_sequential_run():
     sessions = [grpvss.VerificationSession(ROBOT, environment, 0.5) for environment, _ in JOBS]
     sequential = [s.verify(path).json_report("t") for s, (_, path) in zip(sessions, JOBS)]
-    results = [None, None]
-    errors = []
-
-    def work(i):
-        try:
-            results[i] = sessions[i].verify(JOBS[i][1]).json_report("t")
-        except Exception as error:  # reported below, never lost in the thread
-            errors.append(error)
-
-    # Each verification waits (with the GIL released) until two are active: they can only
-    # meet if the GIL is released; otherwise the first times out alone and the peak stays 1.
-    _grpvss._reset_activity(rendezvous=2)
-    try:
-        threads = [threading.Thread(target=work, args=(i,)) for i in range(2)]
-        for thread in threads:
-            thread.start()
-        for thread in threads:
-            thread.join()
-        active, peak = _grpvss._activity()
-    finally:
-        _grpvss._reset_activity(rendezvous=0)
-    assert not errors
-    assert (active, peak) == (0, 2)
+    results = run_in_two_threads_at_once(lambda i: sessions[i].verify(JOBS[i][1]).json_report("t"))
     assert results == sequential
 
 

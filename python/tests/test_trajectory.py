@@ -7,14 +7,12 @@ file and rejects other data, errors raise grpvss.InputError naming the argument 
 and two threads verify trajectories at once (the GIL released)."""
 import json
 import subprocess
-import threading
 
 import numpy
 import pytest
 
-import _grpvss
 import grpvss
-from conftest import SOURCE_DIR, cli_path, run_cli
+from conftest import SOURCE_DIR, cli_path, run_cli, run_in_two_threads_at_once
 
 CELL = str(SOURCE_DIR / "tests" / "data" / "cells" / "ur5e-post-no-self.yaml")
 TRAJECTORIES = SOURCE_DIR / "tests" / "data" / "trajectories"
@@ -186,24 +184,6 @@ def test_bad_arrays_raise_input_errors_naming_the_argument_or_the_line(cell):
 def test_two_threads_verify_trajectories_at_once(cell):
     session = cell.session()
     reference = session.verify_trajectory(THROUGH_POST_TIMES, THROUGH_POST).json_report("t")
-    results, errors = [None, None], []
-
-    def work(i):
-        try:
-            results[i] = session.verify_trajectory(THROUGH_POST_TIMES, THROUGH_POST).json_report("t")
-        except Exception as error:  # reported below, never lost in the thread
-            errors.append(error)
-
-    _grpvss._reset_activity(rendezvous=2)
-    try:
-        threads = [threading.Thread(target=work, args=(i,)) for i in range(2)]
-        for thread in threads:
-            thread.start()
-        for thread in threads:
-            thread.join()
-        active, peak = _grpvss._activity()
-    finally:
-        _grpvss._reset_activity(rendezvous=0)
-    assert not errors
-    assert (active, peak) == (0, 2)
+    results = run_in_two_threads_at_once(
+        lambda i: session.verify_trajectory(THROUGH_POST_TIMES, THROUGH_POST).json_report("t"))
     assert results == [reference, reference]

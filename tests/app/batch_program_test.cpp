@@ -40,11 +40,7 @@ std::string job(const std::string& id, const std::string& program, const std::st
   return "  - {id: " + id + ", cell: " + kCell + ", program: " + kPrograms + program + extra + "}\n";
 }
 
-// `steps: N` of verify's summary.
-int summary_steps(const std::string& summary) {
-  const auto at = summary.find("steps: ");
-  return at == std::string::npos ? -1 : std::stoi(summary.substr(at + 7));
-}
+using grpvss::test::summary_steps;
 
 TEST_F(BatchProgram, ReportsCertificatesAndResultLinesAreThoseOfVerifyProgram) {
   std::ofstream(directory_ + "/m.yaml")

@@ -24,4 +24,9 @@ CliRun run_cli(const std::string& directory, const std::string& arguments) {
   return run;
 }
 
+int summary_steps(const std::string& summary) {
+  const auto at = summary.find("steps: ");
+  return at == std::string::npos ? -1 : std::stoi(summary.substr(at + 7));
+}
+
 }  // namespace grpvss::test

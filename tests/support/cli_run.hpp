@@ -16,4 +16,7 @@ struct CliRun {
 /// `grpvss <arguments>` run by the shell in `directory`.
 CliRun run_cli(const std::string& directory, const std::string& arguments);
 
+/// The N of `steps: N` in verify's summary, -1 when the summary has none.
+int summary_steps(const std::string& summary);
+
 }  // namespace grpvss::test
