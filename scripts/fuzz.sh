@@ -12,7 +12,7 @@ seconds="${1:-20}"
 shift || true
 targets=("$@")
 if [ "${#targets[@]}" -eq 0 ]; then
-  targets=(robot environment path profile_table certificate certificate_checker
+  targets=(robot environment path path_yaml profile_table certificate certificate_checker
            trajectory_csv trajectory_json urscript krl rapid urdf srdf cell mesh)
 fi
 build_dir="${GRPVSS_FUZZ_BUILD_DIR:-$here/build-fuzz}"
