@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <utility>
 
+#include <fmt/core.h>
+
 #include "grpvss/certify/verifier.hpp"
 #include "grpvss/motion/thesis_error.hpp"
 #include "transition_judge.hpp"
@@ -165,6 +167,23 @@ double CertifiedMarch::predicted_ptp_step(const SegmentPath& path, double max_st
                                      previous_step_);
 }
 
+namespace {
+
+// Which joint's branch flips: the one that changes most between the two close points.
+std::string jumping_joint_text(const RobotModel& robot, const Eigen::VectorXd& q0,
+                               const Eigen::VectorXd& q1, double s0, double s1) {
+  Eigen::Index j = 0;
+  (q1 - q0).cwiseAbs().maxCoeff(&j);
+  const Joint& joint = robot.joints[static_cast<std::size_t>(j)];
+  const bool revolute = joint.type == JointType::kRevolute;
+  const double change = (q1[j] - q0[j]) * (revolute ? 180.0 / 3.14159265358979323846 : 1.0);
+  return fmt::format(": JOINT {}{} CHANGES BY {:.2f} {} BETWEEN PATH PARAMETERS {:.6g} AND {:.6g}",
+                     j + 1, joint.name.empty() ? "" : " (" + joint.name + ")", change,
+                     revolute ? "DEG" : "LENGTH UNITS", s0, s1);
+}
+
+}  // namespace
+
 // The CP model (proofs/cp-joint-path.md#model): a step that fails it is subdivided; a jump that
 // survives subdivision is error 7; a singular end configuration is error 8.
 CertifiedMarch::Outcome CertifiedMarch::check_cp_model(const SegmentPath& path, const Trial& trial,
@@ -188,7 +207,8 @@ CertifiedMarch::Outcome CertifiedMarch::check_cp_model(const SegmentPath& path, 
     }
     listener_.on_error(kErrorCpJointJump, segment,
                        "THE JOINTS JUMP (IK BRANCH CHANGE) BETWEEN TWO CLOSE POINTS OF THE CP LINE "
-                       "IN MOTION SEGMENT " + std::to_string(segment));
+                       "IN MOTION SEGMENT " + std::to_string(segment) +
+                           jumping_joint_text(cell_.robot(), current_.q, q1, s_, trial.s1));
     return Outcome::kStop;
   }
   if (cp_check_.near_singularity(q1)) {

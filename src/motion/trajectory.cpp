@@ -76,7 +76,8 @@ struct Planner {
     if (sampling.error) return sampling.error;
     piece.cp_samples = std::move(sampling.samples);
     piece.q_end = piece.cp_samples.back().q;
-    piece.duration = piece.cp->length() / options.cp_speed;
+    piece.cp_speed = spec.speed.value_or(options.cp_speed);  // a program's line: its own speed
+    piece.duration = piece.cp->length() / piece.cp_speed;
     return std::nullopt;
   }
 };
@@ -154,7 +155,7 @@ std::optional<Eigen::VectorXd> Trajectory::joints_at(double t) const {
     return motion.q_at(std::clamp(t, motion.start_time(), motion.end_time()));
   }
   if (piece.ptp) return piece.ptp->joints_at(local);
-  const double l = std::min(options_.cp_speed * local, piece.cp->length());
+  const double l = std::min(piece.cp_speed * local, piece.cp->length());
   const auto sample = std::upper_bound(piece.cp_samples.begin(), piece.cp_samples.end(), l,
                                        [](double value, const CpSample& s) { return value < s.l; });
   const CpSample& before = *(sample - 1);

@@ -6,7 +6,9 @@
 // through the post is a COLLISION of the forearm with the post, with the verdict, the first
 // colliding segment and the colliding configuration of its equivalent joint trajectory (CSV); a
 // KRL E6POS with Status/Turn through a tool and a base resolves to the joints it was computed
-// from; linear, circular and blended motions are refused with their file:line.
+// from; straight TCP lines (movel, LIN, MoveL) are certified CP lines, CLEAR and ACCEPTED, and a
+// movel through the post collides as its equivalent IND 3 path does; a turning line under
+// another tool than the cell's, circular and blended motions are refused with their file:line.
 #include <unistd.h>
 
 #include <cmath>
@@ -198,13 +200,103 @@ TEST_F(ProgramCli, AnotherStatusNamesAConfigurationTheTargetDoesNotHave) {
       << verify.err;
 }
 
+TEST_F(ProgramCli, UrScriptMovelLinesAreClearAndTheirCertificateAccepted) {
+  const CliRun verify =
+      run_cli(dir(), "verify " + ur5e("ur5e-movel-clear.script") + " --certificate c.json --json r.json");
+  ASSERT_EQ(verify.exit_code, grpvss::app::kExitOk) << verify.out << verify.err;
+  EXPECT_EQ(verify.out.rfind("motion: program ur5e-movel-clear.script (URScript), synchronized PTP "
+                             "and CP lines, 4 motions (1 joint target, 0 poses by IK, 3 straight "
+                             "TCP lines), exact stops\nverdict: CLEAR\n",
+                             0),
+            0u)
+      << verify.out;
+  const auto report = nlohmann::json::parse(grpvss::test::read_text_file(dir() + "/r.json"));
+  ASSERT_EQ(report["segments"].size(), 4u);
+  EXPECT_EQ(report["segments"][1]["source_line"], 11);
+  EXPECT_TRUE(contains(verify.out, "steps: 17  cycle time: 3.914 s")) << verify.out;
+  const auto certificate = nlohmann::json::parse(grpvss::test::read_text_file(dir() + "/c.json"));
+  const std::vector<std::vector<double>> targets = recorded_targets(certificate);
+  ASSERT_EQ(targets.size(), 4u);
+  // The last movel names the approach joints: the line back ends in them.
+  const std::vector<double> approach{-0.52359877559829882, -1.5707963267948966, 1.5707963267948966,
+                                     -1.5707963267948966, -1.5707963267948966, 0};
+  for (std::size_t j = 0; j < 6; ++j) EXPECT_NEAR(targets[3][j], approach[j], 1e-9) << j;
+  const CliRun check = run_cli(dir(), "check-certificate " + ur5e("ur5e-movel-clear.script") + " c.json");
+  EXPECT_EQ(check.exit_code, grpvss::app::kExitOk) << check.out << check.err;
+  EXPECT_EQ(check.out.rfind("ACCEPTED: claim CLEAR", 0), 0u) << check.out;
+}
+
+TEST_F(ProgramCli, AMovelAndItsEquivalentCpLinePathGiveTheSameCollision) {
+  const CliRun program =
+      run_cli(dir(), "verify " + ur5e("ur5e-movel-post.script") + " --json p.json --certificate c.json");
+  ASSERT_EQ(program.exit_code, grpvss::app::kExitFinding) << program.out << program.err;
+  EXPECT_TRUE(contains(program.out, "verdict: COLLISION\n")) << program.out;
+  const CliRun path = run_cli(dir(), "verify --cell " + kCell + " --path " + kSource +
+                                         "/tests/data/cells/ur5e-movel-post.txt --cp-speed 0.25 "
+                                         "--json t.json");
+  ASSERT_EQ(path.exit_code, grpvss::app::kExitFinding) << path.out << path.err;
+  const auto p = nlohmann::json::parse(grpvss::test::read_text_file(dir() + "/p.json"));
+  const auto t = nlohmann::json::parse(grpvss::test::read_text_file(dir() + "/t.json"));
+  EXPECT_EQ(p["verdict"], "COLLISION");
+  EXPECT_EQ(t["verdict"], "COLLISION");
+  EXPECT_EQ(p["collision_step"], 10);
+  EXPECT_EQ(t["collision_step"], p["collision_step"]);
+  const int first = p["collision_step"].get<int>() - 1;
+  EXPECT_EQ(p["steps"][first]["segment"], 2);  // the movel, the IND 3 line
+  EXPECT_EQ(t["steps"][first]["segment"], 2);
+  EXPECT_EQ(p["segments"][1]["source_line"], 8);
+  for (int j = 0; j < 6; ++j) {
+    EXPECT_NEAR(p["steps"][first]["joint_values"][j].get<double>(),
+                t["steps"][first]["joint_values"][j].get<double>(), 1e-6)  // deg: 17-digit file values
+        << j;
+  }
+  EXPECT_TRUE(contains(program.out, "interference: wrist_1_link hull 0 / post, steps 10-17")) << program.out;
+  const CliRun check = run_cli(dir(), "check-certificate " + ur5e("ur5e-movel-post.script") + " c.json");
+  EXPECT_EQ(check.exit_code, grpvss::app::kExitOk) << check.out << check.err;
+  EXPECT_EQ(check.out.rfind("ACCEPTED: claim COLLISION", 0), 0u) << check.out;
+}
+
+TEST_F(ProgramCli, AKrlLinAndARapidMoveLAreVerifiedAndTheirCertificatesAccepted) {
+  for (const std::string program : {"sixaxis_lin.src", "sixaxis_movel.mod"}) {
+    const std::string inputs = "--cell " + kSixAxisCell + " --program " + kPrograms + program;
+    const CliRun verify = run_cli(dir(), "verify " + inputs + " --certificate c.json");
+    ASSERT_EQ(verify.exit_code, grpvss::app::kExitOk) << verify.out << verify.err;
+    EXPECT_TRUE(contains(verify.out, "5 motions (2 joint targets, 1 pose by IK, 2 straight TCP "
+                                     "lines), exact stops\nverdict: CLEAR\n"))
+        << verify.out;
+    const auto certificate = nlohmann::json::parse(grpvss::test::read_text_file(dir() + "/c.json"));
+    const std::vector<std::vector<double>> targets = recorded_targets(certificate);
+    ASSERT_EQ(targets.size(), 5u);
+    // Up and back down the line: the joints at its end are the pick's, (0.3, -0.4, 0.5, 0.6, -0.7, 0.2).
+    const std::vector<double> pick{0.3, -0.4, 0.5, 0.6, -0.7, 0.2};
+    for (std::size_t j = 0; j < 6; ++j) EXPECT_NEAR(targets[3][j], pick[j], 5e-6) << program << j;
+    const CliRun check = run_cli(dir(), "check-certificate " + inputs + " c.json");
+    EXPECT_EQ(check.exit_code, grpvss::app::kExitOk) << check.out << check.err;
+  }
+}
+
+TEST_F(ProgramCli, ALinWhoseStatusTheLineDoesNotReachIsAnError) {
+  std::filesystem::copy_file(kPrograms + "sixaxis_lin.src", dir() + "/s.src");
+  std::filesystem::copy_file(kPrograms + "$config.dat", dir() + "/$config.dat");
+  std::string data = grpvss::test::read_text_file(kPrograms + "sixaxis_lin.dat");
+  data.replace(data.rfind("S 6,T 18"), 8, "S 2,T 18");  // XBACK only
+  std::ofstream(dir() + "/s.dat") << data;
+  const CliRun verify = run_cli(dir(), "verify --cell " + kSixAxisCell + " --program s.src");
+  EXPECT_EQ(verify.exit_code, grpvss::app::kExitInputError) << verify.out;
+  EXPECT_TRUE(contains(verify.err, "s.src:15: expected the configuration the line's target names "
+                                   "(S 2 T 18) reached along the line from the previous target, "
+                                   "found the line ends at joints (17.19, -22.92, 28.65, 34.38, "
+                                   "-40.11, 11.46) deg, and the named configuration has no solution there"))
+      << verify.err;
+}
+
 struct Refusal {
   std::string cell;
   std::string program;
   std::string message;
 };
 
-TEST_F(ProgramCli, LinearCircularAndBlendedMotionsAreRefusedWithTheirLine) {
+TEST_F(ProgramCli, TurningLinesUnderAnotherToolCircularAndBlendedMotionsAreRefused) {
   const std::string joint = "expected a joint motion (movej) ending in an exact stop: the verifier "
                             "models a program as synchronized PTP motions, found ";
   const std::string blended = ": the blended corner leaves the joint-space line and no bound on "
@@ -212,9 +304,11 @@ TEST_F(ProgramCli, LinearCircularAndBlendedMotionsAreRefusedWithTheirLine) {
                               "C_PTP/C_DIS/C_VEL/C_ORI, ABB fine)";
   const std::vector<Refusal> refusals{
       {kCell, "ur5e-movel.script",
-       "ur5e-movel.script:5: " + joint +
-           "movel: straight TCP lines of programs are not verified yet (the verified CP line "
-           "moves the cell's TCP, with the cell's CP speed)"},
+       "ur5e-movel.script:5: expected a movel whose TCP is the cell's end effector E, or one that "
+       "keeps the tool's orientation: a straight TCP line that turns is no straight line of E "
+       "under another tool; set the cell's `tool` to the program's tool, found tool "
+       "set_tcp(p[0, 0, 0.1, 0, 0, 0]) with its TCP at (0, 0, 100) mm in the flange, the cell's E at (0, 0, 0) mm, and the orientation "
+       "turning by "},
       {kCell, "ur5e-movec.script",
        "ur5e-movec.script:5: " + joint + "movec: circular moves are not modelled"},
       {kCell, "ur5e-blend.script", "ur5e-blend.script:4: " + joint + "blend radius r = 0.05 m" + blended},

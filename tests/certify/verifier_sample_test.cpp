@@ -78,6 +78,10 @@ TEST_F(Ibm7545Sample, JointFourWrapOnTheCpLineIsErrorSeven) {
   EXPECT_EQ(certified.result.errors.front().code, kErrorCpJointJump);
   EXPECT_EQ(certified.result.errors.front().segment, 2);
   EXPECT_GT(certified.result.errors.front().step, 0);
+  // The message names the joint whose branch flips: joint 4 wraps by about 360 deg.
+  EXPECT_NE(certified.result.errors.front().message.find("IN MOTION SEGMENT 2: JOINT 4 CHANGES BY "),
+            std::string::npos)
+      << certified.result.errors.front().message;
 }
 
 TEST_F(Ibm7545Sample, OutputSampleSegmentFourIsRefusedWithErrorThreeInThesisMode) {

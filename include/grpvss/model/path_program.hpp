@@ -2,6 +2,7 @@
 /// \file
 /// \brief The path: a sequence of motion segments (thesis A.1.3), in library units.
 
+#include <optional>
 #include <variant>
 #include <vector>
 
@@ -35,6 +36,9 @@ struct PtpWorldSegment {
 /// IND = 3: straight-line CP motion to a world pose.
 struct CpLineSegment {
   WorldTarget target;
+  /// The line's own TCP speed (length units/s, > 0): a robot program's movel v, KRL $VEL.CP,
+  /// RAPID v_tcp. Unset (path files): the run's one CP speed.
+  std::optional<double> speed;
 };
 
 using SegmentSpec = std::variant<PtpJointSegment, PtpWorldSegment, CpLineSegment>;

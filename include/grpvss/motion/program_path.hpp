@@ -7,8 +7,12 @@
 /// Each joint motion (movej, PTP, MoveJ, MoveAbsJ) becomes one synchronized PTP segment in
 /// joint space (a straight line in joint space, all joints starting and stopping together):
 /// a joint target as written, a Cartesian target resolved by inverse kinematics in the
-/// configuration the program names. Motions whose path this model does not describe are
-/// refused, each naming its file and line: linear and circular moves, and blending.
+/// configuration the program names. Each linear motion (movel, LIN, MoveL) becomes one certified
+/// CP line of the cell's end effector E (CpLineSegment, timed by the motion's own TCP speed):
+/// its TCP target re-stated for E, followed from the previous joints; the joints it ends in are
+/// the next motion's current joints. Motions whose path this model does not describe are
+/// refused, each naming its file and line: circular moves, blending, and a line that turns the
+/// orientation under a program TCP other than E (its E path is no straight line).
 ///
 /// Frame chain (docs/conventions.md names): the world W, the cell's robot base R (X_WR), the
 /// program's base / work object B (X_RB), its TCP T (X_BT: the target; X_FT: the tool), the
@@ -39,13 +43,14 @@ struct ResolvedMotion {
   std::string file;
   int line = 0;
   bool cartesian = false;  ///< the target was a pose (resolved by IK)
-  Eigen::VectorXd q;       ///< the joint target, rad (in the robot's joint order)
+  bool linear = false;     ///< a straight TCP line (movel, LIN, MoveL): a CP line of E
+  Eigen::VectorXd q;       ///< the joint target (a line: the joints it ends in), rad
 };
 
-/// \brief The program as a path of synchronized PTP segments, one per motion, in order.
+/// \brief The program as a path of synchronized PTP segments and CP lines, one per motion, in order.
 struct ProgramPath {
   ProgramLanguage language = ProgramLanguage::kUrScript;
-  PathProgram path;                    ///< PtpJointSegment per motion, source_line = its line
+  PathProgram path;                    ///< PtpJointSegment or CpLineSegment per motion, source_line = its line
   std::vector<ResolvedMotion> motions;
 };
 
@@ -66,8 +71,11 @@ const char* to_string(ProgramLanguage language);
 /// Cartesian targets: `ik` solves for X_WE; a KRL Status/Turn or a RAPID confdata needs the OPW
 /// closed form (kinematics::AnalyticIk) and selects the solution with it; a URScript qnear, or
 /// no configuration, selects the solution nearest qnear or the joints the robot then has.
-/// \throws InputError(motion's file, line, expected, found) for a refused motion (linear,
-/// circular, blended), a joint target of the wrong size or outside a joint limit (naming the
+/// A line the robot cannot follow within its limits, or of zero length, ends the path there: the
+/// planner reports it as thesis error 3, 4 or 5, and the motions after it are not resolved.
+/// \throws InputError(motion's file, line, expected, found) for a refused motion (circular,
+/// blended, a turning line under another TCP than E), a line whose target names a configuration
+/// (KRL S/T, RAPID confdata, movel's joints) other than the one reached along it, a joint target of the wrong size or outside a joint limit (naming the
 /// joint, the value and the limit), an unreachable target or configuration, or a program
 /// without motions.
 ProgramPath resolve_program(const RobotProgram& program, const RobotModel& robot,

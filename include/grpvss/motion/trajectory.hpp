@@ -42,6 +42,7 @@ struct SegmentTrajectory {
   std::optional<PtpMotion> ptp;  ///< PTP segments
   std::optional<CpLine> cp;      ///< CP segments
   std::vector<CpSample> cp_samples;  ///< CP segments: l = 0 .. L
+  double cp_speed = 0.0;             ///< CP segments: the TCP speed the line is timed by
   /// Trajectory pieces: the whole joint trajectory; this segment is its piece number - 1, from
   /// waypoint time start_time to the next waypoint's time (both exact doubles of the file).
   std::shared_ptr<const JointTrajectoryMotion> joint_motion;
