@@ -28,6 +28,7 @@ class Job:
     cp_speed: float = 1.0
     ik: str = "auto"
     profile_table: str = None
+    claim: str = "motion"
 
     def cell_key(self):
         """What the prepared cell depends on (the files by name and content)."""
@@ -103,7 +104,8 @@ def run_job(job):
     cell; returns :func:`summarize` of the result."""
     job = _as_job(job)
     result = _session_for(job).verify(job.path, timing=job.timing, cp_speed=job.cp_speed,
-                                      ik=job.ik, profile_table=job.profile_table)
+                                      ik=job.ik, profile_table=job.profile_table,
+                                      claim=job.claim)
     return summarize(result)
 
 

@@ -89,6 +89,9 @@ std::shared_ptr<RunRecord> verify_motion(const std::shared_ptr<const Session>& s
   }
   certify::SetupRequest request = session->request();
   request.motion = parse_motion(options);
+  const auto claim = certify::clear_claim_from_string(options.claim);
+  if (!claim) throw InputError("claim", 0, "motion or steps", "'" + options.claim + "'");
+  request.claim = *claim;
   request.path_label = file_label(record->motion_file());
   certify::VerificationSetup setup = certify::resolve_setup(request);
   const kinematics::IkChoice ik_choice = parse_ik_choice(options.ik);
@@ -188,22 +191,24 @@ void bind_verification(py::module_& module) {
       .def("_verify",
            [](const std::shared_ptr<Session>& session, const std::shared_ptr<LoadedPath>& path,
               const std::string& timing, double cp_speed, const std::string& ik,
-              const std::string& profile_table) {
+              const std::string& profile_table, const std::string& claim) {
              auto record = std::make_shared<RunRecord>();
              record->path = path;
-             return verify_motion(session, record, RunOptions{timing, cp_speed, ik, profile_table});
+             return verify_motion(session, record,
+                                  RunOptions{timing, cp_speed, ik, profile_table, claim});
            },
            py::arg("path"), py::arg("timing"), py::arg("cp_speed"), py::arg("ik"),
-           py::arg("profile_table"))
+           py::arg("profile_table"), py::arg("claim") = "motion")
       .def("_verify_trajectory",
            [](const std::shared_ptr<Session>& session,
               const std::shared_ptr<LoadedTrajectory>& trajectory, const std::string& timing,
-              double cp_speed, const std::string& ik) {
+              double cp_speed, const std::string& ik, const std::string& claim) {
              auto record = std::make_shared<RunRecord>();
              record->trajectory = trajectory;
-             return verify_motion(session, record, RunOptions{timing, cp_speed, ik, ""});
+             return verify_motion(session, record, RunOptions{timing, cp_speed, ik, "", claim});
            },
-           py::arg("trajectory"), py::arg("timing"), py::arg("cp_speed"), py::arg("ik"))
+           py::arg("trajectory"), py::arg("timing"), py::arg("cp_speed"), py::arg("ik"),
+           py::arg("claim") = "motion")
       .def_property_readonly("tolerance", [](const Session& s) { return s.cell().tolerance(); })
       .def_property_readonly("mode",
                              [](const Session& s) { return certify::to_string(s.request().mode); })
