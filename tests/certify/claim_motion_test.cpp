@@ -2,6 +2,7 @@
 // CLEAR only where every transition keeps g >= Delta, the verifier's verdicts and the checker's
 // exact decision on the IBM 7545 Table 3 PTP past a post 0.62 in. (near miss) and 0.45 in.
 // (within tolerance) below the quill's path, at the tolerance 0.5.
+#include <algorithm>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -15,6 +16,8 @@
 
 namespace grpvss::certify {
 namespace {
+
+using test::kIbm7545Tolerance;
 
 double smallest_motion_clearance(const VerificationResult& result) {
   double smallest = 1e300;
