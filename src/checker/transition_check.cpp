@@ -167,7 +167,7 @@ void TransitionCheck::hold_to_tolerance(const Rational& kept, std::size_t hull,
   ledger_.fail(fmt::format(
       "steps {}-{} {} hull {} near {}: the motion clearance {:.6g} is below the tolerance {} "
       "(claim motion: robot + tolerance clear along the whole motion)",
-      from.step, to.step, hull_label(cell_.robot(), checked.link, checked.hull), hull,
+      from.step, to.step, hull_label(cell_.robot(), checked.link, checked.hull), checked.hull,
       obstacle < 0 ? std::string("no recorded obstacle")
                    : obstacle_label(cell_.environment(), obstacle),
       kept.get_d(), header_.tolerance));
