@@ -69,6 +69,7 @@ void TransitionCheck::check(const StepCertificate& from, const StepCertificate& 
       certified = false;
     }
     const Rational kept = keep_motion_clearance(hull, radius_from[i], radius_to[i], bound, to.step);
+    if (kept < exact(header_.tolerance)) facts_.any_tolerance_shortfall = true;
     if (header_.claim == Verdict::kClear && header_.clear_claim == ClearClaim::kMotion) {
       hold_to_tolerance(kept, i, from, to);
     }
