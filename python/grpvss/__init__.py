@@ -81,12 +81,13 @@ class Cell:
                                    offset=offset, cp_speed=self.cp_speed)
 
     def verify(self, path, tolerance=None, mode="certified", offset="auto", timing=None,
-               cp_speed=None, ik="auto", profile_table=None):
+               cp_speed=None, ik="auto", profile_table=None, claim="motion"):
         """One verification of ``path`` (a :class:`Path` or a thesis path file, lengths in
         the cell's unit) with the cell's defaults: its tolerance and CP speed, synchronized
         timing."""
         return self.session(tolerance, mode=mode, offset=offset).verify(
-            path, timing=timing, cp_speed=cp_speed, ik=ik, profile_table=profile_table)
+            path, timing=timing, cp_speed=cp_speed, ik=ik, profile_table=profile_table,
+            claim=claim)
 
     def check_certificate(self, path, certificate, timing=None, ik=None, profile_table=None):
         """:func:`check_certificate` against this cell's robot and obstacles (``path``: a
@@ -96,21 +97,21 @@ class Cell:
 
     def verify_trajectory(self, times, positions, velocities=None, joint_names=None,
                           tolerance=None, mode="certified", offset="auto", ik="auto",
-                          label=ARRAYS_LABEL):
+                          label=ARRAYS_LABEL, claim="motion"):
         """Verifies a joint trajectory given as arrays (:func:`joint_trajectory`) as
         ``grpvss verify --cell --trajectory`` verifies its CSV form; returns a :class:`Result`
         (``result.trajectory`` re-checks the certificate)."""
         trajectory = joint_trajectory(self.robot, times, positions, velocities=velocities,
                                       joint_names=joint_names, label=label)
         return self.session(tolerance, mode=mode, offset=offset).verify_joint_trajectory(
-            trajectory, ik=ik)
+            trajectory, ik=ik, claim=claim)
 
     def verify_trajectory_file(self, file, tolerance=None, mode="certified", offset="auto",
-                               ik="auto"):
+                               ik="auto", claim="motion"):
         """Verifies a trajectory file (CSV or ROS JSON) as ``grpvss verify --cell --trajectory
         FILE`` does."""
         return self.session(tolerance, mode=mode, offset=offset).verify_joint_trajectory(
-            load_trajectory(file, self.robot), ik=ik)
+            load_trajectory(file, self.robot), ik=ik, claim=claim)
 
     def check_trajectory_certificate(self, trajectory, certificate, ik=None):
         """Re-verifies a trajectory's certificate, as ``grpvss check-certificate --cell
@@ -121,7 +122,7 @@ class Cell:
                                  certificate, ik=ik)
 
     def verify_program(self, file, tolerance=None, mode="certified", offset="auto", ik="auto",
-                       start=None):
+                       start=None, claim="motion"):
         """Verifies a robot program (URScript ``.script``, KUKA KRL ``.src``, ABB RAPID
         ``.mod``) as ``grpvss verify --cell --program FILE`` does: each joint motion a
         synchronized PTP segment, Cartesian targets by IK (``ik``) in the configuration the
@@ -130,7 +131,8 @@ class Cell:
         and ``result.program`` the :class:`RobotProgram`. A refused motion (linear, circular,
         blended) or an unreachable target raises :class:`InputError` naming its file and line."""
         program = load_program(file, self.robot, ik=ik, start=start)
-        return self.session(tolerance, mode=mode, offset=offset).verify_program(program)
+        return self.session(tolerance, mode=mode, offset=offset).verify_program(program,
+                                                                                claim=claim)
 
     def check_program_certificate(self, program, certificate, ik="auto", start=None):
         """Re-verifies a program's certificate, as ``grpvss check-certificate --cell --program``
@@ -246,9 +248,11 @@ class VerificationSession:
     mode = property(lambda self: self._native.mode)
     offset = property(lambda self: self._native.offset)
 
-    def verify(self, path, timing=None, cp_speed=None, ik="auto", profile_table=None):
+    def verify(self, path, timing=None, cp_speed=None, ik="auto", profile_table=None,
+               claim="motion"):
         """Verifies ``path`` (a :class:`Path` or a path file) and returns a :class:`Result`.
-        ``timing``, ``cp_speed``, ``ik`` and ``profile_table`` are ``grpvss verify``'s options;
+        ``timing``, ``cp_speed``, ``ik``, ``profile_table`` and ``claim`` (``motion`` or
+        ``steps``, docs/verification.md#claim) are ``grpvss verify``'s options;
         unset, timing is synchronized for a cell's robot and independent for a thesis robot
         file, and the CP speed is the session's (a cell's, else 1)."""
         if timing is None:
@@ -257,40 +261,41 @@ class VerificationSession:
             cp_speed = self._cp_speed
         table = os.fspath(profile_table) if profile_table is not None else ""
         return self._native._verify(_as_path(path, self.robot), timing, float(cp_speed), ik,
-                                    table)
+                                    table, claim)
 
-    def verify_joint_trajectory(self, trajectory, ik="auto"):
+    def verify_joint_trajectory(self, trajectory, ik="auto", claim="motion"):
         """Verifies a :class:`JointTrajectory` (or a trajectory file) and returns a
         :class:`Result`, as ``grpvss verify --trajectory`` does (certified mode only)."""
         timing = "synchronized" if self.robot.from_cell else "independent"
         return self._native._verify_trajectory(_as_trajectory(trajectory, self.robot), timing,
-                                               self._cp_speed, ik)
+                                               self._cp_speed, ik, claim)
 
-    def verify_program(self, program, ik="auto", start=None):
+    def verify_program(self, program, ik="auto", start=None, claim="motion"):
         """Verifies a :class:`RobotProgram` (or a program file, read with ``ik`` and ``start``)
-        as ``grpvss verify --program`` does: synchronized PTP, the session's CP speed; the GIL
-        is released while it runs."""
+        as ``grpvss verify --program`` does: synchronized PTP, the session's CP speed, the
+        ``claim`` of :meth:`verify`; the GIL is released while it runs."""
         return self._native._verify_program(_as_program(program, self.robot, ik, start),
-                                            self._cp_speed)
+                                            self._cp_speed, claim)
 
     def verify_trajectory(self, times, positions, velocities=None, joint_names=None, ik="auto",
-                          label=ARRAYS_LABEL):
+                          label=ARRAYS_LABEL, claim="motion"):
         """Verifies a joint trajectory given as arrays (:func:`joint_trajectory`)."""
         return self.verify_joint_trajectory(
             joint_trajectory(self.robot, times, positions, velocities=velocities,
-                             joint_names=joint_names, label=label), ik=ik)
+                             joint_names=joint_names, label=label), ik=ik, claim=claim)
 
-    def verify_trajectory_file(self, file, ik="auto"):
+    def verify_trajectory_file(self, file, ik="auto", claim="motion"):
         """Verifies a trajectory file (CSV or ROS JSON)."""
-        return self.verify_joint_trajectory(load_trajectory(file, self.robot), ik=ik)
+        return self.verify_joint_trajectory(load_trajectory(file, self.robot), ik=ik,
+                                            claim=claim)
 
 
 def verify(robot, environment, path, tolerance, mode="certified", offset="auto",
-           timing=None, cp_speed=None, ik="auto", profile_table=None):
+           timing=None, cp_speed=None, ik="auto", profile_table=None, claim="motion"):
     """One verification, as ``grpvss verify`` runs it; arguments are objects or file names."""
     session = VerificationSession(robot, environment, tolerance, mode=mode, offset=offset)
     return session.verify(path, timing=timing, cp_speed=cp_speed, ik=ik,
-                          profile_table=profile_table)
+                          profile_table=profile_table, claim=claim)
 
 
 def check_certificate(robot, environment, path, certificate, timing=None, ik=None,

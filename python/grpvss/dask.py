@@ -40,6 +40,7 @@ class Job:
     trajectory: str = None
     program: str = None
     start: tuple = None
+    claim: str = "motion"
 
     def __post_init__(self):
         motions = [key for key in ("path", "trajectory", "program") if getattr(self, key)]
@@ -148,12 +149,12 @@ def run_job(job):
     job = _as_job(job)
     session = _session_for(job)
     if job.program:
-        result = session.verify_program(job.program, ik=job.ik, start=job.start)
+        result = session.verify_program(job.program, ik=job.ik, start=job.start, claim=job.claim)
     elif job.trajectory:
-        result = session.verify_trajectory_file(job.trajectory, ik=job.ik)
+        result = session.verify_trajectory_file(job.trajectory, ik=job.ik, claim=job.claim)
     else:
         result = session.verify(job.path, timing=job.timing, cp_speed=job.cp_speed, ik=job.ik,
-                                profile_table=job.profile_table)
+                                profile_table=job.profile_table, claim=job.claim)
     return summarize(result)
 
 

@@ -78,13 +78,14 @@ struct LoadedProgram {
 };
 
 /// The per-run choices that do not change the cell (`grpvss verify`'s --timing, --cp-speed,
-/// --ik, --profile-table).
+/// --ik, --profile-table, --claim).
 struct RunOptions {
   std::string timing = "independent";
   double cp_speed = 1.0;
   std::string ik = "auto";
   std::string profile_table;  ///< empty: the ideal trapezoids
   std::optional<Eigen::VectorXd> start;  ///< a robot program's start (rad); unset: home
+  std::string claim = "motion";  ///< --claim: motion | steps (docs/verification.md#claim)
 };
 
 /// \brief The prepared set-up (a RobotCell: exact hulls and tolerance offsets) for one robot,

@@ -91,6 +91,9 @@ std::shared_ptr<RunRecord> verify_motion(const std::shared_ptr<const Session>& s
   }
   certify::SetupRequest request = session->request();
   request.motion = parse_motion(options);
+  const auto claim = certify::clear_claim_from_string(options.claim);
+  if (!claim) throw InputError("claim", 0, "motion or steps", "'" + options.claim + "'");
+  request.claim = *claim;
   request.path_label = file_label(record->motion_file());
   if (record->program) request.motion.start = options.start;
   certify::VerificationSetup setup = certify::resolve_setup(request);
@@ -196,31 +199,34 @@ void bind_verification(py::module_& module) {
       .def("_verify",
            [](const std::shared_ptr<Session>& session, const std::shared_ptr<LoadedPath>& path,
               const std::string& timing, double cp_speed, const std::string& ik,
-              const std::string& profile_table) {
+              const std::string& profile_table, const std::string& claim) {
              auto record = std::make_shared<RunRecord>();
              record->path = path;
-             return verify_motion(session, record, RunOptions{timing, cp_speed, ik, profile_table, std::nullopt});
+             return verify_motion(session, record,
+                                  RunOptions{timing, cp_speed, ik, profile_table, std::nullopt, claim});
            },
            py::arg("path"), py::arg("timing"), py::arg("cp_speed"), py::arg("ik"),
-           py::arg("profile_table"))
+           py::arg("profile_table"), py::arg("claim") = "motion")
       .def("_verify_trajectory",
            [](const std::shared_ptr<Session>& session,
               const std::shared_ptr<LoadedTrajectory>& trajectory, const std::string& timing,
-              double cp_speed, const std::string& ik) {
+              double cp_speed, const std::string& ik, const std::string& claim) {
              auto record = std::make_shared<RunRecord>();
              record->trajectory = trajectory;
-             return verify_motion(session, record, RunOptions{timing, cp_speed, ik, "", std::nullopt});
+             return verify_motion(session, record,
+                                  RunOptions{timing, cp_speed, ik, "", std::nullopt, claim});
            },
-           py::arg("trajectory"), py::arg("timing"), py::arg("cp_speed"), py::arg("ik"))
+           py::arg("trajectory"), py::arg("timing"), py::arg("cp_speed"), py::arg("ik"),
+           py::arg("claim") = "motion")
       .def("_verify_program",
            [](const std::shared_ptr<Session>& session, const std::shared_ptr<LoadedProgram>& program,
-              double cp_speed) {
+              double cp_speed, const std::string& claim) {
              auto record = std::make_shared<RunRecord>();
              record->program = program;
-             RunOptions options{"synchronized", cp_speed, program->ik, "", program->start};
+             RunOptions options{"synchronized", cp_speed, program->ik, "", program->start, claim};
              return verify_motion(session, record, options);
            },
-           py::arg("program"), py::arg("cp_speed"))
+           py::arg("program"), py::arg("cp_speed"), py::arg("claim") = "motion")
       .def_property_readonly("tolerance", [](const Session& s) { return s.cell().tolerance(); })
       .def_property_readonly("mode",
                              [](const Session& s) { return certify::to_string(s.request().mode); })

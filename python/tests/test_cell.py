@@ -37,7 +37,7 @@ def test_a_cell_loads_with_names_units_and_defaults():
 
 
 @pytest.mark.parametrize("name,verdict,steps", [("path-clear.txt", "CLEAR", 7),
-                                                ("path-collision.txt", "COLLISION", 21)])
+                                                ("path-collision.txt", "COLLISION", 41)])
 def test_cell_verify_is_the_clis(tmp_path, name, verdict, steps):
     path = str(SIXAXIS / name)
     code, report_text, certificate_text = cli_verify_cell(tmp_path, path)

@@ -41,6 +41,7 @@ struct CheckArguments {
   std::optional<std::string> ik;      ///< unset: "auto"
   std::string timing_text;            ///< what CLI11 parsed into `timing`
   std::string ik_text;                ///< what CLI11 parsed into `ik`
+  std::string claim;                  ///< --claim; empty: the certificate's
   std::string profile_table;
   std::string start;  ///< --start; empty: the robot's home
   std::string certificate_file;
@@ -57,6 +58,16 @@ void refuse_other_timing(const CheckArguments& args, const certify::Certificate&
                                "nothing about {} timing",
                                motion::to_string(header.timing), *args.timing),
                    *args.timing);
+}
+
+// --claim names what the caller expects CLEAR to mean; a certificate made with the other claim
+// is refused rather than checked for a claim it does not make.
+void refuse_other_claim(const CheckArguments& args, const certify::Certificate& header) {
+  if (args.claim.empty() || args.claim == certify::to_string(header.clear_claim)) return;
+  throw InputError("--claim", 0,
+                   fmt::format("the claim the certificate was made with ({})",
+                               certify::to_string(header.clear_claim)),
+                   args.claim);
 }
 
 // --start names where the caller expects the path to start; a certificate made for another
@@ -95,6 +106,11 @@ void print_text(const certify::CheckReport& report, const RobotModel& robot,
   fmt::print("{}: claim {} ({} inequalities decided exactly)\n",
              report.accepted ? "ACCEPTED" : "REJECTED", to_string(report.claim),
              report.inequalities_checked);
+  fmt::print("  claim checked: {}\n", report.clear_claim == certify::ClearClaim::kMotion
+                                          ? "motion (CLEAR = robot + tolerance clear along the "
+                                            "whole motion)"
+                                          : "steps (CLEAR = robot clear along the whole motion, "
+                                            "robot + tolerance clear at every step)");
   for (const auto& failure : report.failures) fmt::print("  - {}\n", failure);
   if (!trajectory_model.empty()) {
     fmt::print("  motion model checked: {}, IK {}\n", trajectory_model,
@@ -128,6 +144,7 @@ void print_json(const certify::CheckReport& report, const std::string& trajector
   if (!start.empty()) motion_model["start"] = start;
   fmt::print("{}\n", nlohmann::json{{"accepted", report.accepted},
                                     {"claim", to_string(report.claim)},
+                                    {"clear_claim", to_string(report.clear_claim)},
                                     {"motion_model", motion_model},
                                     {"inequalities_checked", report.inequalities_checked},
                                     {"failures", report.failures},
@@ -193,6 +210,7 @@ int run_check(const CheckArguments& args) {
       args.certificate_file, robot, environment, program, kinematics, options,
       [&](const certify::Certificate& header) {
         refuse_other_timing(args, header);
+        refuse_other_claim(args, header);
         refuse_other_ik(args, header, ik->name());
         refuse_other_start(options.start, header);
       });
@@ -225,6 +243,10 @@ void register_check_certificate_command(CLI::App& app, int& exit_code) {
   CLI::Option* ik = command->add_option(
       "--ik", args->ik_text, "IK: auto, ibm7545, opw, ur, numeric or plugin:PATH.so (must be the certificate's)");
   add_start_option(*command, args->start);
+  command->add_option("--claim", args->claim,
+                      "Claim expected: motion or steps (default: the certificate's; another is "
+                      "refused)")
+      ->check(CLI::IsMember({"motion", "steps"}));
   command->add_option("CERT", args->certificate_file, "Certificate written by verify")->required();
   command->add_flag("--json", args->json, "Print the result as JSON");
   command->add_flag("--quiet", args->quiet, "Print nothing; the exit code tells the result");

@@ -62,6 +62,12 @@ void add_verify_options(CLI::App& command, VerifyArguments& args) {
                      "Tolerance offset polytope: auto, cube (thesis) or rhombicuboctahedron")
       ->check(CLI::IsMember(batch::offset_choices()))
       ->capture_default_str();
+  command.add_option("--claim", args.claim,
+                     "What CLEAR claims (certified mode): motion (robot + tolerance clear along "
+                     "the whole motion) or steps (robot clear along the motion, robot + tolerance "
+                     "at every step)")
+      ->check(CLI::IsMember(batch::claim_choices()))
+      ->capture_default_str();
   command.add_option("--cp-speed", args.cp_speed,
                      "Nominal end-effector speed on CP lines (length units per s; default: the "
                      "cell's, else 1)")

@@ -28,7 +28,7 @@ struct VerifyArguments : batch::VerifyOptions {
 /// found -1"), unlike CLI::PositiveNumber's range text.
 CLI::Validator positive_number();
 
-/// --robot --env --path|--trajectory --tolerance --mode --offset --timing --profile-table --ik --cp-speed --start
+/// --robot --env --path|--trajectory --tolerance --mode --offset --claim --timing --profile-table --ik --cp-speed --start
 void add_verify_options(CLI::App& command, VerifyArguments& args);
 void add_input_options(CLI::App& command, VerifyArguments& args);
 

@@ -63,6 +63,7 @@ const std::map<std::string, KeyRule>& key_rules() {
       {"tolerance", number_key([](BatchJob& j, double v) { j.options.tolerance = v; })},
       {"mode", text_key([](BatchJob& j, const std::string& v) { j.options.mode = v; })},
       {"offset", text_key([](BatchJob& j, const std::string& v) { j.options.offset = v; })},
+      {"claim", text_key([](BatchJob& j, const std::string& v) { j.options.claim = v; })},
       {"timing", text_key([](BatchJob& j, const std::string& v) { j.options.timing = v; })},
       {"profile_table",
        file_key([](BatchJob& j, const std::string& v) { j.options.profile_table = v; })},
@@ -319,7 +320,7 @@ std::vector<RawJob> raw_jobs(const std::string& text, const std::string& file) {
 
 const std::vector<std::string>& job_keys() {
   static const std::vector<std::string> keys{
-      "id", "robot", "env", "cell", "path", "trajectory", "program", "tolerance", "mode", "offset", "timing",
+      "id", "robot", "env", "cell", "path", "trajectory", "program", "tolerance", "mode", "offset", "claim", "timing",
       "profile_table", "ik", "cp_speed", "start", "output", "json", "html", "certificate"};
   return keys;
 }

@@ -58,6 +58,11 @@ const std::vector<std::string>& timing_choices() {
   return choices;
 }
 
+const std::vector<std::string>& claim_choices() {
+  static const std::vector<std::string> choices{"motion", "steps"};
+  return choices;
+}
+
 cell::ModelSources model_sources(const VerifyOptions& options) {
   return {options.robot_file, options.environment_file, options.cell_file, options.package_paths};
 }
@@ -67,6 +72,7 @@ void check_verify_options(const VerifyOptions& options, const std::string& file,
   if (options.cp_speed != 0.0) check_positive("cp_speed", options.cp_speed, file, line);
   check_word("mode", options.mode, mode_choices(), file, line);
   check_word("offset", options.offset, offset_choices(), file, line);
+  check_word("claim", options.claim, claim_choices(), file, line);
   if (!options.timing.empty()) check_word("timing", options.timing, timing_choices(), file, line);
   try {
     (void)parse_ik_choice(options.ik);
@@ -99,6 +105,7 @@ certify::SetupRequest make_setup_request(const VerifyOptions& options) {
   request.mode = options.mode == "thesis" ? certify::ResolutionMode::kThesis
                                           : certify::ResolutionMode::kCertified;
   request.offset_shape = geometry::offset_shape_from_string(options.offset);  // "auto": unset
+  request.claim = certify::clear_claim_from_string(options.claim).value_or(certify::ClearClaim::kMotion);
   request.motion.timing =
       motion::ptp_timing_from_string(options.timing).value_or(motion::PtpTiming::kIndependent);
   request.motion.cp_speed = options.cp_speed;
@@ -145,8 +152,13 @@ std::string ptp_part(const motion::MotionModel& model) {
 }
 
 // What the verdict claims (docs/verification.md#verdicts-and-exit-codes).
-std::string claim_part(certify::ResolutionMode mode) {
-  if (mode == certify::ResolutionMode::kThesis) return "claim: none (thesis mode, not certified)";
+std::string claim_part(const certify::RunSettings& settings) {
+  if (settings.mode == certify::ResolutionMode::kThesis) {
+    return "claim: none (thesis mode, not certified)";
+  }
+  if (settings.claim == certify::ClearClaim::kMotion) {
+    return "claim: CLEAR = robot + tolerance clear along the whole motion";
+  }
   return "claim: CLEAR = robot clear along the whole motion and robot + tolerance clear at every "
          "step";
 }
@@ -159,7 +171,7 @@ std::string describe_path_motion(const certify::RunSettings& settings,
       "path {}, {}, CP lines at {} length units/s, IK {} (solution nearest the previous joints), "
       "exact stops (no blending), {}",
       path_label, ptp_part(settings.motion), settings.motion.cp_speed, ik_name,
-      claim_part(settings.mode));
+      claim_part(settings));
 }
 
 }  // namespace grpvss::batch

@@ -20,6 +20,7 @@ CertificateRecorder::CertificateRecorder(const RobotCell& cell, const RunSetting
   certificate_.self_collision_pairs = cell.robot().self_collision_pairs;
   certificate_.trajectory_interpolation = settings.trajectory_interpolation;
   certificate_.start = settings.motion.start;
+  certificate_.clear_claim = settings.claim;
 }
 
 StepCertificate CertificateRecorder::certificate_step(const ProbeResult& probe, int index,

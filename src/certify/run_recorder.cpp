@@ -14,8 +14,10 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 }  // namespace
 
 RunRecorder::RunRecorder(const RobotCell& cell, const RunSettings& settings, const RunHooks& hooks)
-    : cell_(cell), certified_(settings.mode == ResolutionMode::kCertified), hooks_(hooks) {
+    : cell_(cell), certified_(settings.mode == ResolutionMode::kCertified), claim_(settings.claim),
+      hooks_(hooks) {
   result_.tolerance = cell.tolerance();
+  result_.claim = settings.claim;
   result_.mode = settings.mode;
   result_.path_file_label = settings.path_label;
   result_.motion_model = settings.motion_model;
@@ -91,6 +93,9 @@ void RunRecorder::record_step(const AcceptedStep& accepted) {
                                 accepted.path_time);
   step.index = last_step_index_ + 1;
   add_transition(accepted, step);
+  if (certified_ && claim_ == ClearClaim::kMotion && !result_.tolerance_shortfall) {
+    note_tolerance_shortfall(accepted, step.index);
+  }
   step.refinement = accepted.refinement;
   if (accepted.to.any_collision && !result_.collision_step) result_.collision_step = step.index;
   track_summaries(step);
@@ -98,6 +103,26 @@ void RunRecorder::record_step(const AcceptedStep& accepted) {
   last_q_ = step.q;
   for (VerificationObserver* observer : hooks_.observers) observer->on_step(step);
   if (hooks_.keep_steps) result_.steps.push_back(std::move(step));
+}
+
+// The claim `motion` needs g >= Delta for every hull in every transition, decided on the same
+// rounded-down g the reports print (the checker decides it again exactly).
+// proof: proofs/two-ball-cover.md#lemma-tolerance-along-motion
+void RunRecorder::note_tolerance_shortfall(const AcceptedStep& accepted, int step_index) {
+  for (std::size_t i = 0; i < cell_.hulls().size(); ++i) {
+    const HullState& from = accepted.from.hulls[i];
+    const HullState& to = accepted.to.hulls[i];
+    const double kept = motion_clearance_lower_bound(
+        from.radius, to.radius, accepted.transition.hull_motion_bounds[i]);
+    if (kept >= cell_.tolerance()) continue;
+    ToleranceShortfall shortfall;
+    shortfall.step = step_index;
+    shortfall.link = cell_.hulls()[i].link;
+    shortfall.obstacle = from.radius <= to.radius ? from.nearest_obstacle : to.nearest_obstacle;
+    shortfall.motion_clearance = std::max(0.0, kept);
+    result_.tolerance_shortfall = shortfall;
+    return;
+  }
 }
 
 void RunRecorder::track_summaries(const StepRecord& step) {
@@ -143,10 +168,15 @@ VerificationResult RunRecorder::finish() {
     result_.verdict = Verdict::kError;
   } else if (any_uncertified_) {
     result_.verdict = Verdict::kUndecided;
-  } else if (any_expanded_) {
+  } else if (any_expanded_ || result_.tolerance_shortfall) {
+    // Claim `motion`: a transition with g < Delta proves only the nominal robot clear there.
     result_.verdict = Verdict::kWithinTolerance;
   } else {
     result_.verdict = Verdict::kClear;
+  }
+  // The shortfall is reported only when it alone keeps the run from CLEAR.
+  if (result_.verdict != Verdict::kWithinTolerance || any_expanded_) {
+    result_.tolerance_shortfall.reset();
   }
   for (const SegmentRecord& segment : result_.segments) {
     if (segment.simulated) result_.total_cycle_time += segment.cycle_time;

@@ -40,9 +40,12 @@ class RunRecorder {
                          double path_time) const;
   void add_transition(const AcceptedStep& accepted, StepRecord& step) const;
   void track_summaries(const StepRecord& step);
+  /// Claim `motion`: keeps the first transition whose motion clearance g is below Delta.
+  void note_tolerance_shortfall(const AcceptedStep& accepted, int step_index);
 
   const RobotCell& cell_;
   bool certified_;
+  ClearClaim claim_;
   const RunHooks& hooks_;
   VerificationResult result_;
   // What the run needs of the steps so far, in memory independent of their number.

@@ -51,7 +51,9 @@ void StepMarch::advance(int segment, double s1, double end) {
 
 CertifiedMarch::CertifiedMarch(const RobotCell& cell, const RunSettings& settings,
                                MarchListener& listener)
-    : StepMarch(cell, settings, listener), cp_check_(cell, settings.cp_model) {
+    : StepMarch(cell, settings, listener),
+      aims_at_tolerance_(settings.claim == ClearClaim::kMotion),
+      cp_check_(cell, settings.cp_model) {
   const RobotModel& robot = cell.robot();
   for (const LinkHull& hull : cell.hulls()) {
     for (int joint = 1; joint <= robot.joint_count(); ++joint) {
@@ -106,7 +108,13 @@ bool CertifiedMarch::march_segment(const SegmentPath& path, int segment) {
     const TransitionRecord transition =
         judge_transition(cell_, current_, trial_, trial.s1 >= end_, path.is_cp(),
                          path.joint_variation(s_, trial.s1));
-    if (settle_step(transition, trial) == Outcome::kRetry) continue;
+    if (trial_.any_expanded_interference) aims_at_tolerance_ = false;  // CLEAR is out of reach
+    const Outcome settled =
+        aims_at_tolerance_
+            ? settle_held_step(held_to_tolerance(transition, current_, trial_, cell_.tolerance()),
+                               transition, trial)
+            : settle_step(transition, trial);
+    if (settled == Outcome::kRetry) continue;
     const double taken = trial.s1 - s_;
     // Nor should the next CP proposal outgrow the model (the square law again).
     step_ = std::min(step_, taken * cp_model_growth_cap(deviation));
@@ -128,7 +136,7 @@ CertifiedMarch::Trial CertifiedMarch::next_trial(const SegmentPath& path) {
   if (!path.is_cp() && !basic_resolution_mode_ && !retrying_) {
     // After a step with ample slack (receding from every obstacle) the growth rule's proposal
     // is kept: the linear extrapolation underestimates a growing clearance.
-    const double predicted = predicted_ptp_step(path, std::min(step_, end_ - s_));
+    const double predicted = proposed_ptp_step(path, std::min(step_, end_ - s_));
     step_ = std::max({predicted, previous_slack_ >= 1.5 ? step_ : 0.0,
                       std::min(certify_floor_, end_ - s_)});
   }
@@ -144,14 +152,30 @@ CertifiedMarch::Trial CertifiedMarch::next_trial(const SegmentPath& path) {
   return trial;
 }
 
+// Aiming at g >= Delta where a hull's clearance beyond Delta is a small fraction of its
+// clearance would creep at a few percent of the nominal step (or converge on the place where
+// the clearance drops below Delta): there the run gives up CLEAR with claim `motion` (at best
+// WITHIN_TOLERANCE, decided by the recorder) and steps on the nominal rule.
+double CertifiedMarch::proposed_ptp_step(const SegmentPath& path, double max_step) {
+  if (!aims_at_tolerance_) return predicted_ptp_step(path, max_step, false);
+  const double held = predicted_ptp_step(path, max_step, true);
+  if (held >= max_step) return held;
+  const double nominal = predicted_ptp_step(path, max_step, false);
+  if (held >= nominal / 16.0) return held;
+  aims_at_tolerance_ = false;
+  return nominal;
+}
+
 // The PTP proposal of step_proposal.hpp, from this march's state.
-double CertifiedMarch::predicted_ptp_step(const SegmentPath& path, double max_step) const {
+double CertifiedMarch::predicted_ptp_step(const SegmentPath& path, double max_step,
+                                          bool held) const {
   const std::size_t hull_count = cell_.hulls().size();
   const bool has_trend = previous_radii_.size() == hull_count + current_.self_pairs.size();
   std::vector<ProposalHull> hulls(hull_count + current_.self_pairs.size());
   for (std::size_t i = 0; i < hull_count; ++i) {
     hulls[i].radius = current_.hulls[i].radius;
     hulls[i].expanded_interferes = current_.hulls[i].expanded_interferes;
+    hulls[i].held_margin = held ? 2.0 * cell_.tolerance() : 0.0;
   }
   for (std::size_t p = 0; p < current_.self_pairs.size(); ++p) {
     hulls[hull_count + p].radius = current_.self_pairs[p].distance;
@@ -230,6 +254,24 @@ CertifiedMarch::Outcome CertifiedMarch::settle_step(const TransitionRecord& tran
   return shrink_or_pass_uncertified(transition, trial);
 }
 
+// Claim `motion`: a step meeting g >= Delta is accepted as a certified one; one meeting only
+// the nominal rule is shrunk like a failing step down to the certified step floor, where it is
+// accepted on the nominal rule (the run is then at best WITHIN_TOLERANCE, and the march stops
+// aiming at g >= Delta). A step failing the nominal rule goes the nominal way.
+CertifiedMarch::Outcome CertifiedMarch::settle_held_step(const TransitionRecord& held,
+                                                         const TransitionRecord& nominal,
+                                                         const Trial& trial) {
+  if (held.certified) return settle_step(held, trial);
+  if (!nominal.certified) return settle_step(nominal, trial);
+  const double taken = trial.s1 - s_;
+  if (!basic_resolution_mode_ && trial.proposed > certify_floor_) {
+    step_ = std::max(certify_floor_, taken * std::clamp(0.9 * transition_slack(held), 0.05, 0.9));
+    return Outcome::kRetry;
+  }
+  aims_at_tolerance_ = false;
+  return settle_step(nominal, trial);
+}
+
 // Accepted: the next proposal grows with the slack this step left.
 void CertifiedMarch::grow_after_certified(const TransitionRecord& transition, double taken) {
   previous_slack_ = transition_slack(transition);
@@ -272,6 +314,7 @@ CertifiedMarch::Outcome CertifiedMarch::shrink_or_pass_uncertified(
   }
   if (!collision_at_an_end) listener_.on_uncertified_step();
   basic_resolution_mode_ = true;
+  aims_at_tolerance_ = false;  // CLEAR is out of reach
   // The bounds are nearly linear in the step: aim just below the resolution.
   step_ = taken * std::clamp(0.95 * basic_slack, 1.0, 4.0);
   return Outcome::kAccept;

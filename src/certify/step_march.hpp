@@ -87,14 +87,26 @@ class CertifiedMarch : public StepMarch {
   };
   void begin_segment(const SegmentPath& path);
   Trial next_trial(const SegmentPath& path);
-  double predicted_ptp_step(const SegmentPath& path, double max_step) const;
+  /// `held`: aimed at g >= Delta (claim `motion`) rather than at the nominal rule.
+  double predicted_ptp_step(const SegmentPath& path, double max_step, bool held) const;
+  /// The PTP proposal of this march; gives up aiming at g >= Delta where it would creep.
+  double proposed_ptp_step(const SegmentPath& path, double max_step);
   Outcome check_cp_model(const SegmentPath& path, const Trial& trial, const Eigen::VectorXd& q1,
                          int segment, double& deviation);
   /// After the trial's transition was judged: the next step's size, or a retry.
   Outcome settle_step(const TransitionRecord& transition, const Trial& trial);
+  /// Claim `motion`: the trial judged against g >= Delta (`held`) and the nominal rule.
+  Outcome settle_held_step(const TransitionRecord& held, const TransitionRecord& nominal,
+                           const Trial& trial);
   void grow_after_certified(const TransitionRecord& transition, double taken);
   Outcome shrink_or_pass_uncertified(const TransitionRecord& transition, const Trial& trial);
   void keep_trend(double taken);
+
+  /// Claim `motion`: the steps aim at g >= Delta (proofs/two-ball-cover.md#lemma-tolerance-along-motion)
+  /// until the run can no longer be CLEAR (a step met only the nominal rule at the step floor,
+  /// or the expanded robot interferes, or a stretch is unproven); then the nominal rule, as
+  /// claim `steps`. Only the steps' sizes depend on it: the recorder decides the verdict.
+  bool aims_at_tolerance_ = false;
 
   CpModelCheck cp_check_;
   std::vector<double> proposal_weights_;  ///< [hull * joints + joint - 1]: M_h's coefficients

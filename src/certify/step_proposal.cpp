@@ -58,7 +58,7 @@ double predicted_ptp_step(const std::function<Eigen::VectorXd(double)>& joints_a
       const double trend = has_trend ? radius - hulls[i].previous_radius : 0.0;
       const double expected_far_radius =
           std::max(radius - bound, radius + trend * candidate / previous_step);
-      if (bound > 0.95 * (radius + expected_far_radius)) return false;
+      if (bound > 0.95 * (radius + expected_far_radius - hulls[i].held_margin)) return false;
     }
     return true;
   };

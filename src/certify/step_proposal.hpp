@@ -27,10 +27,13 @@ struct ProposalHull {
   double radius = 0.0;               ///< r_k (HullState::radius)
   bool expanded_interferes = false;  ///< refining next to a contact: not used for the proposal
   double previous_radius = 0.0;      ///< r_{k-1}, used when the proposal has a trend
+  /// Subtracted from r_k + r_far: 2 Delta for a hull the march holds to the claim `motion`
+  /// (proofs/two-ball-cover.md#lemma-tolerance-along-motion), else 0.
+  double held_margin = 0.0;
 };
 
 /// \brief A PTP proposal from the motion bounds alone (no probe): the largest step in
-/// (0, max_step] whose bound M_h stays within 0.95 (r_k + r_far) for every hull with r_k > 0
+/// (0, max_step] whose bound M_h stays within 0.95 (r_k + r_far - held_margin) for every hull with r_k > 0
 /// that is not refining, r_far the far-end radius extrapolated linearly from the previous
 /// step (r_k + (r_k - r_{k-1}) step / previous_step) and never assumed below r_k - M_h (which
 /// the clearance cannot fall below). Bounds grow with the step (every joint is monotone inside

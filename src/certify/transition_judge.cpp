@@ -102,6 +102,26 @@ TransitionRecord judge_transition(const RobotCell& cell, const ProbeResult& from
   return record;
 }
 
+// g >= Delta holds when M <= r_k + r_{k+1} - 2 Delta or M <= max(r_k, r_{k+1}) - Delta; each
+// rounded down, so that "bound <= allowance" in double implies it exactly.
+// proof: proofs/two-ball-cover.md#lemma-tolerance-along-motion
+TransitionRecord held_to_tolerance(const TransitionRecord& nominal, const ProbeResult& from,
+                                   const ProbeResult& to, double tolerance) {
+  namespace r = geometry::rounding;
+  TransitionRecord held = nominal;
+  for (std::size_t i = 0; i < held.hull_allowances.size(); ++i) {
+    if (from.hulls[i].expanded_interferes || to.hulls[i].expanded_interferes) continue;
+    const double r_k = from.hulls[i].radius;
+    const double r_k1 = to.hulls[i].radius;
+    const double balanced = r::nearest_mode_sub_down(r::nearest_mode_add_down(r_k, r_k1),
+                                                     2.0 * tolerance);
+    const double one_sided = r::nearest_mode_sub_down(std::max(r_k, r_k1), tolerance);
+    held.hull_allowances[i] = std::max(balanced, one_sided);
+    if (!(held.hull_motion_bounds[i] <= held.hull_allowances[i])) held.certified = false;
+  }
+  return held;
+}
+
 TransitionRecord beside_collisions(const TransitionRecord& transition, const ProbeResult& from,
                                    const ProbeResult& to) {
   TransitionRecord beside = transition;

@@ -30,6 +30,15 @@ TransitionRecord judge_transition(const RobotCell& cell, const ProbeResult& from
 void judge_self_pairs(const RobotCell& cell, const ProbeResult& from, const ProbeResult& to,
                       TransitionRecord& record);
 
+/// \brief Claim `motion` (docs/verification.md#claim): the transition as the step decision aims
+/// at it. Every hull whose expanded hull is clear at both ends is held to g >= Delta, i.e. to
+/// the allowance max(r_k + r_{k+1} - 2 Delta, max(r_k, r_{k+1}) - Delta) rounded down; the result
+/// is certified when `nominal` is and every held bound is within. The allowances recorded in the
+/// certificate stay r_k + r_{k+1} (`nominal`); the recorder and the checker decide g >= Delta.
+/// proof: proofs/two-ball-cover.md#lemma-tolerance-along-motion
+TransitionRecord held_to_tolerance(const TransitionRecord& nominal, const ProbeResult& from,
+                                   const ProbeResult& to, double tolerance);
+
 /// \brief The transition as the step decision sees it inside a collision: a hull that collides
 /// at an end of the step is held only against the obstacles it does not collide with
 /// (radius_beside_collisions). The recorded allowances stay r_k + r_{k+1}, which the checker

@@ -110,6 +110,7 @@ bool Checker::check_header() {
 
 void Checker::start() {
   report_.claim = certificate_.claim;
+  report_.clear_claim = certificate_.clear_claim;
   report_.timing = certificate_.timing;
   report_.cp_speed = certificate_.cp_speed;
   if (const auto ik = certificate_.inputs.find("ik"); ik != certificate_.inputs.end()) {

@@ -49,6 +49,7 @@ class CheckedCell {
                                           const Certificate& header, CheckLedger& ledger);
 
   const RobotModel& robot() const { return *robot_; }
+  const Environment& environment() const { return *environment_; }
   const kinematics::KinematicChain& chain() const { return chain_; }
   const std::vector<CheckedHull>& hulls() const { return hulls_; }
   const std::vector<std::vector<Eigen::Vector3d>>& obstacles() const { return obstacles_; }

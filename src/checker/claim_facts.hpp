@@ -10,6 +10,9 @@ namespace grpvss::certify {
 
 struct ClaimFacts {
   bool all_transitions_certified = true;
+  /// Some hull keeps g < Delta over some transition (proofs/two-ball-cover.md#lemma-tolerance-along-motion):
+  /// with the claim `motion`, a reason for WITHIN_TOLERANCE besides interference.
+  bool any_tolerance_shortfall = false;
   bool any_expanded_interference = false;
   bool any_raw_collision = false;
   /// The steps cover the whole path (every segment from parameter 0 to its end).

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <fmt/core.h>
+
 namespace grpvss::certify {
 
 TransitionCheck::TransitionCheck(const CheckedCell& cell, const Certificate& header,
@@ -66,7 +68,11 @@ void TransitionCheck::check(const StepCertificate& from, const StepCertificate& 
       if (claimed.certified) ledger_.fail(hull_where + ": motion bound exceeds the allowance");
       certified = false;
     }
-    keep_motion_clearance(hull, radius_from[i], radius_to[i], bound, to.step);
+    const Rational kept = keep_motion_clearance(hull, radius_from[i], radius_to[i], bound, to.step);
+    if (kept < exact(header_.tolerance)) facts_.any_tolerance_shortfall = true;
+    if (header_.claim == Verdict::kClear && header_.clear_claim == ClearClaim::kMotion) {
+      hold_to_tolerance(kept, i, from, to);
+    }
   }
   if (!certified) facts_.all_transitions_certified = false;
 }
@@ -120,14 +126,52 @@ bool TransitionCheck::chord_bound_holds(const CheckedHull& hull, const StepCerti
 }
 
 // proof: proofs/two-ball-cover.md#corollary-motion-clearance
-void TransitionCheck::keep_motion_clearance(const CheckedHull& hull, const Rational& radius_from,
-                                            const Rational& radius_to, const Rational& bound,
-                                            int to_step) {
+Rational TransitionCheck::keep_motion_clearance(const CheckedHull& hull,
+                                                const Rational& radius_from,
+                                                const Rational& radius_to, const Rational& bound,
+                                                int to_step) {
   const Rational balanced = (radius_from + radius_to - bound) / 2;
   const Rational one_sided = std::max(radius_from, radius_to) - bound;
   const Rational kept = std::max(Rational(0), std::max(balanced, one_sided));
   auto& smallest = clearances_[static_cast<std::size_t>(hull.link)];
   if (!smallest || kept < smallest->first) smallest = std::make_pair(kept, to_step);
+  return kept;
+}
+
+namespace {
+
+// The obstacle with the smallest recorded lower bound at either end (-1: none recorded).
+int nearest_recorded_obstacle(const HullRecord& from, const HullRecord& to) {
+  int nearest = -1;
+  double smallest = 0.0;
+  for (const HullRecord* record : {&from, &to}) {
+    for (const EvidenceRecord& evidence : record->evidence) {
+      if (nearest < 0 || evidence.lower_bound < smallest) {
+        nearest = evidence.obstacle;
+        smallest = evidence.lower_bound;
+      }
+    }
+  }
+  return nearest;
+}
+
+}  // namespace
+
+void TransitionCheck::hold_to_tolerance(const Rational& kept, std::size_t hull,
+                                        const StepCertificate& from, const StepCertificate& to) {
+  ledger_.decided();
+  if (kept >= exact(header_.tolerance)) return;
+  const CheckedHull& checked = cell_.hulls()[hull];
+  const int obstacle = hull < from.hulls.size() && hull < to.hulls.size()
+                           ? nearest_recorded_obstacle(from.hulls[hull], to.hulls[hull])
+                           : -1;
+  ledger_.fail(fmt::format(
+      "steps {}-{} {} hull {} near {}: the motion clearance {:.6g} is below the tolerance {} "
+      "(claim motion: robot + tolerance clear along the whole motion)",
+      from.step, to.step, hull_label(cell_.robot(), checked.link, checked.hull), checked.hull,
+      obstacle < 0 ? std::string("no recorded obstacle")
+                   : obstacle_label(cell_.environment(), obstacle),
+      kept.get_d(), header_.tolerance));
 }
 
 }  // namespace grpvss::certify

@@ -48,9 +48,14 @@ class TransitionCheck {
   bool chord_bound_holds(const CheckedHull& hull, const StepCertificate& from,
                          const StepCertificate& to, const std::vector<Eigen::Vector3d>& placed_from,
                          const std::vector<Eigen::Vector3d>& placed_to, double claimed) const;
-  /// Records the clearance g the hull keeps throughout the transition.
-  void keep_motion_clearance(const CheckedHull& hull, const Rational& radius_from,
-                             const Rational& radius_to, const Rational& bound, int to_step);
+  /// Records the clearance g the hull keeps throughout the transition and returns it.
+  Rational keep_motion_clearance(const CheckedHull& hull, const Rational& radius_from,
+                                 const Rational& radius_to, const Rational& bound, int to_step);
+  /// A CLEAR certificate with claim `motion`: g >= Delta, else a failure naming the step, the
+  /// link and the obstacle nearest at either end.
+  /// proof: proofs/two-ball-cover.md#lemma-tolerance-along-motion
+  void hold_to_tolerance(const Rational& kept, std::size_t hull, const StepCertificate& from,
+                         const StepCertificate& to);
 
   const CheckedCell& cell_;
   const Certificate& header_;

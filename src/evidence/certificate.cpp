@@ -197,6 +197,7 @@ json certificate_to_json(const Certificate& certificate) {
   document["placement_error"] = certificate.placement_error;
   document["expansion_radius"] = certificate.expansion_radius;
   document["claim"] = to_string(certificate.claim);
+  document["clear_claim"] = to_string(certificate.clear_claim);
   document["collision_step"] = certificate.collision_step;
   if (!certificate.allowed_contacts.empty()) {
     json allowed = json::array();
@@ -262,6 +263,11 @@ Certificate certificate_header_from_json(const json& document, const std::string
   certificate.expansion_radius = field<double>(document, "expansion_radius", top, file);
   certificate.claim = named_field(document, "claim", verdict_from_string,
                                   "CLEAR, COLLISION, WITHIN_TOLERANCE, UNDECIDED or ERROR", file);
+  // Absent: a certificate made before the claim existed, i.e. with `steps`.
+  certificate.clear_claim =
+      document.contains("clear_claim")
+          ? named_field(document, "clear_claim", clear_claim_from_string, "motion or steps", file)
+          : ClearClaim::kSteps;
   certificate.collision_step = field<int>(document, "collision_step", top, file);
   for (const json& error : field<json>(document, "errors", top, file)) {
     certificate.errors.push_back({field<int>(error, "code", "an error", file),

@@ -14,6 +14,7 @@ VerificationSetup resolve_setup(const SetupRequest& request) {
   setup.run.motion = request.motion;
   setup.run.cp_model = request.cp_model;
   setup.run.limits = request.limits;
+  setup.run.claim = request.claim;
   setup.run.path_label = request.path_label;
   return setup;
 }

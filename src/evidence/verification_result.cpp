@@ -36,6 +36,16 @@ std::optional<Verdict> verdict_from_string(std::string_view text) {
   return std::nullopt;
 }
 
+const char* to_string(ClearClaim claim) {
+  return claim == ClearClaim::kSteps ? "steps" : "motion";
+}
+
+std::optional<ClearClaim> clear_claim_from_string(std::string_view text) {
+  if (text == "motion") return ClearClaim::kMotion;
+  if (text == "steps") return ClearClaim::kSteps;
+  return std::nullopt;
+}
+
 const char* to_string(GoverningTerm term) {
   switch (term) {
     case GoverningTerm::kTolerance: return "tolerance";

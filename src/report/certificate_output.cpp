@@ -75,6 +75,7 @@ void CertificateStream::finish(const certify::Certificate& certificate,
   head.placement_error = certificate.placement_error;
   head.expansion_radius = certificate.expansion_radius;
   head.claim = certificate.claim;
+  head.clear_claim = certificate.clear_claim;
   head.collision_step = certificate.collision_step;
   head.allowed_contacts = certificate.allowed_contacts;
   head.names = certificate.names;

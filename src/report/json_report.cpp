@@ -292,6 +292,17 @@ class JsonWriter {
     }
     // Only a trajectory run states it: path reports stay as they were.
     if (!result_.motion_model.empty()) report["motion_model"] = result_.motion_model;
+    if (result_.mode == certify::ResolutionMode::kCertified) {
+      report["claim"] = certify::to_string(result_.claim);  // docs/verification.md#claim
+    }
+    if (result_.tolerance_shortfall) {
+      const certify::ToleranceShortfall& shortfall = *result_.tolerance_shortfall;
+      report["tolerance_shortfall"] = {
+          {"step", shortfall.step},
+          {"link", shortfall.link},
+          {"obstacle", shortfall.obstacle >= 0 ? json(shortfall.obstacle) : json(nullptr)},
+          {"motion_clearance", shortfall.motion_clearance}};
+    }
     return report;
   }
 

@@ -35,6 +35,8 @@ certify::VerificationResult head_of(const certify::VerificationResult& result) {
   head.self_collision_episodes = result.self_collision_episodes;
   head.collision_step = result.collision_step;
   head.total_cycle_time = result.total_cycle_time;
+  head.claim = result.claim;
+  head.tolerance_shortfall = result.tolerance_shortfall;
   return head;
 }
 

@@ -103,6 +103,33 @@ TEST_F(CheckCertificateCli, RefusesATimingThatContradictsTheCertificate) {
   EXPECT_EQ(run("check-certificate " + kInputs + " --timing independent " + path("c.json")), 0);
 }
 
+// The claim (docs/certificate.md#claim): printed as checked; a contradicting --claim is refused;
+// a certificate without the field (made before the claim existed) is checked as `steps`.
+TEST_F(CheckCertificateCli, PrintsTheClaimItCheckedAndRefusesAnother) {
+  EXPECT_EQ(document_["clear_claim"], "motion");
+  const auto [code, text] =
+      run_capturing("check-certificate " + kInputs + " " + path("c.json"), path("log.txt"));
+  EXPECT_EQ(code, 0);
+  EXPECT_NE(text.find("  claim checked: motion (CLEAR = robot + tolerance clear along the whole "
+                      "motion)\n"),
+            std::string::npos)
+      << text;
+  const auto [refused, refusal] = run_capturing(
+      "check-certificate " + kInputs + " --claim steps " + path("c.json"), path("log2.txt"));
+  EXPECT_EQ(refused, 2);
+  EXPECT_EQ(refusal,
+            "grpvss: error: --claim:0: expected the claim the certificate was made with "
+            "(motion), found steps\n");
+  EXPECT_EQ(run("check-certificate " + kInputs + " --claim motion " + path("c.json")), 0);
+  nlohmann::json old = document_;
+  old.erase("clear_claim");
+  std::ofstream(path("old.json")) << old.dump(1) << "\n";
+  const auto [old_code, old_text] = run_capturing(
+      "check-certificate " + kInputs + " --json " + path("old.json"), path("log3.json"));
+  EXPECT_EQ(old_code, 0);
+  EXPECT_EQ(nlohmann::json::parse(old_text)["clear_claim"], "steps");
+}
+
 TEST_F(CheckCertificateCli, RefusesAnIkThatIsNotTheCertificates) {
   const auto [code, text] = run_capturing(
       "check-certificate " + kInputs + " --ik numeric " + path("c.json"), path("log.txt"));

@@ -20,7 +20,8 @@ const std::string kIbm = std::string(GRPVSS_SOURCE_DIR) + "/data/ibm7545/";
 const std::string kCells = std::string(GRPVSS_SOURCE_DIR) + "/tests/data/cells/";
 const std::string kSample = "--robot " + kIbm + "robot.txt --env " + kIbm +
                             "environment.txt --path " + kIbm + "path.txt --tolerance 0.5";
-const std::string kClaim =
+const std::string kClaim = "claim: CLEAR = robot + tolerance clear along the whole motion";
+const std::string kStepsClaim =
     "claim: CLEAR = robot clear along the whole motion and robot + tolerance clear at every step";
 
 using grpvss::test::CliRun;
@@ -87,6 +88,32 @@ TEST_F(MotionLineCli, BatchReportsStateTheSameLine) {
   const CliRun verify = run_cli(dir(), "verify " + kSample + " --json v.json --quiet");
   EXPECT_EQ(nlohmann::json::parse(read("b.json"))["motion_model"],
             nlohmann::json::parse(read("v.json"))["motion_model"]);
+}
+
+TEST_F(MotionLineCli, ClaimStepsStatesTheClaimAtTheSteps) {
+  const CliRun verify = run_cli(dir(), "verify " + kSample + " --claim steps --json r.json");
+  ASSERT_EQ(verify.exit_code, grpvss::app::kExitFinding) << verify.err;
+  const std::string line = first_line(verify.out);
+  EXPECT_EQ(line.substr(line.size() - kStepsClaim.size()), kStepsClaim);
+  const nlohmann::json report = nlohmann::json::parse(read("r.json"));
+  EXPECT_EQ(report["claim"], "steps");
+  EXPECT_EQ(report["motion_model"], line.substr(std::string("motion: ").size()));
+  const CliRun refused = run_cli(dir(), "verify " + kSample + " --claim everywhere");
+  EXPECT_EQ(refused.exit_code, grpvss::app::kExitInputError);
+}
+
+TEST_F(MotionLineCli, BatchKeyClaimStatesTheSameLineAsVerify) {
+  std::filesystem::copy_file(kIbm + "path.txt", dir() + "/path.txt");
+  std::ofstream(dir() + "/m.jsonl") << R"({"robot": ")" << kIbm << R"(robot.txt", "env": ")"
+                                    << kIbm << R"(environment.txt", "path": "path.txt", )"
+                                    << R"("tolerance": 0.5, "claim": "steps", "json": "b.json"})"
+                                    << "\n";
+  const CliRun batch = run_cli(dir(), "batch m.jsonl --quiet");
+  ASSERT_EQ(batch.exit_code, grpvss::app::kExitFinding) << batch.err;
+  const nlohmann::json report = nlohmann::json::parse(read("b.json"));
+  const std::string line = report["motion_model"];
+  EXPECT_EQ(line.substr(line.size() - kStepsClaim.size()), kStepsClaim);
+  EXPECT_EQ(report["claim"], "steps");
 }
 
 }  // namespace

@@ -173,4 +173,76 @@ TEST(LemmaTwoBallCover, TheMotionClearanceIsAttainedByAStraightPass) {
   EXPECT_EQ(distance_to_cloud({2.0, 0.0, 0.0}, {{3.0, 0.0, 0.0}}), 1.0);
 }
 
+// proofs/two-ball-cover.md#lemma-tolerance-along-motion: a rigid point set passing straight
+// from A to B (every point's path has length |B - A| = M) with radii r_k, r_k1 at most its
+// distances to an obstacle cloud at the ends, and Delta with M <= (r_k - D) + (r_k1 - D) or
+// M <= max(r_k, r_k1) - D (the rule (T), here g >= Delta): at every sampled time every point of
+// the expanded set (each point plus a sampled offset of length Delta) stays outside the cloud's
+// points by a positive distance, and the body itself keeps Delta.
+TEST(LemmaTwoBallCover, TheExpandedHullStaysClearWhenTheToleranceRuleHolds) {
+  std::mt19937 rng(7545);
+  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  std::uniform_real_distribution<double> u(-4.0, 4.0);
+  std::vector<Vec3> offsets;  // unit directions (Fibonacci sphere)
+  for (int k = 0; k < 64; ++k) {
+    const double z = 1.0 - (2.0 * k + 1.0) / 64.0, rho = std::sqrt(1.0 - z * z);
+    const double a = k * M_PI * (3.0 - std::sqrt(5.0));
+    offsets.push_back({rho * std::cos(a), rho * std::sin(a), z});
+  }
+  int held = 0;
+  long long checked = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    std::vector<Vec3> body(1 + trial % 5);
+    for (Vec3& p : body) p = {0.3 * u(rng) / 4.0, 0.3 * u(rng) / 4.0, 0.3 * u(rng) / 4.0};
+    const Vec3 a{u(rng), u(rng), u(rng)};
+    const Vec3 b = lemma_ref::add(a, lemma_ref::scale(Vec3{u(rng), u(rng), u(rng)}, 0.25 * u01(rng)));
+    std::vector<Vec3> cloud(1 + trial % 7);
+    for (Vec3& o : cloud) o = {u(rng), u(rng), u(rng)};
+    const auto body_distance = [&](const Vec3& at) {
+      double d = std::numeric_limits<double>::infinity();
+      for (const Vec3& p : body) d = std::min(d, distance_to_cloud(lemma_ref::add(at, p), cloud));
+      return d;
+    };
+    const double r_k = body_distance(a) * (trial % 3 == 0 ? 1.0 : 0.5 + 0.5 * u01(rng));
+    const double r_k1 = body_distance(b) * (trial % 3 == 1 ? 1.0 : 0.5 + 0.5 * u01(rng));
+    const double motion = lemma_ref::norm(lemma_ref::sub(b, a));
+    const double g = motion_clearance(r_k, r_k1, motion);
+    if (!(g > 0.0)) continue;
+    const double delta = g * (trial % 4 == 0 ? 1.0 : u01(rng));  // (T) holds, at times tightly
+    ASSERT_TRUE(motion <= (r_k - delta) + (r_k1 - delta) + 1e-12 ||
+                motion <= std::max(r_k, r_k1) - delta + 1e-12);
+    ++held;
+    for (int k = 0; k <= 100; ++k) {
+      const Vec3 at = lemma_ref::add(a, lemma_ref::scale(lemma_ref::sub(b, a), k / 100.0));
+      ASSERT_GE(body_distance(at), delta - 1e-12) << "trial " << trial;
+      for (const Vec3& p : body) {
+        for (const Vec3& direction : offsets) {
+          const Vec3 expanded = lemma_ref::add(lemma_ref::add(at, p), lemma_ref::scale(direction, delta));
+          ASSERT_GE(distance_to_cloud(expanded, cloud), -1e-12) << "trial " << trial;
+          ++checked;
+        }
+      }
+    }
+  }
+  EXPECT_GT(held, 150);
+  EXPECT_GT(checked, 1000000);
+}
+
+// The rule is tight: a point that goes out 1 towards an obstacle point 2 away and comes back
+// (M = 2, r_k = r_k1 = 2, g = 1) keeps exactly 1, so the point expanded by Delta = 1 touches the
+// obstacle, and by any Delta > 1 (where (T) fails) it reaches into it.
+TEST(LemmaTwoBallCover, TheToleranceRuleIsTightForAStraightPass) {
+  const std::vector<Vec3> obstacle{{2.0, 0.0, 0.0}};
+  const double r = 2.0, motion = 2.0;
+  EXPECT_TRUE(motion <= (r - 1.0) + (r - 1.0));
+  EXPECT_FALSE(motion <= (r - 1.0625) + (r - 1.0625) || motion <= r - 1.0625);
+  double closest = std::numeric_limits<double>::infinity();
+  for (int k = 0; k <= 200; ++k) {
+    const Vec3 p{1.0 - std::abs(k - 100) / 100.0, 0.0, 0.0};
+    closest = std::min(closest, distance_to_cloud(p, obstacle));
+  }
+  EXPECT_EQ(closest, 1.0);  // the expanded point (Delta = 1) reaches the obstacle exactly
+  EXPECT_LT(closest - 1.0625, 0.0);  // Delta = 1.0625: it reaches into it
+}
+
 }  // namespace

@@ -68,7 +68,10 @@ TEST(MotionClearance, RoundedDownAndTight) {
 TEST(MotionClearance, TheVerifiersBoundsHoldAlongTheNearMissMotion) {
   for (const char* environment_file :
        {"bench-environment-near-miss.txt", "bench-environment-within-tolerance.txt"}) {
-    const test::Ibm7545Run cell = test::verify_ibm7545(environment_file, test::kTable3PtpPath);
+    // Claim `steps`: the quill passes 0.45 in. above the post of the second cell, below the
+    // tolerance 0.5, which only the claim `motion` refuses as CLEAR (claim_motion_test.cpp).
+    const test::Ibm7545Run cell = test::verify_ibm7545(environment_file, test::kTable3PtpPath,
+                                                       ClearClaim::kSteps);
     const RobotModel& robot = cell.robot;
     const Environment& environment = cell.environment;
     const VerificationRun& run = cell.run;
@@ -123,8 +126,9 @@ TEST(MotionClearance, TheVerifiersBoundsHoldAlongTheNearMissMotion) {
 // equal to them up to that rounding. A certificate with one radius inflated is rejected and
 // proves no clearance.
 TEST(MotionClearance, TheCheckerDerivesTheVerifiersClearancesExactly) {
-  const test::Ibm7545Run cell =
-      test::verify_ibm7545("bench-environment-near-miss.txt", test::kTable3PtpPath);
+  // Claim `steps`: the quill's 0.0435 (the claim `motion` holds it to 0.5, claim_motion_test.cpp).
+  const test::Ibm7545Run cell = test::verify_ibm7545("bench-environment-near-miss.txt",
+                                                     test::kTable3PtpPath, ClearClaim::kSteps);
   const RobotModel& robot = cell.robot;
   const Environment& environment = cell.environment;
   const PathProgram& program = cell.program;

@@ -5,7 +5,9 @@
 // a real contact on the commanded path, nor where it finds one on the joint-linear path
 // through the recorded CP samples (what a CP certificate covers); a reported COLLISION step
 // really collides; every certificate is accepted by check_certificate (the three rejections
-// the long run found are fixed; tests/certify/oracle_findings_test.cpp). Statistics
+// the long run found are fixed; tests/certify/oracle_findings_test.cpp); with the claim
+// `motion` (the default), no CLEAR where the sampled clearance of the motion (from above,
+// OracleContact::min_distance_upper) is below Delta (1 - 1e-6). Statistics
 // (thesis-mode misses, certified false alarms against the oracle's clearance) are printed as
 // "[oracle]" lines and recorded in docs/soundness-oracle.md.
 //
@@ -96,6 +98,10 @@ struct Statistics {
   double largest_not_clear_ratio = 0.0;  // largest oracle clearance / Delta of a non-CLEAR case
   double smallest_clear_ratio = std::numeric_limits<double>::infinity();  // ... of a CLEAR case
   int certified_false_collisions = 0;
+  // The claim `motion`: certified CLEAR where a segment's sampled clearance (from above) is
+  // below Delta (1 - 1e-6); and the smallest such clearance / Delta over the CLEAR cases.
+  int certified_tolerance_misses = 0;
+  double smallest_clear_sampled_ratio = std::numeric_limits<double>::infinity();
   int certificates_rejected = 0;
   int cp_segments_checked = 0;  // CP segments whose recorded joint path the oracle sampled
   long long oracle_samples = 0;
@@ -186,6 +192,7 @@ void run_case(const test::OracleCase& c, const std::string& label, Statistics& s
   }
   // ... and on what a CP certificate covers: the joint-linear motion through the recorded
   // samples (proofs/cp-joint-path.md#guarantee).
+  std::vector<double> sampled_upper = truth.segment_min_distance_upper;  // per segment
   for (const SegmentRecord& segment : certified.result.segments) {
     if (!segment.simulated || !std::holds_alternative<CpLineSegment>(segment.input.spec)) continue;
     std::vector<Eigen::VectorXd> q_samples{segment.start_q};
@@ -194,6 +201,13 @@ void run_case(const test::OracleCase& c, const std::string& label, Statistics& s
     }
     const test::OraclePathResult claim = oracle.sample_joint_linear(q_samples, spacing, segment.number);
     ++stats.cp_segments_checked;
+    // What the claim `motion` covers on a CP line is this joint path (the commanded line may
+    // lie up to the CP model's deviation away from it).
+    if (sampled_upper.size() < static_cast<std::size_t>(segment.number)) {
+      sampled_upper.resize(static_cast<std::size_t>(segment.number),
+                           std::numeric_limits<double>::infinity());
+    }
+    sampled_upper[static_cast<std::size_t>(segment.number - 1)] = claim.min_distance_upper;
     stats.oracle_samples += claim.samples;
     stats.oracle_exact_checks += claim.exact_checks;
     if (claim.first_contact.contact) {
@@ -202,6 +216,20 @@ void run_case(const test::OracleCase& c, const std::string& label, Statistics& s
           << segment.number << " touches obstacle " << claim.first_contact.obstacle << " at q "
           << claim.contact_q.transpose();
       stats.certified_claim_misses += verdict == Verdict::kClear;
+    }
+  }
+  // The claim `motion` (docs/verification.md#claim): no CLEAR where the sampled clearance of
+  // a simulated segment's motion is below Delta.
+  if (verdict == Verdict::kClear && !truth.line_not_followed) {
+    for (const SegmentRecord& segment : certified.result.segments) {
+      const auto index = static_cast<std::size_t>(segment.number - 1);
+      if (!segment.simulated || index >= sampled_upper.size()) continue;
+      const double ratio = sampled_upper[index] / c.tolerance;
+      stats.smallest_clear_sampled_ratio = std::min(stats.smallest_clear_sampled_ratio, ratio);
+      EXPECT_GE(ratio, 1.0 - 1e-6) << "certified CLEAR (claim motion) but segment "
+                                   << segment.number << " comes within " << sampled_upper[index]
+                                   << " of an obstacle, tolerance " << c.tolerance;
+      stats.certified_tolerance_misses += ratio < 1.0 - 1e-6;
     }
   }
   // A reported collision is real.
@@ -238,6 +266,7 @@ void print(const std::string& label, const Statistics& s) {
       "[oracle] {} cases {} contact {} clear {} not_followed {} error_when_clear {} samples {} exact {} cp_segments {}\n"
       "[oracle] {} certified {} steps {} misses {} claim_misses {} clear_not_followed {} "
       "false_collisions {} rejected {}\n"
+      "[oracle] {} claim_motion tolerance_misses {} sampled_ratio_min_clear {:.4f}\n"
       "[oracle] {} clear_by_bin {} not_clear_by_bin {} (bins of clearance/Delta: <0.5 <1 <1.1 <1.5 <2 <4 "
       ">=4) ratio_max_not_clear {:.4f} ratio_min_clear {:.4f}\n"
       "[oracle] {} thesis {} misses {}\n"
@@ -245,7 +274,8 @@ void print(const std::string& label, const Statistics& s) {
       label, s.cases, s.oracle_contact, s.oracle_clear, s.oracle_not_followed, s.error_when_clear, s.oracle_samples,
       s.oracle_exact_checks, s.cp_segments_checked, label, verdicts(s.certified), s.certified_steps,
       s.certified_misses, s.certified_claim_misses, s.certified_clear_line_not_followed,
-      s.certified_false_collisions, s.certificates_rejected, label, bins(s.clear_by_bin),
+      s.certified_false_collisions, s.certificates_rejected, label, s.certified_tolerance_misses,
+      s.smallest_clear_sampled_ratio, label, bins(s.clear_by_bin),
       bins(s.not_clear_by_bin), s.largest_not_clear_ratio, s.smallest_clear_ratio, label, verdicts(s.thesis), s.thesis_misses, label, s.seconds[0],
       s.seconds[1], s.seconds[2], s.seconds[3]);
 }
@@ -277,6 +307,7 @@ void run_shard(Family family, int shard) {
   EXPECT_EQ(stats.certified_misses, 0);
   EXPECT_EQ(stats.certified_claim_misses, 0);
   EXPECT_EQ(stats.certified_false_collisions, 0);
+  EXPECT_EQ(stats.certified_tolerance_misses, 0);
   EXPECT_EQ(stats.certificates_rejected, 0);
   if (family == Family::kScaraCp && only_case == nullptr) EXPECT_GT(stats.cp_segments_checked, 0);
 }

@@ -55,6 +55,14 @@ TEST(StepProposal, WithoutTrendTheFarRadiusIsAssumedEqual) {
   expect_from_below(propose({{1.0, false, 0.0}}, false, 1.0, 4.0), 0.95, 4.0);
 }
 
+TEST(StepProposal, ClaimMotionAimsAtTheAllowanceLessTwoDelta) {
+  // Delta = 0.25, held_margin 0.5: 2 t <= 0.95 (1 + 1 - 0.5)  =>  t <= 0.7125
+  // (proofs/two-ball-cover.md#lemma-tolerance-along-motion).
+  ProposalHull held{1.0, false, 0.0};
+  held.held_margin = 0.5;
+  expect_from_below(propose({held}, false, 1.0, 4.0), 0.7125, 4.0);
+}
+
 TEST(StepProposal, AShrinkingClearanceIsExtrapolated) {
   // r_{k-1} = 1.5 one unit ago: r_far = 1 - 0.5 t, so 2 t <= 0.95 (2 - 0.5 t), t <= 1.9 / 2.475.
   expect_from_below(propose({{1.0, false, 1.5}}, true, 1.0, 4.0), 1.9 / 2.475, 4.0);

@@ -12,11 +12,12 @@ std::string data(const std::string& name) {
   return std::string(GRPVSS_SOURCE_DIR) + "/data/ibm7545/" + name;
 }
 
-Ibm7545Run run(Ibm7545Run inputs) {
+Ibm7545Run run(Ibm7545Run inputs, certify::ClearClaim claim) {
   inputs.kinematics = motion::make_kinematics_access(
       inputs.robot, motion::select_ik({}, inputs.robot, "robot.txt"));
   certify::SetupRequest request;
   request.tolerance = kIbm7545Tolerance;
+  request.claim = claim;
   inputs.setup = certify::resolve_setup(request);
   inputs.run = certify::verify(inputs.robot, inputs.environment, inputs.program,
                                inputs.kinematics, inputs.setup);
@@ -25,20 +26,22 @@ Ibm7545Run run(Ibm7545Run inputs) {
 
 }  // namespace
 
-Ibm7545Run verify_ibm7545(const std::string& environment_file, const std::string& path_text) {
+Ibm7545Run verify_ibm7545(const std::string& environment_file, const std::string& path_text,
+                          certify::ClearClaim claim) {
   Ibm7545Run inputs;
   inputs.robot = io::read_robot_file(data("robot.txt"));
   inputs.environment = io::read_environment_file(data(environment_file));
   inputs.program = io::parse_path_file(path_text, "path.txt", inputs.robot);
-  return run(std::move(inputs));
+  return run(std::move(inputs), claim);
 }
 
-Ibm7545Run verify_ibm7545_files(const std::string& environment_file, const std::string& path_file) {
+Ibm7545Run verify_ibm7545_files(const std::string& environment_file, const std::string& path_file,
+                                certify::ClearClaim claim) {
   Ibm7545Run inputs;
   inputs.robot = io::read_robot_file(data("robot.txt"));
   inputs.environment = io::read_environment_file(data(environment_file));
   inputs.program = io::read_path_file(data(path_file), inputs.robot);
-  return run(std::move(inputs));
+  return run(std::move(inputs), claim);
 }
 
 }  // namespace grpvss::test

@@ -26,6 +26,17 @@ double max_abs(const std::vector<Eigen::Vector3d>& points) {
   return largest;
 }
 
+// The smallest distance from above, overall and for the 1-based `segment`.
+void keep_upper(OraclePathResult& result, int segment, double upper) {
+  result.min_distance_upper = std::min(result.min_distance_upper, upper);
+  const auto index = static_cast<std::size_t>(segment - 1);
+  if (result.segment_min_distance_upper.size() <= index) {
+    result.segment_min_distance_upper.resize(index + 1, std::numeric_limits<double>::infinity());
+  }
+  double& kept = result.segment_min_distance_upper[index];
+  kept = std::min(kept, upper);
+}
+
 // Gilbert's original iteration (Frank-Wolfe on conv(A - B), 1966): v moves towards the
 // origin along the segment to the support point of -v. Only PROPOSES a direction; the caller
 // verifies the plane over every point. Start: the centroid difference (a point of A - B).
@@ -238,7 +249,9 @@ OracleContact MotionOracle::check(const Eigen::VectorXd& q, bool stop_at_contact
           for (const auto& p : obstacle.points) obstacle_high = std::max(obstacle_high, v.dot(p));
           return hull_low - obstacle_high - rounding_margin(scale_points) * v.lpNorm<1>();
         };
-        Eigen::Vector3d v = gilbert_direction(placed, center_W, obstacle.points, obstacle.center);
+        const Eigen::Vector3d gilbert =
+            gilbert_direction(placed, center_W, obstacle.points, obstacle.center);
+        Eigen::Vector3d v = gilbert;
         double gap = plane_gap(v);
         // Gilbert's iteration converges slowly next to contact: unless its plane is within 1%
         // of its upper bound |v| on the distance, try the facet/edge axes too.
@@ -263,9 +276,12 @@ OracleContact MotionOracle::check(const Eigen::VectorXd& q, bool stop_at_contact
         if (separated) {
           const double distance = std::max(0.0, gap / v.norm());
           result.min_distance_estimate = std::min(result.min_distance_estimate, distance);
+          // Gilbert's iterate is a point of conv(hull - obstacle): |iterate| >= the distance.
+          result.min_distance_upper = std::min(result.min_distance_upper, gilbert.norm());
           continue;
         }
         result.min_distance_estimate = 0.0;
+        result.min_distance_upper = 0.0;
         if (!result.contact) {
           result.contact = true;
           result.link = link;
@@ -338,6 +354,7 @@ OraclePathResult MotionOracle::sample_path(const PathProgram& program, double sp
     const OracleContact contact = check(*q);
     clearance = contact.min_distance_estimate;
     result.min_distance_estimate = std::min(result.min_distance_estimate, contact.min_distance_estimate);
+    keep_upper(result, segment, contact.min_distance_upper);
     if (!contact.contact) return false;
     result.first_contact = contact;
     result.contact_segment = segment;
@@ -396,6 +413,7 @@ OraclePathResult MotionOracle::sample_joint_linear(const std::vector<Eigen::Vect
     const OracleContact contact = check(*q);
     clearance = contact.min_distance_estimate;
     result.min_distance_estimate = std::min(result.min_distance_estimate, contact.min_distance_estimate);
+    keep_upper(result, 1, contact.min_distance_upper);
     if (!contact.contact) return false;
     result.first_contact = contact;
     result.contact_segment = segment;

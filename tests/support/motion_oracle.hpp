@@ -42,6 +42,12 @@ struct OracleContact {
   /// plane (statistics only; never used for a contact decision). 0 on contact (or when only
   /// the exact test could separate); +inf without obstacles.
   double min_distance_estimate = std::numeric_limits<double>::infinity();
+  /// Smallest hull-obstacle distance seen, from ABOVE: the norm of Gilbert's iterate, a point
+  /// of conv(hull - obstacle), over the pairs evaluated (a pair skipped by the sphere test is
+  /// farther than the lower estimate; the minimum stays an upper bound of the configuration's
+  /// clearance). 0 on contact; +inf without obstacles. A float reference for the claim
+  /// `motion` property (docs/soundness-oracle.md), compared with a relative margin of 1e-6.
+  double min_distance_upper = std::numeric_limits<double>::infinity();
 };
 
 struct OraclePathResult {
@@ -56,6 +62,11 @@ struct OraclePathResult {
   long long samples = 0;
   long long exact_checks = 0;  ///< pairs decided by the exact LP (the rest by the pre-filter)
   double min_distance_estimate = std::numeric_limits<double>::infinity();
+  /// OracleContact::min_distance_upper's minimum over the samples, and per segment (index
+  /// segment - 1; a segment's first sample is the previous one's last; sample_joint_linear:
+  /// one entry).
+  double min_distance_upper = std::numeric_limits<double>::infinity();
+  std::vector<double> segment_min_distance_upper;
 };
 
 /// \brief Exact contact oracle for one robot in one environment.

@@ -34,6 +34,8 @@ struct VerifyOptions {
   double tolerance = 0.0;  ///< Delta > 0, length units (of the cell, with a cell); 0: unset
   std::string mode = "certified";
   std::string offset = "auto";
+  /// What CLEAR claims in certified mode: motion | steps (docs/verification.md#claim).
+  std::string claim = "motion";
   std::string timing;  ///< independent | synchronized; "": unset
   std::string profile_table;  ///< empty: the ideal trapezoids
   std::string ik = "auto";
@@ -50,9 +52,11 @@ cell::ModelSources model_sources(const VerifyOptions& options);
 const std::vector<std::string>& mode_choices();
 const std::vector<std::string>& offset_choices();
 const std::vector<std::string>& timing_choices();
+/// motion, steps
+const std::vector<std::string>& claim_choices();
 
 /// \brief Checks every choice (not the files): tolerance and cp_speed finite and > 0 when set,
-/// the words of mode, offset, timing (when set) and ik.
+/// the words of mode, offset, claim, timing (when set) and ik.
 /// \throws InputError(file, line, expected, found) naming the key, e.g.
 ///         "expected `tolerance`: a finite number > 0, found -1".
 void check_verify_options(const VerifyOptions& options, const std::string& file, int line);

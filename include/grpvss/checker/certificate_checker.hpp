@@ -38,6 +38,9 @@ struct CheckedMotionClearance {
 struct CheckReport {
   bool accepted = false;
   Verdict claim = Verdict::kError;    ///< the verdict the certificate claims
+  /// What its CLEAR means, as checked: `motion` (g >= Delta decided in every transition of a
+  /// CLEAR certificate) or `steps` (docs/certificate.md#claim).
+  ClearClaim clear_claim = ClearClaim::kSteps;
   /// The motion model the steps were checked against: the certificate's, replayed.
   motion::PtpTiming timing = motion::PtpTiming::kIndependent;
   double cp_speed = 0.0;

@@ -91,6 +91,10 @@ struct Certificate {
   double placement_error = 0.0;
   double expansion_radius = 0.0;
   Verdict claim = Verdict::kError;  ///< the verdict it supports
+  /// What its CLEAR means (docs/certificate.md#claim): `motion` (g >= Delta in every
+  /// transition, checked) or `steps`. A certificate without the field ("clear_claim") was made
+  /// before the claim existed, with today's `steps`, and reads as `steps`.
+  ClearClaim clear_claim = ClearClaim::kSteps;
   int collision_step = 0;
   /// Robot hull / obstacle pairs never verified (a cell's allowed contacts), sorted; the
   /// checker rejects a certificate whose list differs from the inputs'. Written only when

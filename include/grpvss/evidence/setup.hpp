@@ -49,6 +49,8 @@ struct RunSettings {
   motion::MotionModel motion;
   CpModelSettings cp_model;
   MarchLimits limits;
+  /// What CLEAR claims (certified mode; docs/verification.md#claim).
+  ClearClaim claim = ClearClaim::kMotion;
   std::string path_label = "PATH";  ///< printed in "... INPUT FROM FILE <label>"
   /// A planner's joint trajectory run (set by certify::verify for a trajectory): the motion
   /// model's statement for the reports and the interpolation for the certificate; empty for
@@ -72,6 +74,7 @@ struct SetupRequest {
   motion::MotionModel motion;
   CpModelSettings cp_model;
   MarchLimits limits;
+  ClearClaim claim = ClearClaim::kMotion;
   std::string path_label = "PATH";
 };
 

@@ -31,6 +31,25 @@ enum class Verdict {
   kError,            ///< a thesis error 1-6 or a CP-model violation stopped the path
 };
 
+/// What a CLEAR verdict claims (issue 20 point 7; docs/verification.md#claim).
+enum class ClearClaim {
+  /// The robot expanded by Delta is proven clear along the whole motion: every transition keeps
+  /// g >= Delta (proofs/two-ball-cover.md#lemma-tolerance-along-motion). The default.
+  kMotion,
+  /// The nominal robot clear along the whole motion, the expanded robot at every step.
+  kSteps,
+};
+
+/// Where a CLEAR run with claim `motion` fell short of it: the first transition (ending at
+/// `step`) whose motion clearance g of a hull of `link` against `obstacle` (the nearer end's
+/// nearest obstacle; -1 unknown) is below Delta, although the nominal rule held.
+struct ToleranceShortfall {
+  int step = 0;
+  int link = 0;
+  int obstacle = -1;
+  double motion_clearance = 0.0;  ///< g, rounded down
+};
+
 /// Which term bounded a step's allowance (recorded per link in every step).
 enum class GoverningTerm {
   kTolerance,   ///< allowance = 2*Delta (no extra clearance at the step ends)
@@ -177,6 +196,11 @@ struct VerificationResult {
   std::vector<SelfCollisionEpisode> self_collision_episodes;
   std::optional<int> collision_step;  ///< the step whose unexpanded robot intersects
   double total_cycle_time = 0.0;
+  /// The run's claim (certified mode; thesis mode claims nothing).
+  ClearClaim claim = ClearClaim::kMotion;
+  /// Claim `motion`: the first transition with g < Delta on a run that is otherwise CLEAR (the
+  /// verdict is then WITHIN_TOLERANCE); unset otherwise.
+  std::optional<ToleranceShortfall> tolerance_shortfall;
 };
 
 const char* to_string(ResolutionMode mode);
@@ -184,5 +208,8 @@ const char* to_string(Verdict verdict);
 std::optional<ResolutionMode> resolution_mode_from_string(std::string_view text);
 std::optional<Verdict> verdict_from_string(std::string_view text);
 const char* to_string(GoverningTerm term);
+/// "motion" or "steps".
+const char* to_string(ClearClaim claim);
+std::optional<ClearClaim> clear_claim_from_string(std::string_view text);
 
 }  // namespace grpvss::certify

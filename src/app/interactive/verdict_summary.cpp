@@ -112,6 +112,17 @@ std::string verdict_summary(const certify::VerificationResult& result, const Mod
   }
   if (names.robot != nullptr) text += unverified_pairs_line(*names.robot);
   if (result.collision_step) text += fmt::format("first collision at step {}\n", *result.collision_step);
+  if (result.tolerance_shortfall) {
+    const certify::ToleranceShortfall& shortfall = *result.tolerance_shortfall;
+    text += fmt::format("claim motion not met: {} / {} keeps only {} along steps {}-{} (tolerance "
+                        "{}): the nominal robot is proven clear there, the robot + tolerance "
+                        "is not\n",
+                        names.link(shortfall.link),
+                        shortfall.obstacle >= 0 ? names.obstacle(shortfall.obstacle)
+                                                : std::string("its nearest obstacle"),
+                        report::format_lower_bound(shortfall.motion_clearance, 4),
+                        shortfall.step - 1, shortfall.step, result.tolerance);
+  }
   const std::size_t self_shown = std::min(result.self_collision_episodes.size(), kEpisodesShown);
   for (std::size_t i = 0; i < self_shown; ++i) {
     text += self_episode_line(result.self_collision_episodes[i], names);
