@@ -96,9 +96,11 @@ class ThesisWriter {
   using Sink = std::function<void(const std::string&)>;
   using StepsOf = std::function<void(int segment)>;
 
+  /// `named_model`: the run names its links and obstacles (a cell), so it is not a thesis
+  /// file's run and its header may state the motion model.
   ThesisWriter(const certify::VerificationResult& result, const std::vector<JointType>& types,
-               Sink sink)
-      : result_(result), types_(types), sink_(std::move(sink)) {}
+               bool named_model, Sink sink)
+      : result_(result), types_(types), named_model_(named_model), sink_(std::move(sink)) {}
 
   /// `steps_of(k)` emits segment k's step blocks; `total`, `collisions`: the closing lines.
   void render(const StepsOf& steps_of, int total, bool collisions) {
@@ -109,8 +111,9 @@ class ThesisWriter {
       line("THE RESOLUTION MODE = CERTIFIED");
       blank();
     }
-    // A joint trajectory's file states its motion (thesis inputs never have one).
-    if (has_trajectory_pieces()) {
+    // A cell's run and a joint trajectory state their motion (issue 20.1); thesis files keep
+    // A.3's header byte for byte.
+    if (!result_.motion_model.empty() && (named_model_ || has_trajectory_pieces())) {
       line("THE MOTION MODEL = " + result_.motion_model);
       blank();
     }
@@ -221,6 +224,7 @@ class ThesisWriter {
 
   const certify::VerificationResult& result_;
   const std::vector<JointType>& types_;
+  bool named_model_;
   Sink sink_;
 };
 
@@ -251,7 +255,8 @@ std::string render_thesis_output(const certify::VerificationResult& result,
                                  const std::vector<JointType>& joint_types,
                                  const ThesisNames& names) {
   std::string out;
-  ThesisWriter writer(result, joint_types, [&out](const std::string& text) { out += text; });
+  ThesisWriter writer(result, joint_types, !names.empty(),
+                      [&out](const std::string& text) { out += text; });
   std::size_t steps_written = 0;
   const auto steps_of = [&](int segment) {
     for (const certify::StepRecord& step : result.steps) {
@@ -291,7 +296,8 @@ void ThesisOutputStream::on_step(const certify::StepRecord& step) {
 
 void ThesisOutputStream::finish(const certify::VerificationResult& result) {
   AtomicOutputFile output(path_, force_);
-  ThesisWriter writer(result, joint_types_, [&output](const std::string& text) { output.write(text); });
+  ThesisWriter writer(result, joint_types_, !names_.empty(),
+                      [&output](const std::string& text) { output.write(text); });
   std::unordered_set<int> recorded;
   for (const certify::SegmentRecord& segment : result.segments) recorded.insert(segment.number);
   for (const SegmentRange& range : ranges_) {

@@ -101,7 +101,7 @@ TEST_F(BatchCli, ABadManifestStopsTheBatchBeforeAnyJob) {
   EXPECT_EQ(run.out, "");
   EXPECT_EQ(run.err,
             "grpvss: error: m.jsonl:2: expected one of the job keys id, robot, env, cell, path, "
-            "trajectory, program, tolerance, mode, offset, timing, profile_table, ik, cp_speed, start, "
+            "trajectory, program, tolerance, mode, offset, claim, timing, profile_table, ik, cp_speed, start, "
             "output, json, html, certificate, found `tolerence`\n");
   EXPECT_FALSE(std::filesystem::exists(directory_ + "/a.json"));
 }

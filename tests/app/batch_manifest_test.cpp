@@ -85,11 +85,11 @@ TEST(BatchManifest, YamlJobsAreTheSameJobsWithTheirLines) {
 TEST(BatchManifest, UnknownKeysAreRefusedWithTheLineAndTheKnownKeys) {
   EXPECT_EQ(manifest_error("{" + kJob + "}\n{" + kJob + R"(,"cel":"c.yaml"})"),
             "cells/m.jsonl:2: expected one of the job keys id, robot, env, cell, path, trajectory, program, "
-            "tolerance, mode, offset, timing, profile_table, ik, cp_speed, start, output, json, "
+            "tolerance, mode, offset, claim, timing, profile_table, ik, cp_speed, start, output, json, "
             "html, certificate, found `cel`");
   EXPECT_EQ(manifest_error("jobs:\n  - robot: r.txt\n    robt: r.txt\n", "m.yml"),
             "m.yml:2: expected one of the job keys id, robot, env, cell, path, trajectory, program, "
-            "tolerance, mode, offset, timing, profile_table, ik, cp_speed, start, output, json, "
+            "tolerance, mode, offset, claim, timing, profile_table, ik, cp_speed, start, output, json, "
             "html, certificate, found `robt`");
   EXPECT_EQ(manifest_error("job:\n  - robot: r.txt\n", "m.yml"),
             "m.yml:1: expected the top-level key `jobs`, found `job`");

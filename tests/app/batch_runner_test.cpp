@@ -77,9 +77,9 @@ TEST_F(BatchRunner, ResultsComeInManifestOrderAndEqualOneThreadsWithTwo) {
     EXPECT_EQ(one[i].rfind("{\"index\":" + std::to_string(i) + ",\"line\":" + std::to_string(i + 1) + ",", 0), 0u)
         << one[i];
   }
-  // `grpvss verify` of the same job: "steps: 24", "first collision at step 4" (link 3, post 0).
-  EXPECT_NE(one[0].find("\"verdict\":\"COLLISION\",\"exit_code\":1,\"steps\":24,\"smallest_clearance\":"
-                        "{\"clearance\":0.0,\"link\":3,\"obstacle\":0,\"step\":4}"),
+  // `grpvss verify` of the same job: "steps: 37", "first collision at step 16" (link 3, post 0).
+  EXPECT_NE(one[0].find("\"verdict\":\"COLLISION\",\"exit_code\":1,\"steps\":37,\"smallest_clearance\":"
+                        "{\"clearance\":0.0,\"link\":3,\"obstacle\":0,\"step\":16}"),
             std::string::npos)
       << one[0];
   EXPECT_NE(one[1].find("\"verdict\":\"CLEAR\",\"exit_code\":0,"), std::string::npos) << one[1];
@@ -225,7 +225,7 @@ TEST_F(BatchRunner, CellJobsVerifyAsVerifyDoesWithTheCellsDefaultsAndNames) {
   EXPECT_NE(lines[0].find("\"link_name\":\"link_4\",\"obstacle_name\":\"post\"}"),
             std::string::npos)
       << lines[0];
-  EXPECT_NE(lines[1].find("\"verdict\":\"COLLISION\",\"exit_code\":1,\"steps\":21,"),
+  EXPECT_NE(lines[1].find("\"verdict\":\"COLLISION\",\"exit_code\":1,\"steps\":41,"),
             std::string::npos)
       << lines[1];
   EXPECT_EQ(statistics.cells_built, 1u);

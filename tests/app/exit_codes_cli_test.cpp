@@ -74,7 +74,7 @@ TEST_F(ExitCodesCli, ClearCollisionWithinToleranceAndNotQualifiedExitWithTheirCo
       directory_, verify_arguments("bench-environment-near-miss.txt", kData + "path.txt", "0.5"));
   EXPECT_EQ(error.exit_code, 4) << error.out << error.err;
   EXPECT_NE(error.out.find("verdict: ERROR\n"), std::string::npos) << error.out;
-  EXPECT_NE(error.out.find("error 7 (segment 3, step 13)"), std::string::npos) << error.out;
+  EXPECT_NE(error.out.find("error 7 (segment 3, step 21)"), std::string::npos) << error.out;
 
   const CliRun bad = run_cli(directory_, verify_arguments("environment.txt", "missing.txt", "1"));
   EXPECT_EQ(bad.exit_code, 2);

@@ -57,8 +57,8 @@ TEST_F(PandaCell, APathIntoTheShelfIsACollisionOfTheHandWithTheShelf) {
       "--cell " + kCells + "panda-shelf.yaml --path " + kCells + "panda-into-shelf.txt";
   const CliRun verify = run_cli(directory_, "verify " + inputs + " --certificate c.json");
   ASSERT_EQ(verify.exit_code, grpvss::app::kExitFinding) << verify.out << verify.err;
-  EXPECT_NE(verify.out.find("first collision at step 56\n"
-                            "interference: panda_hand_tcp hull 11 (panda_hand_sc) / shelf, "),
+  EXPECT_NE(verify.out.find("first collision at step 85\n"
+                            "interference: panda_hand_tcp hull 12 (panda_hand_sc) / shelf, "),
             std::string::npos)
       << verify.out;
   EXPECT_NE(verify.out.find("(panda_leftfinger) / shelf"), std::string::npos) << verify.out;

@@ -80,7 +80,7 @@ TEST_F(ProgramCli, AUrScriptMovejProgramIsClearAndItsCertificateAccepted) {
                              0),
             0u)
       << verify.out;
-  EXPECT_TRUE(contains(verify.out, "steps: 15  cycle time: 4.119 s")) << verify.out;
+  EXPECT_TRUE(contains(verify.out, "steps: 16  cycle time: 4.119 s")) << verify.out;
   // Every reader warning reaches the user, one per ignored line.
   EXPECT_TRUE(contains(verify.err, "ur5e-clear.script:9: not read: popup(\"placed\")\n")) << verify.err;
 
@@ -101,8 +101,9 @@ TEST_F(ProgramCli, AUrScriptMovejProgramIsClearAndItsCertificateAccepted) {
 
   const CliRun check = run_cli(dir(), "check-certificate " + ur5e("ur5e-clear.script") + " c.json");
   EXPECT_EQ(check.exit_code, grpvss::app::kExitOk) << check.out << check.err;
-  EXPECT_EQ(check.out.rfind("ACCEPTED: claim CLEAR (722 inequalities decided exactly)\n  motion "
-                            "model checked: program ur5e-clear.script (URScript), synchronized "
+  EXPECT_EQ(check.out.rfind("ACCEPTED: claim CLEAR (877 inequalities decided exactly)\n  claim "
+                            "checked: motion (CLEAR = robot + tolerance clear along the whole "
+                            "motion)\n  motion model checked: program ur5e-clear.script (URScript), synchronized "
                             "PTP, 3 motions (2 joint targets, 1 pose by IK), exact stops, IK UR "
                             "closed form\n",
                             0),
@@ -139,8 +140,8 @@ TEST_F(ProgramCli, AProgramAndItsEquivalentTrajectoryGiveTheSameCollision) {
                               0),
             0u)
       << program.out;
-  EXPECT_TRUE(contains(program.out, "interference: forearm_link hull 0 / post, steps 13-44 "
-                                    "(1.360-2.082 s), unexpanded collides at steps 16-44"))
+  EXPECT_TRUE(contains(program.out, "interference: forearm_link hull 0 / post, steps 31-66 "
+                                    "(1.359-2.082 s), unexpanded collides at steps 38-66"))
       << program.out;
   const CliRun trajectory = run_cli(dir(), "verify --cell " + kCell + " --trajectory " + kSource +
                                                "/tests/data/trajectories/ur5e-through-post.csv "
@@ -149,18 +150,21 @@ TEST_F(ProgramCli, AProgramAndItsEquivalentTrajectoryGiveTheSameCollision) {
   const auto p = nlohmann::json::parse(grpvss::test::read_text_file(dir() + "/p.json"));
   const auto t = nlohmann::json::parse(grpvss::test::read_text_file(dir() + "/t.json"));
   EXPECT_EQ(p["verdict"], t["verdict"]);
-  EXPECT_EQ(p["collision_step"], 16);
-  EXPECT_EQ(t["collision_step"], 16);
-  const nlohmann::json& p_step = p["steps"][15];
-  const nlohmann::json& t_step = t["steps"][15];
+  EXPECT_EQ(p["collision_step"], 38);
+  EXPECT_EQ(t["collision_step"], 37);
+  const nlohmann::json& p_step = p["steps"][37];
+  const nlohmann::json& t_step = t["steps"][36];
   EXPECT_EQ(p_step["segment"], 2);  // the same first colliding motion: the second movej / piece
   EXPECT_EQ(t_step["segment"], 2);
   EXPECT_EQ(p["segments"][1]["source_line"], 6);  // the movej's line
   // Steps fall at other times (trapezoids against linear interpolation) on the same joint-space
-  // line: the first colliding configurations differ only along it, by 0.016 deg of the pan joint.
-  EXPECT_NEAR(p_step["joint_values"][0].get<double>(), 63.93394655909435, 1e-9);
-  EXPECT_NEAR(t_step["joint_values"][0].get<double>(), 63.94952882827908, 1e-9);
-  for (int j = 1; j < 6; ++j) EXPECT_EQ(p_step["joint_values"][j], t_step["joint_values"][j]) << j;
+  // line: the first colliding configurations differ only along it, by 0.031 deg of the pan joint
+  // (the other joints stand still, equal up to the last bit of their degree conversion).
+  EXPECT_NEAR(p_step["joint_values"][0].get<double>(), 63.93529675564359, 1e-9);
+  EXPECT_NEAR(t_step["joint_values"][0].get<double>(), 63.90461063868187, 1e-9);
+  for (int j = 1; j < 6; ++j) {
+    EXPECT_NEAR(p_step["joint_values"][j].get<double>(), t_step["joint_values"][j].get<double>(), 1e-12) << j;
+  }
 }
 
 TEST_F(ProgramCli, AKrlE6posWithStatusAndTurnResolvesToTheJointsItWasComputedFrom) {
@@ -213,7 +217,7 @@ TEST_F(ProgramCli, UrScriptMovelLinesAreClearAndTheirCertificateAccepted) {
   const auto report = nlohmann::json::parse(grpvss::test::read_text_file(dir() + "/r.json"));
   ASSERT_EQ(report["segments"].size(), 4u);
   EXPECT_EQ(report["segments"][1]["source_line"], 11);
-  EXPECT_TRUE(contains(verify.out, "steps: 17  cycle time: 3.914 s")) << verify.out;
+  EXPECT_TRUE(contains(verify.out, "steps: 26  cycle time: 3.914 s")) << verify.out;
   const auto certificate = nlohmann::json::parse(grpvss::test::read_text_file(dir() + "/c.json"));
   const std::vector<std::vector<double>> targets = recorded_targets(certificate);
   ASSERT_EQ(targets.size(), 4u);
@@ -239,7 +243,7 @@ TEST_F(ProgramCli, AMovelAndItsEquivalentCpLinePathGiveTheSameCollision) {
   const auto t = nlohmann::json::parse(grpvss::test::read_text_file(dir() + "/t.json"));
   EXPECT_EQ(p["verdict"], "COLLISION");
   EXPECT_EQ(t["verdict"], "COLLISION");
-  EXPECT_EQ(p["collision_step"], 10);
+  EXPECT_EQ(p["collision_step"], 11);
   EXPECT_EQ(t["collision_step"], p["collision_step"]);
   const int first = p["collision_step"].get<int>() - 1;
   EXPECT_EQ(p["steps"][first]["segment"], 2);  // the movel, the IND 3 line
@@ -250,7 +254,7 @@ TEST_F(ProgramCli, AMovelAndItsEquivalentCpLinePathGiveTheSameCollision) {
                 t["steps"][first]["joint_values"][j].get<double>(), 1e-6)  // deg: 17-digit file values
         << j;
   }
-  EXPECT_TRUE(contains(program.out, "interference: wrist_1_link hull 0 / post, steps 10-17")) << program.out;
+  EXPECT_TRUE(contains(program.out, "interference: wrist_1_link hull 0 / post, steps 11-18")) << program.out;
   const CliRun check = run_cli(dir(), "check-certificate " + ur5e("ur5e-movel-post.script") + " c.json");
   EXPECT_EQ(check.exit_code, grpvss::app::kExitOk) << check.out << check.err;
   EXPECT_EQ(check.out.rfind("ACCEPTED: claim COLLISION", 0), 0u) << check.out;
@@ -259,18 +263,20 @@ TEST_F(ProgramCli, AMovelAndItsEquivalentCpLinePathGiveTheSameCollision) {
 TEST_F(ProgramCli, AKrlLinAndARapidMoveLAreVerifiedAndTheirCertificatesAccepted) {
   for (const std::string program : {"sixaxis_lin.src", "sixaxis_movel.mod"}) {
     const std::string inputs = "--cell " + kSixAxisCell + " --program " + kPrograms + program;
-    const CliRun verify = run_cli(dir(), "verify " + inputs + " --certificate c.json");
+    const std::string certificate_file = program + ".cert";
+    const CliRun verify = run_cli(dir(), "verify " + inputs + " --certificate " + certificate_file);
     ASSERT_EQ(verify.exit_code, grpvss::app::kExitOk) << verify.out << verify.err;
     EXPECT_TRUE(contains(verify.out, "5 motions (2 joint targets, 1 pose by IK, 2 straight TCP "
                                      "lines), exact stops\nverdict: CLEAR\n"))
         << verify.out;
-    const auto certificate = nlohmann::json::parse(grpvss::test::read_text_file(dir() + "/c.json"));
+    const auto certificate =
+        nlohmann::json::parse(grpvss::test::read_text_file(dir() + "/" + certificate_file));
     const std::vector<std::vector<double>> targets = recorded_targets(certificate);
     ASSERT_EQ(targets.size(), 5u);
     // Up and back down the line: the joints at its end are the pick's, (0.3, -0.4, 0.5, 0.6, -0.7, 0.2).
     const std::vector<double> pick{0.3, -0.4, 0.5, 0.6, -0.7, 0.2};
     for (std::size_t j = 0; j < 6; ++j) EXPECT_NEAR(targets[3][j], pick[j], 5e-6) << program << j;
-    const CliRun check = run_cli(dir(), "check-certificate " + inputs + " c.json");
+    const CliRun check = run_cli(dir(), "check-certificate " + inputs + " " + certificate_file);
     EXPECT_EQ(check.exit_code, grpvss::app::kExitOk) << check.out << check.err;
   }
 }

@@ -34,20 +34,21 @@ TEST(VerifySummaryCli, TheSamplesEpisodesArePrintedBetweenTheFirstCollisionAndTh
   EXPECT_EQ(run_verify("environment.txt", kData + "path.txt", directory, text), 1);
   std::filesystem::remove_all(directory);
   const std::string expected =
-      "first collision at step 4\n"
-      "interference: link 3 hull 1 / obstacle 0, steps 3-12 (8.936-13.314 s, clear by "
-      "13.727 s), unexpanded collides at steps 4-9\n"
-      "interference: link 3 hull 0 / obstacle 0, steps 4-13 (9.303-13.727 s, clear by "
-      "14.139 s), unexpanded collides at steps 5-13\n"
-      "interference: link 4 hull 0 / obstacle 0, steps 4-5 (9.303-9.729 s, clear by "
-      "10.156 s), expanded hull only\n"
-      "error 7 (segment 3, step 24)";
+      "first collision at step 16\n"
+      "interference: link 3 hull 1 / obstacle 0, steps 9-25 (8.805-13.529 s, clear by "
+      "13.942 s), unexpanded collides at steps 16-21\n"
+      "interference: link 3 hull 0 / obstacle 0, steps 16-26 (9.204-13.942 s, clear by "
+      "14.401 s), unexpanded collides at steps 17-25\n"
+      "interference: link 4 hull 0 / obstacle 0, steps 16-17 (9.204-9.627 s, clear by "
+      "10.052 s), expanded hull only\n"
+      "error 7 (segment 3, step 37)";
   EXPECT_NE(text.find(expected), std::string::npos) << text;
 }
 
 // The Table 3 PTP with the post 0.62 in. below the quill: CLEAR, and the summary says how far
-// from the obstacles the links are proven to stay along the motion — for the quill less than
-// the tolerance, which the note spells out.
+// from the obstacles the links are proven to stay along the motion. Under `--claim steps` that
+// is for the quill less than the tolerance, which the note spells out; under the default claim
+// (`motion`) it is at least the tolerance.
 // `grpvss check-certificate` derives the same clearances along the motion from the certificate
 // on its own and prints them after ACCEPTED.
 TEST(VerifySummaryCli, AClearRunStatesTheClearanceProvenAlongTheMotion) {
@@ -56,7 +57,7 @@ TEST(VerifySummaryCli, AClearRunStatesTheClearanceProvenAlongTheMotion) {
   std::ofstream(path) << "1\n1\n50.,3.\n50.,3.\n4.,0.3\n50.,3.\n";
   std::string text;
   EXPECT_EQ(run_verify("bench-environment-near-miss.txt", path, directory, text,
-                       "--certificate " + directory + "/c.json"),
+                       "--claim steps --certificate " + directory + "/c.json"),
             0);
   const std::string checked = directory + "/checked.txt";
   const std::string inputs = " --robot " + kData + "robot.txt --env " + kData +
@@ -80,6 +81,19 @@ TEST(VerifySummaryCli, AClearRunStatesTheClearanceProvenAlongTheMotion) {
                       "robot deviating from it by the tolerance is not proven clear\n"),
             std::string::npos)
       << text;
+
+  const std::string motion_directory = grpvss::test::make_temporary_directory("verify-summary");
+  const std::string motion_path = motion_directory + "/ptp.txt";
+  std::ofstream(motion_path) << "1\n1\n50.,3.\n50.,3.\n4.,0.3\n50.,3.\n";
+  EXPECT_EQ(run_verify("bench-environment-near-miss.txt", motion_path, motion_directory, text), 0);
+  std::filesystem::remove_all(motion_directory);
+  EXPECT_NE(text.find("link 4: smallest certified clearance 0.6181 at step 10 (obstacle 0); along "
+                      "the motion > 0.5083 (steps 8-9)\n"
+                      "along the whole motion every link stays farther than 0.5083 (>= the "
+                      "tolerance) from every obstacle\n"),
+            std::string::npos)
+      << text;
+  EXPECT_EQ(text.find("note: along the motion"), std::string::npos) << text;
 }
 
 }  // namespace

@@ -119,7 +119,8 @@ void expect_consistent(const VerificationResult& result) {
 
 class Ibm7545Episodes : public ::testing::Test {
  protected:
-  VerificationRun run(const std::string& environment_file, const PathProgram& program) {
+  VerificationRun run(const std::string& environment_file, const PathProgram& program,
+                      ClearClaim claim = ClearClaim::kMotion) {
     robot_ = io::read_robot_file(data("robot.txt"));
     environment_ = io::read_environment_file(data(environment_file));
     program_ = program;
@@ -127,6 +128,7 @@ class Ibm7545Episodes : public ::testing::Test {
         motion::make_kinematics_access(robot_, motion::select_ik({}, robot_, "robot.txt"));
     SetupRequest options;
     options.tolerance = 0.5;
+    options.claim = claim;
     return verify(robot_, environment_, program_, kinematics_, resolve_setup(options));
   }
   RobotModel robot_;
@@ -140,7 +142,8 @@ TEST_F(Ibm7545Episodes, TheTable3PtpOperationHasOneEpisodeOfTheQuillInThePost) {
   const RobotModel robot = io::read_robot_file(data("robot.txt"));
   const VerificationRun ptp =
       run("bench-environment.txt",
-          io::parse_path_file("1\n1\n50.,3.\n50.,3.\n4.,0.3\n50.,3.\n", "ptp.txt", robot));
+          io::parse_path_file("1\n1\n50.,3.\n50.,3.\n4.,0.3\n50.,3.\n", "ptp.txt", robot),
+          ClearClaim::kSteps);  // the step rule at the steps: the claim motion steps finer
   ASSERT_EQ(ptp.result.verdict, Verdict::kCollision);
   expect_consistent(ptp.result);
   ASSERT_EQ(ptp.result.interference_episodes.size(), 1u);

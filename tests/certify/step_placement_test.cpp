@@ -45,7 +45,9 @@ TEST(StepPlacement, TheApproachToAContactDoesNotCreep) {
 // now has the jump located by bisection on the model (IK and FK only), and the next trial
 // lands just before it.
 TEST(StepPlacement, AJointJumpAheadIsLocatedWithoutCreepingUpToIt) {
-  const test::Ibm7545Run cell = test::verify_ibm7545_files("environment.txt", "path.txt");
+  // The placement of the `steps` claim's rule (the `motion` claim's steps are finer).
+  const test::Ibm7545Run cell =
+      test::verify_ibm7545_files("environment.txt", "path.txt", ClearClaim::kSteps);
   const VerificationRun& run = cell.run;
   ASSERT_EQ(run.result.errors.size(), 1u);
   const PathError& error = run.result.errors.front();
@@ -70,7 +72,9 @@ TEST(StepPlacement, AJointJumpAheadIsLocatedWithoutCreepingUpToIt) {
 // row, at the basic resolution, before). Every other link is still held to the basic
 // resolution or covered by its clearances on that step.
 TEST(StepPlacement, ACollisionIsCrossedWithoutSamplingTheCollidingPair) {
-  const test::Ibm7545Run cell = test::verify_ibm7545("bench-environment.txt", test::kTable3PtpPath);
+  // The `steps` claim: under `motion` the approach to the post is held to the tolerance.
+  const test::Ibm7545Run cell =
+      test::verify_ibm7545("bench-environment.txt", test::kTable3PtpPath, ClearClaim::kSteps);
   const VerificationRun& run = cell.run;
   ASSERT_EQ(run.result.verdict, Verdict::kCollision);
   ASSERT_TRUE(run.result.collision_step.has_value());
