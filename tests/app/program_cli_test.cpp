@@ -51,6 +51,11 @@ bool contains(const std::string& text, const std::string& part) {
   return text.find(part) != std::string::npos;
 }
 
+// The summary's first lines: the motion model, then the verdict.
+void expect_summary_starts_with(const CliRun& run, const std::string& lines) {
+  EXPECT_EQ(run.out.rfind(lines, 0), 0u) << run.out;
+}
+
 std::string ur5e(const std::string& program) {
   return "--cell " + kCell + " --program " + kPrograms + program;
 }
@@ -75,11 +80,8 @@ std::vector<std::vector<double>> recorded_targets(const nlohmann::json& certific
 TEST_F(ProgramCli, AUrScriptMovejProgramIsClearAndItsCertificateAccepted) {
   const CliRun verify = run_cli(dir(), "verify " + ur5e("ur5e-clear.script") + " --certificate c.json");
   ASSERT_EQ(verify.exit_code, grpvss::app::kExitOk) << verify.out << verify.err;
-  EXPECT_EQ(verify.out.rfind("motion: program ur5e-clear.script (URScript), synchronized PTP, 3 "
-                             "motions (2 joint targets, 1 pose by IK), exact stops\nverdict: CLEAR\n",
-                             0),
-            0u)
-      << verify.out;
+  expect_summary_starts_with(verify, "motion: program ur5e-clear.script (URScript), synchronized PTP, 3 "
+                                     "motions (2 joint targets, 1 pose by IK), exact stops\nverdict: CLEAR\n");
   EXPECT_TRUE(contains(verify.out, "steps: 16  cycle time: 4.119 s")) << verify.out;
   // Every reader warning reaches the user, one per ignored line.
   EXPECT_TRUE(contains(verify.err, "ur5e-clear.script:9: not read: popup(\"placed\")\n")) << verify.err;
@@ -134,12 +136,9 @@ TEST_F(ProgramCli, AProgramAndItsEquivalentTrajectoryGiveTheSameCollision) {
   const CliRun program =
       run_cli(dir(), "verify " + ur5e("ur5e-through-post.script") + " --json p.json");
   ASSERT_EQ(program.exit_code, grpvss::app::kExitFinding) << program.out << program.err;
-  EXPECT_EQ(program.out.rfind("motion: program ur5e-through-post.script (URScript), synchronized "
-                              "PTP, 2 motions (2 joint targets, 0 poses by IK), exact stops\n"
-                              "verdict: COLLISION\n",
-                              0),
-            0u)
-      << program.out;
+  expect_summary_starts_with(program, "motion: program ur5e-through-post.script (URScript), synchronized "
+                                      "PTP, 2 motions (2 joint targets, 0 poses by IK), exact stops\n"
+                                      "verdict: COLLISION\n");
   EXPECT_TRUE(contains(program.out, "interference: forearm_link hull 0 / post, steps 31-66 "
                                     "(1.359-2.082 s), unexpanded collides at steps 38-66"))
       << program.out;
@@ -171,11 +170,8 @@ TEST_F(ProgramCli, AKrlE6posWithStatusAndTurnResolvesToTheJointsItWasComputedFro
   const CliRun verify = run_cli(dir(), "verify --cell " + kSixAxisCell + " --program " + kPrograms +
                                            "sixaxis_ptp.src --certificate c.json");
   ASSERT_EQ(verify.exit_code, grpvss::app::kExitOk) << verify.out << verify.err;
-  EXPECT_EQ(verify.out.rfind("motion: program sixaxis_ptp.src (KUKA KRL), synchronized PTP, 3 "
-                             "motions (2 joint targets, 1 pose by IK), exact stops\nverdict: CLEAR\n",
-                             0),
-            0u)
-      << verify.out;
+  expect_summary_starts_with(verify, "motion: program sixaxis_ptp.src (KUKA KRL), synchronized PTP, 3 "
+                                     "motions (2 joint targets, 1 pose by IK), exact stops\nverdict: CLEAR\n");
   // XPICK was computed from q = (0.3, -0.4, 0.5, 0.6, -0.7, 0.2) by the URDF's own FK, through
   // the 100 mm tool and the base at (200 mm, 0, 0) turned by 90 deg (4 decimals of mm and deg).
   const auto certificate = nlohmann::json::parse(grpvss::test::read_text_file(dir() + "/c.json"));
@@ -208,12 +204,9 @@ TEST_F(ProgramCli, UrScriptMovelLinesAreClearAndTheirCertificateAccepted) {
   const CliRun verify =
       run_cli(dir(), "verify " + ur5e("ur5e-movel-clear.script") + " --certificate c.json --json r.json");
   ASSERT_EQ(verify.exit_code, grpvss::app::kExitOk) << verify.out << verify.err;
-  EXPECT_EQ(verify.out.rfind("motion: program ur5e-movel-clear.script (URScript), synchronized PTP "
-                             "and CP lines, 4 motions (1 joint target, 0 poses by IK, 3 straight "
-                             "TCP lines), exact stops\nverdict: CLEAR\n",
-                             0),
-            0u)
-      << verify.out;
+  expect_summary_starts_with(verify, "motion: program ur5e-movel-clear.script (URScript), synchronized PTP "
+                                     "and CP lines, 4 motions (1 joint target, 0 poses by IK, 3 straight "
+                                     "TCP lines), exact stops\nverdict: CLEAR\n");
   const auto report = nlohmann::json::parse(grpvss::test::read_text_file(dir() + "/r.json"));
   ASSERT_EQ(report["segments"].size(), 4u);
   EXPECT_EQ(report["segments"][1]["source_line"], 11);
@@ -338,11 +331,8 @@ TEST_F(ProgramCli, TurningLinesUnderAnotherToolCircularAndBlendedMotionsAreRefus
 TEST_F(ProgramCli, TrajectoryPrintsTheProgramsMotion) {
   const CliRun run = run_cli(dir(), "trajectory " + ur5e("ur5e-through-post.script"));
   ASSERT_EQ(run.exit_code, grpvss::app::kExitOk) << run.out << run.err;
-  EXPECT_EQ(run.out.rfind("motion: program ur5e-through-post.script (URScript), synchronized PTP, "
-                          "2 motions (2 joint targets, 0 poses by IK), exact stops\n",
-                          0),
-            0u)
-      << run.out;
+  expect_summary_starts_with(run, "motion: program ur5e-through-post.script (URScript), synchronized PTP, "
+                                  "2 motions (2 joint targets, 0 poses by IK), exact stops\n");
   EXPECT_TRUE(contains(run.out, "PTP TIMING: SYNCHRONIZED")) << run.out;
   EXPECT_TRUE(contains(run.out, "ENDING JOINT VALUES    100.00   -90.00    90.00     0.00     0.00     0.00"))
       << run.out;
