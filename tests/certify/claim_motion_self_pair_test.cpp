@@ -2,11 +2,13 @@
 // docs/verification.md#claim): the Panda of ../shared/robots (tests/data/cells/panda-self.yaml,
 // tolerance 0.005 m) folding its hand towards its upper arm and stopping just short of touching
 // (tests/data/cells/panda-grazing-fold.txt: elbow to -146 degrees, wrist to 36 degrees; -147 /
-// 37 already touches, tests/certify/panda_self_collision_test.cpp). The hand's capsule ends
+// 37 already touches, tests/certify/panda_self_collision_test.cpp). The hand's capsule passes
 // closer than the tolerance to the upper arm's: WITHIN_TOLERANCE with the claim `motion`,
 // naming both links; CLEAR with the claim `steps` (the nominal hulls never meet); both
 // certificates accepted, and the `steps` certificate relabelled `motion` rejected.
+#include <algorithm>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -50,7 +52,7 @@ std::string first_failure(const CheckReport& report) {
   return report.failures.empty() ? "" : report.failures.front();
 }
 
-TEST(ClaimMotionSelfPair, TheHandEndingWithinTheToleranceOfTheUpperArmIsWithinTolerance) {
+TEST(ClaimMotionSelfPair, TheHandPassingWithinTheToleranceOfTheUpperArmIsWithinTolerance) {
   const PandaRun r = run_grazing_fold(ClearClaim::kMotion);
   const VerificationResult& result = r.verified.result;
   ASSERT_EQ(result.verdict, Verdict::kWithinTolerance);
@@ -62,7 +64,25 @@ TEST(ClaimMotionSelfPair, TheHandEndingWithinTheToleranceOfTheUpperArmIsWithinTo
   EXPECT_EQ(link_label(r.cell.robot, shortfall.other_link), "panda_hand_tcp");
   EXPECT_EQ(shortfall.obstacle, -1);
   EXPECT_LT(shortfall.motion_clearance, r.cell.tolerance);
-  EXPECT_GE(shortfall.step, 1);
+  EXPECT_GT(shortfall.motion_clearance, 0.0);
+  EXPECT_EQ(shortfall.step, 53);
+  EXPECT_EQ(result.steps.size(), 67u);  // 22 with the claim `steps`: the steps close in on the fold
+  // The certificate: the hand / upper arm hulls are proven separated at every step, and their
+  // proven distance falls below the tolerance (to 0.0035 m) on the way.
+  const std::vector<SelfCollisionPair>& pairs = r.cell.robot.self_collision_pairs;
+  double closest = 1.0;
+  for (const SegmentCertificate& segment : r.verified.certificate.segments) {
+    for (const StepCertificate& step : segment.steps) {
+      ASSERT_EQ(step.self_pairs.size(), pairs.size());
+      for (std::size_t p = 0; p < pairs.size(); ++p) {
+        if (self_pair_label(r.cell.robot, pairs[p]) != "panda_hand_sc / panda_link2_sc") continue;
+        EXPECT_TRUE(step.self_pairs[p].separated) << "step " << step.step;
+        closest = std::min(closest, step.self_pairs[p].lower_bound);
+      }
+    }
+  }
+  EXPECT_GT(closest, 0.0035);
+  EXPECT_LT(closest, r.cell.tolerance);
   EXPECT_EQ(r.verified.certificate.claim, Verdict::kWithinTolerance);
   const CheckReport report = check(r, r.verified.certificate);
   EXPECT_TRUE(report.accepted) << first_failure(report);
@@ -77,6 +97,7 @@ TEST(ClaimMotionSelfPair, WithTheClaimStepsTheGrazingFoldIsClear) {
   const VerificationResult& result = r.verified.result;
   ASSERT_EQ(result.verdict, Verdict::kClear);
   EXPECT_FALSE(result.tolerance_shortfall.has_value());
+  EXPECT_EQ(result.steps.size(), 22u);
   const CheckReport report = check(r, r.verified.certificate);
   EXPECT_TRUE(report.accepted) << first_failure(report);
   EXPECT_EQ(report.claim, Verdict::kClear);
