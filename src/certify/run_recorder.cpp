@@ -105,8 +105,8 @@ void RunRecorder::record_step(const AcceptedStep& accepted) {
   if (hooks_.keep_steps) result_.steps.push_back(std::move(step));
 }
 
-// The claim `motion` needs g >= Delta for every hull in every transition, decided on the same
-// rounded-down g the reports print (the checker decides it again exactly).
+// The claim `motion` needs g >= Delta for every hull and self pair in every transition, decided
+// on the same rounded-down g the reports print (the checker decides it again exactly).
 // proof: proofs/two-ball-cover.md#lemma-tolerance-along-motion
 void RunRecorder::note_tolerance_shortfall(const AcceptedStep& accepted, int step_index) {
   for (std::size_t i = 0; i < cell_.hulls().size(); ++i) {
@@ -119,6 +119,27 @@ void RunRecorder::note_tolerance_shortfall(const AcceptedStep& accepted, int ste
     shortfall.step = step_index;
     shortfall.link = cell_.hulls()[i].link;
     shortfall.obstacle = from.radius <= to.radius ? from.nearest_obstacle : to.nearest_obstacle;
+    shortfall.motion_clearance = std::max(0.0, kept);
+    result_.tolerance_shortfall = shortfall;
+    return;
+  }
+  note_self_pair_shortfall(accepted, step_index);
+}
+
+// Every self pair keeps a gap g >= Delta, the same rounded-down g from d_k, d_{k+1} and the
+// relative bound. proof: proofs/two-ball-cover.md#corollary-self-tolerance-along-motion
+void RunRecorder::note_self_pair_shortfall(const AcceptedStep& accepted, int step_index) {
+  const std::vector<SelfPairHulls>& pairs = cell_.self_pairs();
+  const TransitionRecord& transition = accepted.transition;
+  for (std::size_t p = 0; p < pairs.size() && p < transition.self_pair_motion_bounds.size(); ++p) {
+    const double kept = motion_clearance_lower_bound(accepted.from.self_pairs[p].distance,
+                                                     accepted.to.self_pairs[p].distance,
+                                                     transition.self_pair_motion_bounds[p]);
+    if (kept >= cell_.tolerance()) continue;
+    ToleranceShortfall shortfall;
+    shortfall.step = step_index;
+    shortfall.link = cell_.hulls()[static_cast<std::size_t>(pairs[p].a)].link;
+    shortfall.other_link = cell_.hulls()[static_cast<std::size_t>(pairs[p].b)].link;
     shortfall.motion_clearance = std::max(0.0, kept);
     result_.tolerance_shortfall = shortfall;
     return;

@@ -42,6 +42,8 @@ class RunRecorder {
   void track_summaries(const StepRecord& step);
   /// Claim `motion`: keeps the first transition whose motion clearance g is below Delta.
   void note_tolerance_shortfall(const AcceptedStep& accepted, int step_index);
+  /// The same for the self pairs' gaps (after the hulls of the transition).
+  void note_self_pair_shortfall(const AcceptedStep& accepted, int step_index);
 
   const RobotCell& cell_;
   bool certified_;

@@ -179,6 +179,7 @@ double CertifiedMarch::predicted_ptp_step(const SegmentPath& path, double max_st
   }
   for (std::size_t p = 0; p < current_.self_pairs.size(); ++p) {
     hulls[hull_count + p].radius = current_.self_pairs[p].distance;
+    hulls[hull_count + p].held_margin = held ? 2.0 * cell_.tolerance() : 0.0;
   }
   for (std::size_t i = 0; has_trend && i < hulls.size(); ++i) {
     hulls[i].previous_radius = previous_radii_[i];

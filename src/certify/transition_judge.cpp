@@ -105,19 +105,30 @@ TransitionRecord judge_transition(const RobotCell& cell, const ProbeResult& from
 // g >= Delta holds when M <= r_k + r_{k+1} - 2 Delta or M <= max(r_k, r_{k+1}) - Delta; each
 // rounded down, so that "bound <= allowance" in double implies it exactly.
 // proof: proofs/two-ball-cover.md#lemma-tolerance-along-motion
+double held_allowance_down(double radius_k, double radius_k1, double tolerance) {
+  namespace r = geometry::rounding;
+  const double balanced = r::nearest_mode_sub_down(r::nearest_mode_add_down(radius_k, radius_k1),
+                                                   2.0 * tolerance);
+  const double one_sided = r::nearest_mode_sub_down(std::max(radius_k, radius_k1), tolerance);
+  return std::max(balanced, one_sided);
+}
+
+// Hulls against the obstacles, and self pairs (their distances d_k, d_{k+1} and relative bound)
+// to a gap of Delta. proof: proofs/two-ball-cover.md#lemma-tolerance-along-motion,
+// proofs/two-ball-cover.md#corollary-self-tolerance-along-motion
 TransitionRecord held_to_tolerance(const TransitionRecord& nominal, const ProbeResult& from,
                                    const ProbeResult& to, double tolerance) {
-  namespace r = geometry::rounding;
   TransitionRecord held = nominal;
   for (std::size_t i = 0; i < held.hull_allowances.size(); ++i) {
     if (from.hulls[i].expanded_interferes || to.hulls[i].expanded_interferes) continue;
-    const double r_k = from.hulls[i].radius;
-    const double r_k1 = to.hulls[i].radius;
-    const double balanced = r::nearest_mode_sub_down(r::nearest_mode_add_down(r_k, r_k1),
-                                                     2.0 * tolerance);
-    const double one_sided = r::nearest_mode_sub_down(std::max(r_k, r_k1), tolerance);
-    held.hull_allowances[i] = std::max(balanced, one_sided);
+    held.hull_allowances[i] =
+        held_allowance_down(from.hulls[i].radius, to.hulls[i].radius, tolerance);
     if (!(held.hull_motion_bounds[i] <= held.hull_allowances[i])) held.certified = false;
+  }
+  for (std::size_t p = 0; p < held.self_pair_allowances.size(); ++p) {
+    held.self_pair_allowances[p] = held_allowance_down(from.self_pairs[p].distance,
+                                                       to.self_pairs[p].distance, tolerance);
+    if (!(held.self_pair_motion_bounds[p] <= held.self_pair_allowances[p])) held.certified = false;
   }
   return held;
 }

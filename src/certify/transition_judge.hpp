@@ -30,12 +30,18 @@ TransitionRecord judge_transition(const RobotCell& cell, const ProbeResult& from
 void judge_self_pairs(const RobotCell& cell, const ProbeResult& from, const ProbeResult& to,
                       TransitionRecord& record);
 
+/// max(r_k + r_{k+1} - 2 Delta, max(r_k, r_{k+1}) - Delta), each side rounded down: a motion
+/// bound at most this keeps g >= Delta. proof: proofs/two-ball-cover.md#lemma-tolerance-along-motion
+double held_allowance_down(double radius_k, double radius_k1, double tolerance);
+
 /// \brief Claim `motion` (docs/verification.md#claim): the transition as the step decision aims
 /// at it. Every hull whose expanded hull is clear at both ends is held to g >= Delta, i.e. to
-/// the allowance max(r_k + r_{k+1} - 2 Delta, max(r_k, r_{k+1}) - Delta) rounded down; the result
+/// the allowance held_allowance_down(r_k, r_{k+1}, Delta), and every self pair to a gap of
+/// Delta, i.e. its relative bound to held_allowance_down(d_k, d_{k+1}, Delta); the result
 /// is certified when `nominal` is and every held bound is within. The allowances recorded in the
-/// certificate stay r_k + r_{k+1} (`nominal`); the recorder and the checker decide g >= Delta.
-/// proof: proofs/two-ball-cover.md#lemma-tolerance-along-motion
+/// certificate stay r_k + r_{k+1}, d_k + d_{k+1} (`nominal`); the recorder and the checker decide
+/// g >= Delta. proof: proofs/two-ball-cover.md#lemma-tolerance-along-motion,
+/// proofs/two-ball-cover.md#corollary-self-tolerance-along-motion
 TransitionRecord held_to_tolerance(const TransitionRecord& nominal, const ProbeResult& from,
                                    const ProbeResult& to, double tolerance);
 

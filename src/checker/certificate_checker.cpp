@@ -268,7 +268,8 @@ void Checker::check_segment(const SegmentCertificate& segment,
                                            std::to_string(step.step);
       transitions_->check(*previous, step, previous_radius, radius, previous_placed, placed, cp,
                           where_transition, piece_variation(planned, *previous, step));
-      check_self_pair_transition(*cell_, *previous, step, previous->to_next, transitions_->hull_bounds(),
+      check_self_pair_transition(*cell_, certificate_, *previous, step, previous->to_next,
+                                 transitions_->hull_bounds(),
                                  previous_distance, distance, ledger_, facts_, where_transition);
     }
     previous_radius = std::move(radius);

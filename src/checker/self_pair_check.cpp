@@ -1,5 +1,9 @@
 #include "self_pair_check.hpp"
 
+#include <algorithm>
+
+#include <fmt/core.h>
+
 #include "grpvss/exact/exact_contact.hpp"
 
 namespace grpvss::certify {
@@ -21,6 +25,30 @@ Rational relative_bound(const CheckedCell& cell, const CheckedHull& a, const Che
                  : increment;
   }
   return bound;
+}
+
+// The gap g = max((d_k + d_{k+1} - M)/2, max(d_k, d_{k+1}) - M), at least 0, exactly.
+// proof: proofs/two-ball-cover.md#corollary-self-tolerance-along-motion
+Rational kept_gap(const Rational& distance_from, const Rational& distance_to, const Rational& bound) {
+  const Rational balanced = (distance_from + distance_to - bound) / 2;
+  const Rational one_sided = std::max(distance_from, distance_to) - bound;
+  return std::max(Rational(0), std::max(balanced, one_sided));
+}
+
+// Claim `motion`: the pair keeps a gap of at least Delta; a CLEAR certificate that rests on
+// less is rejected, and any shortfall makes WITHIN_TOLERANCE consistent (claim_check.cpp).
+void hold_gap_to_tolerance(const CheckedCell& cell, const Certificate& header, std::size_t p,
+                           const Rational& kept, CheckLedger& ledger, ClaimFacts& facts,
+                           const std::string& where) {
+  const Rational tolerance = exact(header.tolerance);
+  if (kept < tolerance) facts.any_tolerance_shortfall = true;
+  if (header.claim != Verdict::kClear || header.clear_claim != ClearClaim::kMotion) return;
+  ledger.decided();
+  if (kept >= tolerance) return;
+  ledger.fail(fmt::format("{}: the gap kept along the motion {:.6g} is below the tolerance {} "
+                          "(claim motion: robot + tolerance clear of itself along the whole "
+                          "motion)",
+                          pair_where(cell, p, where), kept.get_d(), header.tolerance));
 }
 
 }  // namespace
@@ -57,8 +85,9 @@ std::vector<Rational> check_self_pair_evidence(
 }
 
 // proof: proofs/two-ball-cover.md#lemma-relative-motion
-void check_self_pair_transition(const CheckedCell& cell, const StepCertificate& from,
-                                const StepCertificate& to, const TransitionRecord& claimed,
+void check_self_pair_transition(const CheckedCell& cell, const Certificate& header,
+                                const StepCertificate& from, const StepCertificate& to,
+                                const TransitionRecord& claimed,
                                 const std::vector<std::optional<Rational>>& hull_bounds,
                                 const std::vector<Rational>& distance_from,
                                 const std::vector<Rational>& distance_to, CheckLedger& ledger,
@@ -78,6 +107,8 @@ void check_self_pair_transition(const CheckedCell& cell, const StepCertificate& 
         bound = *hull_bounds[a] + *hull_bounds[b];
       }
       proven = bound < distance_from[p] + distance_to[p];
+      hold_gap_to_tolerance(cell, header, p, kept_gap(distance_from[p], distance_to[p], bound),
+                            ledger, facts, where);
     }
     if (proven) continue;
     if (claimed.certified) {

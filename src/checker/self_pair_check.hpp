@@ -1,7 +1,8 @@
 #pragma once
 // Self-collision in the certificate: at every step each self pair's separating slab is decided
 // exactly on the two raw hulls as the checker places them, giving a distance lower bound d;
-// across every transition M_a + M_b < d_k + d_{k+1} is decided exactly.
+// across every transition M_a + M_b < d_k + d_{k+1} is decided exactly, and with the claim
+// `motion` the gap kept along the motion against the tolerance.
 // proof: proofs/two-ball-cover.md#lemma-relative-motion, proofs/cell-geometry.md#lemma-geometry-error
 
 #include <optional>
@@ -27,9 +28,13 @@ std::vector<Rational> check_self_pair_evidence(
 /// hulls' verified motion bounds (`hull_bounds`, nullopt where none is proven), M_b|a the exact
 /// joint-sum bound of hull b over joints a+1..b (its motion in link a's frame). A failing pair
 /// fails the ledger when the transition claims to be certified; either way it makes it
-/// uncertified in `facts`.
-void check_self_pair_transition(const CheckedCell& cell, const StepCertificate& from,
-                                const StepCertificate& to, const TransitionRecord& claimed,
+/// uncertified in `facts`. The pair's gap along the motion,
+/// g = max((d_k + d_{k+1} - M)/2, max(d_k, d_{k+1}) - M), is held to the tolerance: g < Delta
+/// sets facts.any_tolerance_shortfall, and fails the ledger when `header` claims CLEAR with
+/// the claim `motion`. proof: proofs/two-ball-cover.md#corollary-self-tolerance-along-motion
+void check_self_pair_transition(const CheckedCell& cell, const Certificate& header,
+                                const StepCertificate& from, const StepCertificate& to,
+                                const TransitionRecord& claimed,
                                 const std::vector<std::optional<Rational>>& hull_bounds,
                                 const std::vector<Rational>& distance_from,
                                 const std::vector<Rational>& distance_to, CheckLedger& ledger,

@@ -302,6 +302,8 @@ class JsonWriter {
           {"link", shortfall.link},
           {"obstacle", shortfall.obstacle >= 0 ? json(shortfall.obstacle) : json(nullptr)},
           {"motion_clearance", shortfall.motion_clearance}};
+      // A self pair (proofs/two-ball-cover.md#corollary-self-tolerance-along-motion).
+      if (shortfall.other_link >= 0) report["tolerance_shortfall"]["other_link"] = shortfall.other_link;
     }
     return report;
   }

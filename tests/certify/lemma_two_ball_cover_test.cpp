@@ -245,4 +245,68 @@ TEST(LemmaTwoBallCover, TheToleranceRuleIsTightForAStraightPass) {
   EXPECT_LT(closest - 1.0625, 0.0);  // Delta = 1.0625: it reaches into it
 }
 
+// proofs/two-ball-cover.md#corollary-self-tolerance-along-motion: two bodies both moving (each
+// translated along a random polyline, so every point's path is as long as the polyline), the
+// distances d_k, d_k1 at the ends shrunk at random and M the sum of the two path lengths. Where
+// (T) holds for Delta (drawn up to g), the bodies stay at least Delta apart at every sample.
+TEST(LemmaTwoBallCover, TwoMovingBodiesKeepTheGapWhenTheToleranceRuleHolds) {
+  std::mt19937 rng(2014);
+  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  int held = 0;
+  long long checked = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    std::vector<Vec3> body_a(1 + trial % 4), body_b(1 + trial % 5);
+    for (Vec3& p : body_a) p = {0.3 * u(rng), 0.3 * u(rng), 0.3 * u(rng)};
+    for (Vec3& p : body_b) p = {3.0 + 0.3 * u(rng), 0.3 * u(rng), 0.3 * u(rng)};
+    const std::vector<Vec3> path_a = densify(random_polyline(rng, 1 + trial % 3), 40);
+    const std::vector<Vec3> path_b = densify(random_polyline(rng, 1 + trial % 2), 40);
+    const auto gap_at = [&](double t) {  // t in [0, 1] along both densified paths
+      const Vec3& shift_a = path_a[static_cast<std::size_t>(std::lround(t * (path_a.size() - 1)))];
+      const Vec3& shift_b = path_b[static_cast<std::size_t>(std::lround(t * (path_b.size() - 1)))];
+      double d = std::numeric_limits<double>::infinity();
+      for (const Vec3& a : body_a) {
+        for (const Vec3& b : body_b) {
+          d = std::min(d, lemma_ref::norm(lemma_ref::sub(lemma_ref::add(a, lemma_ref::sub(shift_a, path_a.front())),
+                                                         lemma_ref::add(b, lemma_ref::sub(shift_b, path_b.front())))));
+        }
+      }
+      return d;
+    };
+    const double d_k = gap_at(0.0) * (trial % 3 == 0 ? 1.0 : 0.6 + 0.4 * u01(rng));
+    const double d_k1 = gap_at(1.0) * (trial % 3 == 1 ? 1.0 : 0.6 + 0.4 * u01(rng));
+    const double relative_motion = length_of(path_a) + length_of(path_b);
+    const double g = motion_clearance(d_k, d_k1, relative_motion);
+    if (!(g > 0.0)) continue;
+    const double delta = g * (trial % 4 == 0 ? 1.0 : u01(rng));  // (T) holds, at times tightly
+    ASSERT_TRUE(relative_motion <= (d_k - delta) + (d_k1 - delta) + 1e-12 ||
+                relative_motion <= std::max(d_k, d_k1) - delta + 1e-12);
+    ++held;
+    // Samples of one joint motion: both bodies move along their paths as t goes 0 -> 1.
+    for (int k = 0; k <= 240; ++k) {
+      ASSERT_GE(gap_at(k / 240.0), delta - 1e-12) << "trial " << trial << " k " << k;
+      ++checked;
+    }
+  }
+  EXPECT_GT(held, 100);
+  EXPECT_GT(checked, 20000);
+}
+
+// Tight for two moving bodies too: a (at 0) goes 0.5 towards b (at 2) and back, b 0.5 towards a
+// and back: M = 1 + 1 = 2, d_k = d_k1 = 2, g = (2 + 2 - 2) / 2 = 1, and the closest approach is
+// exactly 1 at the middle; (T) holds for Delta = 1 and fails for any larger Delta.
+TEST(LemmaTwoBallCover, TheSelfToleranceRuleIsTightForTwoPointsApproachingEachOther) {
+  const double d = 2.0, relative_motion = 2.0;
+  EXPECT_TRUE(relative_motion <= (d - 1.0) + (d - 1.0));
+  EXPECT_FALSE(relative_motion <= (d - 1.0625) + (d - 1.0625) || relative_motion <= d - 1.0625);
+  double closest = std::numeric_limits<double>::infinity();
+  for (int k = 0; k <= 200; ++k) {
+    const double out = 0.5 - std::abs(k - 100) / 200.0;  // 0 -> 0.5 -> 0
+    const Vec3 a{out, 0.0, 0.0}, b{2.0 - out, 0.0, 0.0};
+    closest = std::min(closest, lemma_ref::norm(lemma_ref::sub(b, a)));
+  }
+  EXPECT_EQ(closest, 1.0);  // a expanded by Delta = 1 reaches b exactly
+  EXPECT_LT(closest - 1.0625, 0.0);  // Delta = 1.0625: it reaches past b
+}
+
 }  // namespace

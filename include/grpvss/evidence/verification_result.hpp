@@ -42,11 +42,14 @@ enum class ClearClaim {
 
 /// Where a CLEAR run with claim `motion` fell short of it: the first transition (ending at
 /// `step`) whose motion clearance g of a hull of `link` against `obstacle` (the nearer end's
-/// nearest obstacle; -1 unknown) is below Delta, although the nominal rule held.
+/// nearest obstacle; -1 unknown) is below Delta, although the nominal rule held. For a self
+/// pair (proofs/two-ball-cover.md#corollary-self-tolerance-along-motion) `other_link` names the
+/// pair's second link and `obstacle` is -1; for an obstacle `other_link` is -1.
 struct ToleranceShortfall {
   int step = 0;
   int link = 0;
   int obstacle = -1;
+  int other_link = -1;
   double motion_clearance = 0.0;  ///< g, rounded down
 };
 

@@ -118,8 +118,9 @@ std::string verdict_summary(const certify::VerificationResult& result, const Mod
                         "{}): the nominal robot is proven clear there, the robot + tolerance "
                         "is not\n",
                         names.link(shortfall.link),
-                        shortfall.obstacle >= 0 ? names.obstacle(shortfall.obstacle)
-                                                : std::string("its nearest obstacle"),
+                        shortfall.other_link >= 0   ? names.link(shortfall.other_link)
+                        : shortfall.obstacle >= 0 ? names.obstacle(shortfall.obstacle)
+                                                  : std::string("its nearest obstacle"),
                         report::format_lower_bound(shortfall.motion_clearance, 4),
                         shortfall.step - 1, shortfall.step, result.tolerance);
   }
