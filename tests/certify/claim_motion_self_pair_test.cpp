@@ -17,35 +17,22 @@
 #include "grpvss/checker/certificate_checker.hpp"
 #include "grpvss/io/path_file.hpp"
 #include "grpvss/motion/kinematics_adapter.hpp"
+#include "support/panda_self_run.hpp"
 #include "support/urdf_cell_oracle.hpp"
 
 namespace grpvss::certify {
 namespace {
 
-const std::string kCells = std::string(GRPVSS_SOURCE_DIR) + "/tests/data/cells/";
 
-struct PandaRun {
-  cell::LoadedCell cell;
-  PathProgram program;
-  motion::KinematicsAccess kinematics;
-  VerificationRun verified;
-};
+using test::PandaSelfRun;
 
 // As `grpvss verify --cell panda-self.yaml --path panda-grazing-fold.txt --claim <claim>`.
-PandaRun run_grazing_fold(ClearClaim claim) {
-  PandaRun r{cell::load_cell(kCells + "panda-self.yaml"), {}, {}, {}};
-  r.program = io::read_path_file(kCells + "panda-grazing-fold.txt", r.cell.robot);
-  r.kinematics = motion::make_kinematics_access(r.cell.robot, motion::select_ik({}, r.cell.robot, "panda"));
-  SetupRequest request;
-  request.tolerance = r.cell.tolerance;
-  request.motion.timing = motion::PtpTiming::kSynchronized;
-  request.claim = claim;
-  r.verified = verify(r.cell.robot, r.cell.environment, r.program, r.kinematics, resolve_setup(request));
-  return r;
+PandaSelfRun run_grazing_fold(ClearClaim claim) {
+  return test::run_panda_self("panda-grazing-fold.txt", claim);
 }
 
-CheckReport check(const PandaRun& r, const Certificate& certificate) {
-  return check_certificate(r.cell.robot, r.cell.environment, r.program, r.kinematics, certificate);
+CheckReport check(const PandaSelfRun& r, const Certificate& certificate) {
+  return test::check_panda_self(r, certificate);
 }
 
 std::string first_failure(const CheckReport& report) {
@@ -53,7 +40,7 @@ std::string first_failure(const CheckReport& report) {
 }
 
 TEST(ClaimMotionSelfPair, TheHandPassingWithinTheToleranceOfTheUpperArmIsWithinTolerance) {
-  const PandaRun r = run_grazing_fold(ClearClaim::kMotion);
+  const PandaSelfRun r = run_grazing_fold(ClearClaim::kMotion);
   const VerificationResult& result = r.verified.result;
   ASSERT_EQ(result.verdict, Verdict::kWithinTolerance);
   EXPECT_TRUE(result.self_collision_episodes.empty());  // the hulls never meet
@@ -93,7 +80,7 @@ TEST(ClaimMotionSelfPair, TheHandPassingWithinTheToleranceOfTheUpperArmIsWithinT
 }
 
 TEST(ClaimMotionSelfPair, WithTheClaimStepsTheGrazingFoldIsClear) {
-  const PandaRun r = run_grazing_fold(ClearClaim::kSteps);
+  const PandaSelfRun r = run_grazing_fold(ClearClaim::kSteps);
   const VerificationResult& result = r.verified.result;
   ASSERT_EQ(result.verdict, Verdict::kClear);
   EXPECT_FALSE(result.tolerance_shortfall.has_value());
@@ -106,7 +93,7 @@ TEST(ClaimMotionSelfPair, WithTheClaimStepsTheGrazingFoldIsClear) {
 // The `steps` certificate relabelled `motion`: a CLEAR certificate whose self pair keeps less
 // than the tolerance along the motion is rejected, the failure naming the steps and the pair.
 TEST(ClaimMotionSelfPair, TheCheckerRejectsAClearMotionCertificateWhosePairKeepsLessThanDelta) {
-  const PandaRun r = run_grazing_fold(ClearClaim::kSteps);
+  const PandaSelfRun r = run_grazing_fold(ClearClaim::kSteps);
   ASSERT_EQ(r.verified.certificate.claim, Verdict::kClear);
   Certificate relabelled = r.verified.certificate;
   relabelled.clear_claim = ClearClaim::kMotion;

@@ -14,39 +14,22 @@
 #include "grpvss/checker/certificate_checker.hpp"
 #include "grpvss/io/path_file.hpp"
 #include "grpvss/motion/kinematics_adapter.hpp"
+#include "support/panda_self_run.hpp"
 #include "support/urdf_cell_oracle.hpp"
 
 namespace grpvss::certify {
 namespace {
 
-const std::string kCells = std::string(GRPVSS_SOURCE_DIR) + "/tests/data/cells/";
 
-struct PandaRun {
-  cell::LoadedCell cell;
-  PathProgram program;
-  motion::KinematicsAccess kinematics;
-  VerificationRun verified;
-};
+using test::PandaSelfRun;
 
-// As `grpvss verify --cell panda-self.yaml --path <path>`: the cell's tolerance, synchronized
-// PTP timing (the cells' default).
-PandaRun run(const std::string& path) {
-  PandaRun r{cell::load_cell(kCells + "panda-self.yaml"), {}, {}, {}};
-  r.program = io::read_path_file(kCells + path, r.cell.robot);
-  r.kinematics = motion::make_kinematics_access(r.cell.robot, motion::select_ik({}, r.cell.robot, "panda"));
-  SetupRequest request;
-  request.tolerance = r.cell.tolerance;
-  request.motion.timing = motion::PtpTiming::kSynchronized;
-  r.verified = verify(r.cell.robot, r.cell.environment, r.program, r.kinematics, resolve_setup(request));
-  return r;
-}
+// As `grpvss verify --cell panda-self.yaml --path <path>`.
+PandaSelfRun run(const std::string& path) { return test::run_panda_self(path); }
 
-CheckReport check(const PandaRun& r) {
-  return check_certificate(r.cell.robot, r.cell.environment, r.program, r.kinematics, r.verified.certificate);
-}
+CheckReport check(const PandaSelfRun& r) { return test::check_panda_self(r, r.verified.certificate); }
 
 TEST(PandaSelfCollision, FoldingTheHandIntoTheUpperArmIsACollisionNamingBothLinks) {
-  const PandaRun r = run("panda-fold.txt");
+  const PandaSelfRun r = run("panda-fold.txt");
   ASSERT_FALSE(r.cell.robot.self_collision_pairs.empty());
   const VerificationResult& result = r.verified.result;
   EXPECT_EQ(result.verdict, Verdict::kCollision);
@@ -75,7 +58,7 @@ TEST(PandaSelfCollision, FoldingTheHandIntoTheUpperArmIsACollisionNamingBothLink
 }
 
 TEST(PandaSelfCollision, TheFoldStoppedShortIsClearAndItsCertificateIsAccepted) {
-  const PandaRun r = run("panda-near-fold.txt");
+  const PandaSelfRun r = run("panda-near-fold.txt");
   EXPECT_EQ(r.verified.result.verdict, Verdict::kClear);
   EXPECT_TRUE(r.verified.result.self_collision_episodes.empty());
   const CheckReport report = check(r);
