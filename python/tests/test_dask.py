@@ -62,7 +62,7 @@ def test_jobs_as_dicts_and_an_empty_batch(client):
     job = {"robot": ROBOT, "environment": str(DATA / "environment.txt"),
            "path": str(DATA / "path.txt"), "tolerance": 0.5}
     [summary] = grpvss.dask.verify_batch(client, [job])
-    assert (summary["verdict"], summary["exit_code"], summary["step_count"]) == ("COLLISION", 1, 37)
+    assert (summary["verdict"], summary["exit_code"], summary["step_count"]) == ("COLLISION", 1, 23)
     assert grpvss.dask.verify_batch(client, []) == []
 
 

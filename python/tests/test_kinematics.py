@@ -34,7 +34,7 @@ def test_link_frames_match_the_cli_scene_bit_for_bit(tmp_path):
     result = grpvss.verify(robot, ENVIRONMENT, PATH, tolerance=0.5)
     _, report_text, _ = cli_verify(tmp_path, ROBOT, ENVIRONMENT, PATH, 0.5)
     scene_steps = json.loads(report_text)["scene"]["steps"]
-    assert len(scene_steps) == result.step_count == 37
+    assert len(scene_steps) == result.step_count == 23
     for q, scene_step in zip(result.configurations, scene_steps):
         poses = robot.forward_kinematics(q)
         assert len(poses) == robot.link_count

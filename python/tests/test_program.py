@@ -69,22 +69,22 @@ def test_a_program_verifies_as_the_cli_verifies_it(tmp_path, cell, name, verdict
 
 
 def test_a_programs_claim_is_that_of_verify_program(cell, tmp_path):
-    # The default claim holds the tolerance along the motion (16 steps); `steps` is
-    # `grpvss verify --program --claim steps` (15 steps), certificate and all.
+    # The default claim holds the tolerance along the motion (12 steps); `steps` is
+    # `grpvss verify --program --claim steps` (10 steps), certificate and all.
     motion = cell.verify_program(PROGRAMS / "ur5e-clear.script")
     steps = cell.verify_program(PROGRAMS / "ur5e-clear.script", claim="steps")
-    assert (motion.step_count, steps.step_count) == (16, 15)
+    assert (motion.step_count, steps.step_count) == (12, 10)
     completed = run_cli("verify", "--cell", CELL, "--program", str(PROGRAMS / "ur5e-clear.script"),
                         "--claim", "steps", "--certificate", str(tmp_path / "c.cert"))
     assert completed.returncode == 0, completed.stderr
-    assert summary_steps(completed.stdout) == 15
+    assert summary_steps(completed.stdout) == 10
     assert json.loads((tmp_path / "c.cert").read_text())["clear_claim"] == "steps"
 
 
 def test_the_reader_warning_and_the_pose_solved_by_ik(cell):
     result = cell.verify_program(PROGRAMS / "ur5e-clear.script")
     assert result.verdict == grpvss.Verdict.CLEAR
-    assert result.step_count == 16
+    assert result.step_count == 12
     assert (str(PROGRAMS / "ur5e-clear.script"), 9, 'not read: popup("placed")') in result.warnings
     targets = result.program.targets
     assert [(line, cartesian) for _, line, cartesian, _ in targets] == \

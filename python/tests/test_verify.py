@@ -114,7 +114,7 @@ def test_the_sample_collides_with_episodes_naming_link_and_obstacle():
     result = grpvss.verify(ROBOT, str(DATA / "environment.txt"), str(DATA / "path.txt"), 0.5)
     assert result.verdict == grpvss.Verdict.COLLISION
     assert result.exit_code == 1
-    assert result.step_count == 37
+    assert result.step_count == 23
     assert result.episodes, "the sample's collision is an episode"
     colliding = [e for e in result.episodes if e.first_collision_step is not None]
     assert colliding and all(0 <= e.link <= 4 and e.obstacle in (0, 1) for e in colliding)
@@ -145,13 +145,14 @@ def test_certificate_save_writes_the_cli_bytes_and_refuses_to_overwrite(tmp_path
 
 
 def test_claim_steps_is_the_claim_before_issue_20_7_and_motion_the_default():
-    # docs/verification.md#claim: the sample collides either way; claim steps keeps the 24
-    # steps of the earlier rule, the default claim motion aims its steps at g >= tolerance (37).
+    # docs/verification.md#claim: the sample collides either way; claim steps keeps the earlier
+    # rule (23 steps), the default claim motion aims its steps at g >= tolerance (23 as well since
+    # the step's axis distances, proofs/motion-bound.md#lemma-axis-distance-along-step).
     steps = grpvss.verify(ROBOT, str(DATA / "environment.txt"), str(DATA / "path.txt"), 0.5,
                           claim="steps")
     motion = grpvss.verify(ROBOT, str(DATA / "environment.txt"), str(DATA / "path.txt"), 0.5)
-    assert (steps.verdict, steps.step_count) == (grpvss.Verdict.COLLISION, 24)
-    assert (motion.verdict, motion.step_count) == (grpvss.Verdict.COLLISION, 37)
+    assert (steps.verdict, steps.step_count) == (grpvss.Verdict.COLLISION, 23)
+    assert (motion.verdict, motion.step_count) == (grpvss.Verdict.COLLISION, 23)
     assert json.loads(steps.json_report())["claim"] == "steps"
     assert json.loads(motion.json_report())["claim"] == "motion"
     with pytest.raises(grpvss.InputError, match="motion or steps"):

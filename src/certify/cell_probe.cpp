@@ -112,6 +112,7 @@ void CellProbe::probe(const Eigen::VectorXd& q, bool with_points, ProbeResult& o
   out.any_self_collision = false;
   kinematics::forward_kinematics(cell_->chain(), q, workspace_);
   out.X_WL = workspace_.X_WL;
+  out.X_WJ = workspace_.X_WJ;
   for (int i = 0; i < static_cast<int>(cell_->hulls().size()); ++i) probe_hull(i, with_points, out);
   if (self_pairs_.probe(out.X_WL, out.self_pairs)) out.any_self_collision = out.any_collision = true;
   sort_points(out);

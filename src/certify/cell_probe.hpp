@@ -52,6 +52,8 @@ struct ProbeResult {
   Eigen::VectorXd q;
   /// X_WL[i]: link frame i's pose as forward kinematics computed it for q (i = 0..N).
   std::vector<Eigen::Isometry3d> X_WL;
+  /// X_WJ[j-1]: joint frame J_j (its z axis is joint j's axis), as forward kinematics computed it.
+  std::vector<Eigen::Isometry3d> X_WJ;
   std::vector<HullState> hulls;  ///< index = RobotCell::hulls() index
   std::vector<PairEvidence> evidence;
   std::vector<InterferencePoint> interference_points;  ///< filled only when requested

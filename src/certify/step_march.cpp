@@ -53,7 +53,8 @@ CertifiedMarch::CertifiedMarch(const RobotCell& cell, const RunSettings& setting
                                MarchListener& listener)
     : StepMarch(cell, settings, listener),
       aims_at_tolerance_(settings.claim == ClearClaim::kMotion),
-      cp_check_(cell, settings.cp_model) {
+      cp_check_(cell, settings.cp_model),
+      step_radii_(cell) {
   const RobotModel& robot = cell.robot();
   for (const LinkHull& hull : cell.hulls()) {
     for (int joint = 1; joint <= robot.joint_count(); ++joint) {
@@ -107,7 +108,7 @@ bool CertifiedMarch::march_segment(const SegmentPath& path, int segment) {
     probe_trial(*q1);
     const TransitionRecord transition =
         judge_transition(cell_, current_, trial_, trial.s1 >= end_, path.is_cp(),
-                         path.joint_variation(s_, trial.s1));
+                         path.joint_variation(s_, trial.s1), &step_radii_);
     if (trial_.any_expanded_interference) aims_at_tolerance_ = false;  // CLEAR is out of reach
     const Outcome settled =
         aims_at_tolerance_
@@ -186,9 +187,14 @@ double CertifiedMarch::predicted_ptp_step(const SegmentPath& path, double max_st
   }
   const double s = s_;
   const Eigen::VectorXd& q = current_.q;
+  // Weighted by where the hulls are now, not by the worst configuration (M'_h's first order).
+  std::vector<double> distances;
+  step_radii_.axis_distances(current_, distances);
+  std::vector<double> weights = proposal_weights_;
+  step_radii_.tighten_proposal_weights(distances, weights);
   // PTP: the profile; a trajectory piece: its interpolation (the transition still decides).
   return certify::predicted_ptp_step([&](double candidate) { return *path.q_at(s + candidate, q); },
-                                     current_.q, max_step, proposal_weights_, hulls, has_trend,
+                                     current_.q, max_step, weights, hulls, has_trend,
                                      previous_step_);
 }
 

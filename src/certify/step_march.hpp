@@ -21,6 +21,7 @@
 #include "grpvss/certify/robot_cell.hpp"
 #include "grpvss/evidence/setup.hpp"
 #include "step_proposal.hpp"
+#include "step_axis_radius.hpp"
 #include "segment_path.hpp"
 #include "thesis_rule.hpp"
 
@@ -110,6 +111,8 @@ class CertifiedMarch : public StepMarch {
 
   CpModelCheck cp_check_;
   std::vector<double> proposal_weights_;  ///< [hull * joints + joint - 1]: M_h's coefficients
+  /// The configuration-dependent bound M'_h (proofs/motion-bound.md#lemma-axis-distance-along-step).
+  StepAxisRadii step_radii_;
   // Per segment.
   double end_ = 0.0;
   double min_step_ = 0.0;

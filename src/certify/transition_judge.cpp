@@ -79,14 +79,27 @@ double allowance_down(double radius_k, double radius_k1) {
 // proof: proofs/two-ball-cover.md#corollary-step
 TransitionRecord judge_transition(const RobotCell& cell, const ProbeResult& from,
                                   const ProbeResult& to, bool cut_by_segment_end,
-                                  bool joint_linear, const Eigen::VectorXd& joint_variation) {
+                                  bool joint_linear, const Eigen::VectorXd& joint_variation,
+                                  const StepAxisRadii* step_radii) {
   TransitionRecord record;
   record.certified = true;
   // proof: proofs/joint-variation.md#theorem-variation-motion-bound
   const Eigen::VectorXd dq = joint_variation.size() > 0 ? joint_variation : Eigen::VectorXd(to.q - from.q);
   const double two_delta = 2.0 * cell.tolerance();
+  // proof: proofs/motion-bound.md#lemma-axis-distance-along-step
+  std::vector<double> distances_from, distances_to;
+  Eigen::VectorXd increments;
+  if (step_radii != nullptr) {
+    step_radii->axis_distances(from, distances_from);
+    step_radii->axis_distances(to, distances_to);
+    increments = increments_up(from.q, to.q, joint_variation);
+  }
   for (std::size_t i = 0; i < cell.hulls().size(); ++i) {
-    const double bound = hull_motion_bound(cell, cell.hulls()[i], from, to, dq, joint_linear);
+    double bound = hull_motion_bound(cell, cell.hulls()[i], from, to, dq, joint_linear);
+    if (step_radii != nullptr && bound > 0.0) {
+      bound = std::min(bound, step_radii->motion_bound(static_cast<int>(i), increments,
+                                                       distances_from, distances_to));
+    }
     const double allowance = allowance_down(from.hulls[i].radius, to.hulls[i].radius);
     GoverningTerm governing =
         governing_term(from.hulls[i], to.hulls[i], allowance, two_delta, cut_by_segment_end);

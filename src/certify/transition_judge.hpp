@@ -4,6 +4,7 @@
 // its radii at both ends give.
 
 #include "cell_probe.hpp"
+#include "step_axis_radius.hpp"
 #include "grpvss/evidence/certificate.hpp"
 #include "grpvss/certify/robot_cell.hpp"
 
@@ -19,10 +20,13 @@ double allowance_down(double radius_k, double radius_k1);
 /// `joint_variation`: when not empty, per joint a bound of the joints' total variation over
 /// the step (a trajectory piece, possibly non-monotone), used in M_h instead of |dq|
 /// (proofs/joint-variation.md#theorem-variation-motion-bound).
+/// `step_radii`: when given, M_h may be the configuration-dependent M'_h
+/// (proofs/motion-bound.md#lemma-axis-distance-along-step).
 TransitionRecord judge_transition(const RobotCell& cell, const ProbeResult& from,
                                   const ProbeResult& to, bool cut_by_segment_end,
                                   bool joint_linear,
-                                  const Eigen::VectorXd& joint_variation = Eigen::VectorXd());
+                                  const Eigen::VectorXd& joint_variation = Eigen::VectorXd(),
+                                  const StepAxisRadii* step_radii = nullptr);
 
 /// \brief Appends to `record` (its hull bounds filled) every self pair's M_a + M_b and
 /// d_k + d_{k+1}, and uncertifies it unless M_a + M_b < d_k + d_{k+1} for every pair.

@@ -1,6 +1,8 @@
 #include "checked_cell.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <string>
 
 #include "exact_axis_radius.hpp"
@@ -45,6 +47,36 @@ bool boxes_farther_than(const Box& a, const Box& b, double margin) {
   }
   return false;
 }
+
+double root_up(const Rational& square) {
+  double root = std::sqrt(square.get_d());
+  while (Rational(root) * Rational(root) < square) {
+    root = std::nextafter(root, std::numeric_limits<double>::infinity());
+  }
+  return root;
+}
+
+namespace {
+
+// The box midpoint (as the verifier takes it: any centre is sound) and the exact largest
+// vertex distance, rounded up to a double. proof: proofs/motion-bound.md#lemma-axis-distance-along-step
+void enclose_in_ball(CheckedHull& hull) {
+  if (hull.raw_L.empty()) return;
+  const Box box = box_of(hull.raw_L);
+  hull.ball_center_L = (box.lo + box.hi) * 0.5;
+  Rational largest = 0;
+  for (const Eigen::Vector3d& u : hull.raw_L) {
+    Rational square = 0;
+    for (int k = 0; k < 3; ++k) {
+      const Rational d = exact(u[k]) - exact(hull.ball_center_L[k]);
+      square += d * d;
+    }
+    if (square > largest) largest = square;
+  }
+  hull.ball_radius = Rational(root_up(largest));
+}
+
+}  // namespace
 
 CheckedCell::CheckedCell(const RobotModel& robot)
     : robot_(&robot), chain_(kinematics::make_chain(robot)) {}
@@ -124,6 +156,8 @@ bool CheckedCell::build_hulls(const Certificate& header, CheckLedger& ledger,
       for (int joint = 1; joint <= link; ++joint) {
         checked.axis_radius.push_back(exact_axis_radius(robot, link, points, joint));
       }
+      enclose_in_ball(checked);
+      hull_coordinate_limit_ = std::max(hull_coordinate_limit_, largest_abs_coordinate(checked.raw_L));
       largest_coordinate = std::max({largest_coordinate, largest_abs_coordinate(checked.raw_L),
                                      largest_abs_coordinate(checked.expanded_L)});
       hulls_.push_back(std::move(checked));

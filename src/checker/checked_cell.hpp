@@ -30,7 +30,15 @@ struct CheckedHull {
   std::vector<Eigen::Vector3d> raw_L;
   std::vector<Eigen::Vector3d> expanded_L;  ///< the offset, verified to contain the ball sum
   std::vector<Rational> axis_radius;        ///< R_{jh} for joints 1..link, exact
+  /// A ball containing raw_L: its box's midpoint and a double >= its largest vertex distance
+  /// (proofs/motion-bound.md#lemma-axis-distance-along-step).
+  Eigen::Vector3d ball_center_L = Eigen::Vector3d::Zero();
+  Rational ball_radius = 0;
 };
+
+/// The smallest double whose square is at least `square` (>= 0), exactly: an upper bound on
+/// its root.
+double root_up(const Rational& square);
 
 /// Axis-aligned box of a point set (min/max of doubles: exact).
 struct Box {
@@ -42,6 +50,8 @@ bool boxes_farther_than(const Box& a, const Box& b, double margin);
 
 class CheckedCell {
  public:
+  /// L: the largest |coordinate| of any raw hull vertex (<= the FK bound's coordinate bound).
+  double hull_coordinate_limit() const { return hull_coordinate_limit_; }
   /// The cell of `robot` and `environment` for the certificate's tolerance, offset shape,
   /// expansion radius and placement error; nullopt (and the reason in `ledger`) when the
   /// header's numbers cannot be trusted.
@@ -64,6 +74,7 @@ class CheckedCell {
   const std::vector<std::pair<int, int>>& self_pairs() const { return self_pairs_; }
 
  private:
+  double hull_coordinate_limit_ = 0.0;
   explicit CheckedCell(const RobotModel& robot);
   bool build_hulls(const Certificate& header, CheckLedger& ledger, double& largest_coordinate);
   void build_obstacles(const Environment& environment);

@@ -10,7 +10,13 @@ namespace grpvss::certify {
 TransitionCheck::TransitionCheck(const CheckedCell& cell, const Certificate& header,
                                  CheckLedger& ledger, ClaimFacts& facts,
                                  MotionClearances& clearances)
-    : cell_(cell), header_(header), ledger_(ledger), facts_(facts), clearances_(clearances) {}
+    : cell_(cell),
+      header_(header),
+      ledger_(ledger),
+      facts_(facts),
+      clearances_(clearances),
+      from_frames_(cell.robot()),
+      to_frames_(cell.robot()) {}
 
 void TransitionCheck::check(const StepCertificate& from, const StepCertificate& to,
                             const std::vector<Rational>& radius_from,
@@ -37,6 +43,14 @@ void TransitionCheck::check(const StepCertificate& from, const StepCertificate& 
   }
   bool certified = true;
   hull_bounds_.assign(hulls.size(), std::nullopt);
+  kinematics::forward_kinematics(cell_.chain(), from.q, from_frames_);
+  kinematics::forward_kinematics(cell_.chain(), to.q, to_frames_);
+  std::vector<Rational> increments(static_cast<std::size_t>(joints));
+  for (int j = 0; j < joints; ++j) {
+    increments[static_cast<std::size_t>(j)] =
+        joint_variation.empty() ? Rational(abs(exact(to.q[j]) - exact(from.q[j])))
+                                : joint_variation[static_cast<std::size_t>(j)];
+  }
   for (std::size_t i = 0; i < hulls.size(); ++i) {
     const CheckedHull& hull = hulls[i];
     const std::string hull_where = where + " hull " + std::to_string(i);
@@ -47,15 +61,19 @@ void TransitionCheck::check(const StepCertificate& from, const StepCertificate& 
     if (!(recorded >= bound)) {
       // proof: proofs/motion-bound.md#lemma-joint-linear-chord
       ledger_.decided();
-      if (joint_linear && placed_from[i].size() == hull.raw_L.size() &&
-          placed_to[i].size() == hull.raw_L.size() &&
-          chord_bound_holds(hull, from, to, placed_from[i], placed_to[i],
-                            claimed.hull_motion_bounds[i])) {
+      const bool chord_holds = joint_linear && placed_from[i].size() == hull.raw_L.size() &&
+                               placed_to[i].size() == hull.raw_L.size() &&
+                               chord_bound_holds(hull, from, to, placed_from[i], placed_to[i],
+                                                 claimed.hull_motion_bounds[i]);
+      // proof: proofs/motion-bound.md#lemma-axis-distance-along-step
+      if (chord_holds || recorded >= step_axis_bound(hull, increments)) {
         bound = recorded;  // proven >= every point's path length
       } else {
-        ledger_.fail(hull_where + (joint_linear ? ": the recorded motion bound is below both the "
-                                                  "exact bound and the chord bound"
-                                                : ": the recorded motion bound is below the exact bound"));
+        ledger_.fail(hull_where + (joint_linear ? ": the recorded motion bound is below the exact "
+                                                  "bound, the chord bound and the step's "
+                                                  "axis-distance bound"
+                                                : ": the recorded motion bound is below the exact "
+                                                  "bound and the step's axis-distance bound"));
         certified = false;
       }
     }
@@ -91,6 +109,44 @@ Rational TransitionCheck::joint_sum_bound(const CheckedHull& hull, const StepCer
                  : increment;
   }
   return bound;
+}
+
+Rational TransitionCheck::step_axis_bound(const CheckedHull& hull,
+                                          const std::vector<Rational>& increments) const {
+  const int moving = std::min(hull.link, cell_.robot().joint_count());
+  Rational tail = 0;
+  Rational bound = 0;
+  for (int j = moving; j >= 1; --j) {
+    const Rational& increment = increments[static_cast<std::size_t>(j - 1)];
+    const bool revolute = cell_.robot().joints[j - 1].type == JointType::kRevolute;
+    if (revolute) {
+      const Rational at_ends = std::min(axis_distance(from_frames_, hull, j),
+                                        axis_distance(to_frames_, hull, j));
+      const Rational near = at_ends + tail;
+      bound += increment * std::min(hull.axis_radius[static_cast<std::size_t>(j - 1)], near);
+      tail += increment * hull.axis_radius[static_cast<std::size_t>(j - 1)];
+    } else {
+      bound += increment;
+      tail += increment;
+    }
+  }
+  return bound;
+}
+
+Rational TransitionCheck::axis_distance(const kinematics::Workspace& frames,
+                                        const CheckedHull& hull, int joint) const {
+  const Eigen::Vector3d c = frames.X_WL[static_cast<std::size_t>(hull.link)] * hull.ball_center_L;
+  const Eigen::Isometry3d& X_WJ = frames.X_WJ[static_cast<std::size_t>(joint - 1)];
+  const Eigen::Vector3d o = X_WJ.translation();
+  const Eigen::Vector3d z = X_WJ.linear().col(2);
+  const double limit = cell_.hull_coordinate_limit();
+  const double s = std::clamp(z.dot(c - o), -limit, limit);  // any |s| <= L is sound
+  Rational square = 0;
+  for (int k = 0; k < 3; ++k) {
+    const Rational d = exact(c[k]) - exact(o[k]) - exact(s) * exact(z[k]);
+    square += d * d;
+  }
+  return Rational(root_up(square)) + exact(header_.placement_error) + hull.ball_radius;
 }
 
 bool TransitionCheck::chord_bound_holds(const CheckedHull& hull, const StepCertificate& from,

@@ -14,6 +14,7 @@
 #include "checked_cell.hpp"
 #include "claim_facts.hpp"
 #include "grpvss/evidence/certificate.hpp"
+#include "grpvss/kinematics/forward_kinematics.hpp"
 
 namespace grpvss::certify {
 
@@ -48,6 +49,13 @@ class TransitionCheck {
   bool chord_bound_holds(const CheckedHull& hull, const StepCertificate& from,
                          const StepCertificate& to, const std::vector<Eigen::Vector3d>& placed_from,
                          const std::vector<Eigen::Vector3d>& placed_to, double claimed) const;
+  /// The configuration-dependent bound M'_h exactly, from the frames of both ends
+  /// (from_frames_, to_frames_) and the exact increments (or variations).
+  /// proof: proofs/motion-bound.md#lemma-axis-distance-along-step
+  Rational step_axis_bound(const CheckedHull& hull, const std::vector<Rational>& increments) const;
+  /// D_jh at one end: |c - o - s z| + placement_error + r_h, exactly (rounded up to a double
+  /// only at the root). proof: proofs/motion-bound.md#axis-distance-evaluation
+  Rational axis_distance(const kinematics::Workspace& frames, const CheckedHull& hull, int joint) const;
   /// Records the clearance g the hull keeps throughout the transition and returns it.
   Rational keep_motion_clearance(const CheckedHull& hull, const Rational& radius_from,
                                  const Rational& radius_to, const Rational& bound, int to_step);
@@ -63,6 +71,7 @@ class TransitionCheck {
   ClaimFacts& facts_;
   MotionClearances& clearances_;
   std::vector<std::optional<Rational>> hull_bounds_;
+  kinematics::Workspace from_frames_, to_frames_;  ///< this checker's own FK at both ends
 };
 
 }  // namespace grpvss::certify

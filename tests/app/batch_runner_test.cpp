@@ -77,9 +77,9 @@ TEST_F(BatchRunner, ResultsComeInManifestOrderAndEqualOneThreadsWithTwo) {
     EXPECT_EQ(one[i].rfind("{\"index\":" + std::to_string(i) + ",\"line\":" + std::to_string(i + 1) + ",", 0), 0u)
         << one[i];
   }
-  // `grpvss verify` of the same job: "steps: 37", "first collision at step 16" (link 3, post 0).
-  EXPECT_NE(one[0].find("\"verdict\":\"COLLISION\",\"exit_code\":1,\"steps\":37,\"smallest_clearance\":"
-                        "{\"clearance\":0.0,\"link\":3,\"obstacle\":0,\"step\":16}"),
+  // `grpvss verify` of the same job: "steps: 23", "first collision at step 4" (link 3, post 0).
+  EXPECT_NE(one[0].find("\"verdict\":\"COLLISION\",\"exit_code\":1,\"steps\":23,\"smallest_clearance\":"
+                        "{\"clearance\":0.0,\"link\":3,\"obstacle\":0,\"step\":4}"),
             std::string::npos)
       << one[0];
   EXPECT_NE(one[1].find("\"verdict\":\"CLEAR\",\"exit_code\":0,"), std::string::npos) << one[1];
@@ -219,13 +219,13 @@ TEST_F(BatchRunner, CellJobsVerifyAsVerifyDoesWithTheCellsDefaultsAndNames) {
   BatchStatistics statistics;
   const std::vector<std::string> lines = run(jobs, 2, &statistics);
   ASSERT_EQ(lines.size(), 2u);
-  EXPECT_NE(lines[0].find("\"verdict\":\"CLEAR\",\"exit_code\":0,\"steps\":7,"), std::string::npos)
+  EXPECT_NE(lines[0].find("\"verdict\":\"CLEAR\",\"exit_code\":0,\"steps\":6,"), std::string::npos)
       << lines[0];
   EXPECT_NE(lines[0].find("\"link\":4,\"obstacle\":"), std::string::npos) << lines[0];
   EXPECT_NE(lines[0].find("\"link_name\":\"link_4\",\"obstacle_name\":\"post\"}"),
             std::string::npos)
       << lines[0];
-  EXPECT_NE(lines[1].find("\"verdict\":\"COLLISION\",\"exit_code\":1,\"steps\":41,"),
+  EXPECT_NE(lines[1].find("\"verdict\":\"COLLISION\",\"exit_code\":1,\"steps\":6,"),
             std::string::npos)
       << lines[1];
   EXPECT_EQ(statistics.cells_built, 1u);

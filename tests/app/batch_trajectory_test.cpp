@@ -52,8 +52,8 @@ TEST_F(BatchTrajectory, ReportsCertificatesAndResultLinesAreThoseOfVerifyTraject
   const auto lines = grpvss::test::split_lines(batch.out);
   ASSERT_EQ(lines.size(), 2u) << batch.out;
   const struct { const char* id; const char* file; const char* verdict; int exit_code; int steps; }
-      expected[] = {{"clear", "ur5e-clear.json", "CLEAR", 0, 9},
-                    {"post", "ur5e-through-post.csv", "COLLISION", 1, 64}};
+      expected[] = {{"clear", "ur5e-clear.json", "CLEAR", 0, 7},
+                    {"post", "ur5e-through-post.csv", "COLLISION", 1, 34}};
   for (int i = 0; i < 2; ++i) {
     const std::string id = expected[i].id;
     const CliRun verify = run_cli(directory_, "verify --cell " + kCell + " --trajectory " +

@@ -39,7 +39,7 @@ TEST_F(PandaCell, AClearPathIsClearAndItsCertificateIsAccepted) {
       "--cell " + kCells + "panda-shelf.yaml --path " + kCells + "panda-clear.txt";
   const CliRun verify = run_cli(directory_, "verify " + inputs + " --certificate c.json");
   ASSERT_EQ(verify.exit_code, grpvss::app::kExitOk) << verify.out << verify.err;
-  EXPECT_NE(verify.out.find("verdict: CLEAR\nmode: certified  tolerance: 0.005  steps: 4 "),
+  EXPECT_NE(verify.out.find("verdict: CLEAR\nmode: certified  tolerance: 0.005  steps: 2 "),
             std::string::npos)
       << verify.out;
   // Link 0 is in the clearance list; hulls merged from `_sc` links name the link they came from.
@@ -57,8 +57,8 @@ TEST_F(PandaCell, APathIntoTheShelfIsACollisionOfTheHandWithTheShelf) {
       "--cell " + kCells + "panda-shelf.yaml --path " + kCells + "panda-into-shelf.txt";
   const CliRun verify = run_cli(directory_, "verify " + inputs + " --certificate c.json");
   ASSERT_EQ(verify.exit_code, grpvss::app::kExitFinding) << verify.out << verify.err;
-  // Step 86 (85 before the claim `motion` held self pairs to a gap of Delta).
-  EXPECT_NE(verify.out.find("first collision at step 86\n"
+  // Step 36 (86 before the step's axis distances, proofs/motion-bound.md#lemma-axis-distance-along-step).
+  EXPECT_NE(verify.out.find("first collision at step 36\n"
                             "interference: panda_hand_tcp hull 12 (panda_hand_sc) / shelf, "),
             std::string::npos)
       << verify.out;

@@ -82,7 +82,7 @@ TEST_F(ProgramCli, AUrScriptMovejProgramIsClearAndItsCertificateAccepted) {
   ASSERT_EQ(verify.exit_code, grpvss::app::kExitOk) << verify.out << verify.err;
   expect_summary_starts_with(verify, "motion: program ur5e-clear.script (URScript), synchronized PTP, 3 "
                                      "motions (2 joint targets, 1 pose by IK), exact stops\nverdict: CLEAR\n");
-  EXPECT_TRUE(contains(verify.out, "steps: 16  cycle time: 4.119 s")) << verify.out;
+  EXPECT_TRUE(contains(verify.out, "steps: 12  cycle time: 4.119 s")) << verify.out;
   // Every reader warning reaches the user, one per ignored line.
   EXPECT_TRUE(contains(verify.err, "ur5e-clear.script:9: not read: popup(\"placed\")\n")) << verify.err;
 
@@ -103,7 +103,7 @@ TEST_F(ProgramCli, AUrScriptMovejProgramIsClearAndItsCertificateAccepted) {
 
   const CliRun check = run_cli(dir(), "check-certificate " + ur5e("ur5e-clear.script") + " c.json");
   EXPECT_EQ(check.exit_code, grpvss::app::kExitOk) << check.out << check.err;
-  EXPECT_EQ(check.out.rfind("ACCEPTED: claim CLEAR (877 inequalities decided exactly)\n  claim "
+  EXPECT_EQ(check.out.rfind("ACCEPTED: claim CLEAR (749 inequalities decided exactly)\n  claim "
                             "checked: motion (CLEAR = robot + tolerance clear along the whole "
                             "motion)\n  motion model checked: program ur5e-clear.script (URScript), synchronized "
                             "PTP, 3 motions (2 joint targets, 1 pose by IK), exact stops, IK UR "
@@ -139,8 +139,8 @@ TEST_F(ProgramCli, AProgramAndItsEquivalentTrajectoryGiveTheSameCollision) {
   expect_summary_starts_with(program, "motion: program ur5e-through-post.script (URScript), synchronized "
                                       "PTP, 2 motions (2 joint targets, 0 poses by IK), exact stops\n"
                                       "verdict: COLLISION\n");
-  EXPECT_TRUE(contains(program.out, "interference: forearm_link hull 0 / post, steps 31-66 "
-                                    "(1.359-2.082 s), unexpanded collides at steps 38-66"))
+  EXPECT_TRUE(contains(program.out, "interference: forearm_link hull 0 / post, steps 16-37 "
+                                    "(1.359-2.082 s), unexpanded collides at steps 23-37"))
       << program.out;
   const CliRun trajectory = run_cli(dir(), "verify --cell " + kCell + " --trajectory " + kSource +
                                                "/tests/data/trajectories/ur5e-through-post.csv "
@@ -149,18 +149,18 @@ TEST_F(ProgramCli, AProgramAndItsEquivalentTrajectoryGiveTheSameCollision) {
   const auto p = nlohmann::json::parse(grpvss::test::read_text_file(dir() + "/p.json"));
   const auto t = nlohmann::json::parse(grpvss::test::read_text_file(dir() + "/t.json"));
   EXPECT_EQ(p["verdict"], t["verdict"]);
-  EXPECT_EQ(p["collision_step"], 38);
-  EXPECT_EQ(t["collision_step"], 37);
-  const nlohmann::json& p_step = p["steps"][37];
-  const nlohmann::json& t_step = t["steps"][36];
+  EXPECT_EQ(p["collision_step"], 23);
+  EXPECT_EQ(t["collision_step"], 21);
+  const nlohmann::json& p_step = p["steps"][22];
+  const nlohmann::json& t_step = t["steps"][20];
   EXPECT_EQ(p_step["segment"], 2);  // the same first colliding motion: the second movej / piece
   EXPECT_EQ(t_step["segment"], 2);
   EXPECT_EQ(p["segments"][1]["source_line"], 6);  // the movej's line
   // Steps fall at other times (trapezoids against linear interpolation) on the same joint-space
-  // line: the first colliding configurations differ only along it, by 0.031 deg of the pan joint
+  // line: the first colliding configurations differ only along it, by 0.28 deg of the pan joint
   // (the other joints stand still, equal up to the last bit of their degree conversion).
-  EXPECT_NEAR(p_step["joint_values"][0].get<double>(), 63.93529675564359, 1e-9);
-  EXPECT_NEAR(t_step["joint_values"][0].get<double>(), 63.90461063868187, 1e-9);
+  EXPECT_NEAR(p_step["joint_values"][0].get<double>(), 64.2542248016121, 1e-9);
+  EXPECT_NEAR(t_step["joint_values"][0].get<double>(), 63.97820610955593, 1e-9);
   for (int j = 1; j < 6; ++j) {
     EXPECT_NEAR(p_step["joint_values"][j].get<double>(), t_step["joint_values"][j].get<double>(), 1e-12) << j;
   }
@@ -210,7 +210,7 @@ TEST_F(ProgramCli, UrScriptMovelLinesAreClearAndTheirCertificateAccepted) {
   const auto report = nlohmann::json::parse(grpvss::test::read_text_file(dir() + "/r.json"));
   ASSERT_EQ(report["segments"].size(), 4u);
   EXPECT_EQ(report["segments"][1]["source_line"], 11);
-  EXPECT_TRUE(contains(verify.out, "steps: 26  cycle time: 3.914 s")) << verify.out;
+  EXPECT_TRUE(contains(verify.out, "steps: 24  cycle time: 3.914 s")) << verify.out;
   const auto certificate = nlohmann::json::parse(grpvss::test::read_text_file(dir() + "/c.json"));
   const std::vector<std::vector<double>> targets = recorded_targets(certificate);
   ASSERT_EQ(targets.size(), 4u);
@@ -236,7 +236,7 @@ TEST_F(ProgramCli, AMovelAndItsEquivalentCpLinePathGiveTheSameCollision) {
   const auto t = nlohmann::json::parse(grpvss::test::read_text_file(dir() + "/t.json"));
   EXPECT_EQ(p["verdict"], "COLLISION");
   EXPECT_EQ(t["verdict"], "COLLISION");
-  EXPECT_EQ(p["collision_step"], 11);
+  EXPECT_EQ(p["collision_step"], 8);
   EXPECT_EQ(t["collision_step"], p["collision_step"]);
   const int first = p["collision_step"].get<int>() - 1;
   EXPECT_EQ(p["steps"][first]["segment"], 2);  // the movel, the IND 3 line
@@ -247,7 +247,7 @@ TEST_F(ProgramCli, AMovelAndItsEquivalentCpLinePathGiveTheSameCollision) {
                 t["steps"][first]["joint_values"][j].get<double>(), 1e-6)  // deg: 17-digit file values
         << j;
   }
-  EXPECT_TRUE(contains(program.out, "interference: wrist_1_link hull 0 / post, steps 11-18")) << program.out;
+  EXPECT_TRUE(contains(program.out, "interference: wrist_1_link hull 0 / post, steps 8-15")) << program.out;
   const CliRun check = run_cli(dir(), "check-certificate " + ur5e("ur5e-movel-post.script") + " c.json");
   EXPECT_EQ(check.exit_code, grpvss::app::kExitOk) << check.out << check.err;
   EXPECT_EQ(check.out.rfind("ACCEPTED: claim COLLISION", 0), 0u) << check.out;

@@ -34,14 +34,14 @@ TEST(VerifySummaryCli, TheSamplesEpisodesArePrintedBetweenTheFirstCollisionAndTh
   EXPECT_EQ(run_verify("environment.txt", kData + "path.txt", directory, text), 1);
   std::filesystem::remove_all(directory);
   const std::string expected =
-      "first collision at step 16\n"
-      "interference: link 3 hull 1 / obstacle 0, steps 9-25 (8.805-13.529 s, clear by "
-      "13.942 s), unexpanded collides at steps 16-21\n"
-      "interference: link 3 hull 0 / obstacle 0, steps 16-26 (9.204-13.942 s, clear by "
-      "14.401 s), unexpanded collides at steps 17-25\n"
-      "interference: link 4 hull 0 / obstacle 0, steps 16-17 (9.204-9.627 s, clear by "
-      "10.052 s), expanded hull only\n"
-      "error 7 (segment 3, step 37)";
+      "first collision at step 4\n"
+      "interference: link 3 hull 1 / obstacle 0, steps 3-12 (8.979-13.332 s, clear by "
+      "13.750 s), unexpanded collides at steps 4-9\n"
+      "interference: link 3 hull 0 / obstacle 0, steps 4-13 (9.309-13.750 s, clear by "
+      "14.170 s), unexpanded collides at steps 5-13\n"
+      "interference: link 4 hull 0 / obstacle 0, steps 4-5 (9.309-9.735 s, clear by "
+      "10.161 s), expanded hull only\n"
+      "error 7 (segment 3, step 23)";
   EXPECT_NE(text.find(expected), std::string::npos) << text;
 }
 

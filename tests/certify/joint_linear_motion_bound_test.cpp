@@ -3,6 +3,8 @@
 // the CP certificates that rely on it, and the tampering the checker must reject.
 #include "certify/joint_linear_motion_bound.hpp"
 
+#include <tuple>
+
 #include <cmath>
 #include <string>
 
@@ -13,6 +15,7 @@
 #include "grpvss/checker/certificate_checker.hpp"
 #include "grpvss/certify/robot_cell.hpp"
 #include "grpvss/kinematics/forward_kinematics.hpp"
+#include "certify/step_axis_radius.hpp"
 #include "support/ibm7545_run.hpp"
 #include "support/sample_robots.hpp"
 
@@ -75,8 +78,9 @@ class CpLineCertificate : public ::testing::Test {
     return check_certificate(run_.robot, run_.environment, run_.program, run_.kinematics,
                              certificate_from_json(document, "cert.json"));
   }
-  // For transition k -> k+1 of segment `segment` (0-based) and hull i: M_h and L_h.
-  std::pair<double, double> bounds(int segment, std::size_t k, std::size_t i) const {
+  // For transition k -> k+1 of segment `segment` (0-based) and hull i: M_h, L_h and M'_h
+  // (proofs/motion-bound.md#lemma-axis-distance-along-step).
+  std::tuple<double, double, double> bounds(int segment, std::size_t k, std::size_t i) const {
     const auto& steps = run_.run.certificate.segments.at(segment).steps;
     const Eigen::VectorXd& q0 = steps.at(k).q;
     const Eigen::VectorXd& q1 = steps.at(k + 1).q;
@@ -88,7 +92,17 @@ class CpLineCertificate : public ::testing::Test {
     const double chord = joint_linear_motion_bound(cell_->radii(), hull.link, hull.hull,
                                                    hull.raw_L, q0, ws0.X_WL[hull.link], q1,
                                                    ws1.X_WL[hull.link], cell_->placement_error());
-    return {sum, chord};
+    ProbeResult at0, at1;
+    at0.X_WL = ws0.X_WL;
+    at0.X_WJ = ws0.X_WJ;
+    at1.X_WL = ws1.X_WL;
+    at1.X_WJ = ws1.X_WJ;
+    const StepAxisRadii step_radii(*cell_);
+    std::vector<double> d0, d1;
+    step_radii.axis_distances(at0, d0);
+    step_radii.axis_distances(at1, d1);
+    const double axis = step_radii.motion_bound(static_cast<int>(i), increments_up(q0, q1, {}), d0, d1);
+    return {sum, chord, axis};
   }
   static bool names(const CheckReport& report, const std::string& failure) {
     for (const std::string& f : report.failures) {
@@ -112,8 +126,8 @@ TEST_F(CpLineCertificate, CpStepsRecordTheChordBoundAndTheCheckerAcceptsIt) {
   int quill_transitions = 0;
   for (std::size_t k = 0; k + 1 < steps.size(); ++k) {
     for (std::size_t i = 0; i < cell_->hulls().size(); ++i) {
-      const auto [sum, chord] = bounds(1, k, i);
-      EXPECT_EQ(steps[k].to_next.hull_motion_bounds[i], std::min(sum, chord));
+      const auto [sum, chord, axis] = bounds(1, k, i);
+      EXPECT_EQ(steps[k].to_next.hull_motion_bounds[i], std::min({sum, chord, axis}));
       if (cell_->hulls()[i].link == 4) {
         EXPECT_LT(chord, sum) << "step " << k;
         ++quill_transitions;
@@ -126,13 +140,13 @@ TEST_F(CpLineCertificate, CpStepsRecordTheChordBoundAndTheCheckerAcceptsIt) {
 TEST_F(CpLineCertificate, CheckerRejectsACpBoundBelowTheChordBound) {
   const std::size_t quill = cell_->hulls().size() - 1;
   ASSERT_EQ(cell_->hulls()[quill].link, 4);
-  const auto [sum, chord] = bounds(1, 0, quill);
+  const auto [sum, chord, axis] = bounds(1, 0, quill);
   ASSERT_LT(chord, sum);
   auto& bound = document_["segments"][1]["steps"][0]["to_next"]["hull_motion_bounds"][quill];
-  bound = chord * 0.98;
+  bound = std::min(chord, axis) * 0.98;
   const CheckReport report = check(document_);
   EXPECT_FALSE(report.accepted);
-  EXPECT_TRUE(names(report, "below both the exact bound and the chord bound"));
+  EXPECT_TRUE(names(report, "below the exact bound, the chord bound and the step's axis-distance bound"));
   // Just at the chord bound it holds (the checker decides the same inequality exactly).
   bound = chord;
   EXPECT_TRUE(check(document_).accepted);
@@ -144,16 +158,17 @@ TEST_F(CpLineCertificate, CheckerAllowsTheChordBoundOnlyOnCpSteps) {
   const auto& steps = run_.run.certificate.segments.at(0).steps;
   for (std::size_t k = 0; k + 1 < steps.size(); ++k) {
     for (std::size_t i = 0; i < cell_->hulls().size(); ++i) {
-      const auto [sum, chord] = bounds(0, k, i);
-      if (!(chord < 0.9 * sum)) continue;
-      document_["segments"][0]["steps"][k]["to_next"]["hull_motion_bounds"][i] = 0.9 * sum;
+      const auto [sum, chord, axis] = bounds(0, k, i);
+      const double proven = std::min(sum, axis);
+      if (!(chord < 0.9 * proven)) continue;
+      document_["segments"][0]["steps"][k]["to_next"]["hull_motion_bounds"][i] = 0.9 * proven;
       const CheckReport report = check(document_);
       EXPECT_FALSE(report.accepted);
       EXPECT_TRUE(names(report, "the recorded motion bound is below the exact bound"));
       return;
     }
   }
-  FAIL() << "no PTP transition where the chord formula is below 0.9 M_h";
+  FAIL() << "no PTP transition where the chord formula is below 0.9 min(M_h, M'_h)";
 }
 
 }  // namespace

@@ -27,7 +27,7 @@ cmake --build "$work/consumer" -j 2 >/dev/null
 data="$source_dir/data/ibm7545"
 got="$("$work/consumer/verify_sample" "$data/robot.txt" "$data/environment.txt" "$data/path.txt" 0.5)"
 echo "consumer: $got"
-[ "$got" = "verdict COLLISION, 37 steps" ] || { echo "unexpected consumer result" >&2; exit 1; }
+[ "$got" = "verdict COLLISION, 23 steps" ] || { echo "unexpected consumer result" >&2; exit 1; }
 status=0
 "$work/prefix/bin/grpvss" verify --robot "$data/robot.txt" --env "$data/environment.txt" \
   --path "$data/path.txt" --tolerance 0.5 --quiet || status=$?
@@ -43,5 +43,5 @@ result = grpvss.verify(sys.argv[2] + "/robot.txt", sys.argv[2] + "/environment.t
 print(f"verdict {result.verdict.name}, {result.step_count} steps")
 ' "$site" "$data")"
   echo "installed Python module: $got"
-  [ "$got" = "verdict COLLISION, 37 steps" ] || { echo "unexpected Python result" >&2; exit 1; }
+  [ "$got" = "verdict COLLISION, 23 steps" ] || { echo "unexpected Python result" >&2; exit 1; }
 fi

@@ -1,0 +1,142 @@
+#include "step_axis_radius.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "grpvss/geometry/directed_rounding.hpp"
+
+namespace grpvss::certify {
+namespace r = geometry::rounding;
+
+namespace {
+
+Eigen::Vector3d box_midpoint(const std::vector<Eigen::Vector3d>& points_L) {
+  Eigen::Vector3d lo = points_L.front();
+  Eigen::Vector3d hi = points_L.front();
+  for (const Eigen::Vector3d& p : points_L) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  return (lo + hi) * 0.5;  // any centre is sound: the radius is measured from it
+}
+
+// max |u - c| over the vertices, rounded up (each coordinate difference as a range).
+double largest_distance_up(const std::vector<Eigen::Vector3d>& points_L, const Eigen::Vector3d& c) {
+  r::UpwardRoundingScope upward;
+  double largest_square = 0.0;
+  for (const Eigen::Vector3d& u : points_L) {
+    double square = 0.0;
+    for (int k = 0; k < 3; ++k) {
+      square = r::add_up(square, r::square_up_of_range(r::sub_down(u[k], c[k]), r::sub_up(u[k], c[k])));
+    }
+    largest_square = std::max(largest_square, square);
+  }
+  return r::sqrt_up(largest_square);
+}
+
+// |c - o - s z| rounded up: each coordinate bracketed by directed rounding.
+// proof: proofs/motion-bound.md#axis-distance-evaluation
+double axis_point_distance_up(const Eigen::Vector3d& c, const Eigen::Vector3d& o,
+                              const Eigen::Vector3d& z, double s) {
+  double square = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    const double hi = r::sub_up(c[k], r::add_down(o[k], r::mul_down(s, z[k])));
+    const double lo = r::sub_down(c[k], r::add_up(o[k], r::mul_up(s, z[k])));
+    square = r::add_up(square, r::square_up_of_range(lo, hi));
+  }
+  return r::sqrt_up(square);
+}
+
+}  // namespace
+
+StepAxisRadii::StepAxisRadii(const RobotCell& cell)
+    : cell_(&cell), joints_(cell.chain().joint_count()) {
+  for (const LinkHull& hull : cell.hulls()) {
+    for (const Eigen::Vector3d& u : hull.raw_L) coordinate_limit_ = std::max(coordinate_limit_, u.cwiseAbs().maxCoeff());
+  }
+  for (const LinkHull& hull : cell.hulls()) {
+    center_L_.push_back(hull.raw_L.empty() ? Eigen::Vector3d::Zero() : box_midpoint(hull.raw_L));
+    radius_up_.push_back(hull.raw_L.empty() ? 0.0 : largest_distance_up(hull.raw_L, center_L_.back()));
+  }
+}
+
+void StepAxisRadii::axis_distances(const ProbeResult& probe, std::vector<double>& distances) const {
+  const std::vector<LinkHull>& hulls = cell_->hulls();
+  const auto joints = static_cast<std::size_t>(joints_);
+  distances.assign(hulls.size() * joints, 0.0);
+  if (probe.X_WJ.size() != joints || probe.X_WL.size() <= joints) {
+    // No frames kept with this probe: no tightening (R_jh stands).
+    std::fill(distances.begin(), distances.end(), std::numeric_limits<double>::infinity());
+    return;
+  }
+  for (std::size_t i = 0; i < hulls.size(); ++i) {
+    const int moving = std::min(hulls[i].link, joints_);
+    const Eigen::Vector3d c = probe.X_WL[static_cast<std::size_t>(hulls[i].link)] * center_L_[i];
+    for (int j = 1; j <= moving; ++j) {
+      const Eigen::Isometry3d& X_WJ = probe.X_WJ[static_cast<std::size_t>(j - 1)];
+      const Eigen::Vector3d o = X_WJ.translation();
+      const Eigen::Vector3d z = X_WJ.linear().col(2);
+      // Near the foot of the perpendicular, within the FK bound's reach (any s is sound).
+      const double s = std::clamp(z.dot(c - o), -coordinate_limit_, coordinate_limit_);
+      r::UpwardRoundingScope upward;
+      distances[i * joints + static_cast<std::size_t>(j - 1)] =
+          r::add_up(r::add_up(axis_point_distance_up(c, o, z, s), cell_->placement_error()),
+                    radius_up_[i]);
+    }
+  }
+}
+
+// proof: proofs/motion-bound.md#lemma-axis-distance-along-step
+double StepAxisRadii::motion_bound(int hull_index, const Eigen::VectorXd& increments_up,
+                                   const std::vector<double>& distances_from,
+                                   const std::vector<double>& distances_to) const {
+  const LinkHull& hull = cell_->hulls()[static_cast<std::size_t>(hull_index)];
+  const HullRadiusTable& radii = cell_->radii();
+  const int moving = std::min(hull.link, joints_);
+  const std::size_t row = static_cast<std::size_t>(hull_index) * static_cast<std::size_t>(joints_);
+  r::UpwardRoundingScope upward;
+  // tail_j = sum_{j<m<=i} w_m V_m, accumulated from the hull's link down.
+  double tail = 0.0;
+  double bound = 0.0;
+  for (int j = moving; j >= 1; --j) {
+    const double increment = increments_up[j - 1];
+    if (radii.joint_type(j) == JointType::kRevolute) {
+      const double at_ends = std::min(distances_from[row + static_cast<std::size_t>(j - 1)],
+                                      distances_to[row + static_cast<std::size_t>(j - 1)]);
+      const double rho = std::min(radii.radius(hull.link, hull.hull, j), r::add_up(at_ends, tail));
+      bound = r::add_up(bound, r::mul_up(increment, rho));
+    } else {
+      bound = r::add_up(bound, increment);
+    }
+    tail = r::add_up(tail, r::mul_up(radii.motion_bound_weight(hull.link, hull.hull, j), increment));
+  }
+  return bound;
+}
+
+void StepAxisRadii::tighten_proposal_weights(const std::vector<double>& distances,
+                                             std::vector<double>& weights) const {
+  const std::vector<LinkHull>& hulls = cell_->hulls();
+  const auto joints = static_cast<std::size_t>(joints_);
+  for (std::size_t i = 0; i < hulls.size(); ++i) {
+    const int moving = std::min(hulls[i].link, joints_);
+    for (int joint = 1; joint <= moving; ++joint) {
+      if (cell_->radii().joint_type(joint) != JointType::kRevolute) continue;
+      double& weight = weights[i * joints + static_cast<std::size_t>(joint - 1)];
+      weight = std::min(weight, distances[i * joints + static_cast<std::size_t>(joint - 1)]);
+    }
+  }
+}
+
+Eigen::VectorXd increments_up(const Eigen::VectorXd& q_from, const Eigen::VectorXd& q_to,
+                              const Eigen::VectorXd& joint_variation) {
+  if (joint_variation.size() > 0) return joint_variation.cwiseAbs();
+  Eigen::VectorXd increments(q_from.size());
+  r::UpwardRoundingScope upward;
+  for (Eigen::Index j = 0; j < q_from.size(); ++j) {
+    increments[j] = std::max(r::sub_up(q_to[j], q_from[j]), r::sub_up(q_from[j], q_to[j]));
+  }
+  return increments;
+}
+
+}  // namespace grpvss::certify

@@ -1,0 +1,52 @@
+#pragma once
+// The configuration-dependent motion bound M'_h: each hull's distance from each joint axis over
+// the step, bounded from where the hull is at the step's ends instead of over every
+// configuration within the limits (R_jh). proof: proofs/motion-bound.md#lemma-axis-distance-along-step
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "cell_probe.hpp"
+#include "grpvss/certify/robot_cell.hpp"
+
+namespace grpvss::certify {
+
+class StepAxisRadii {
+ public:
+  /// Each hull's link-frame ball (its box's midpoint, its largest vertex distance rounded up)
+  /// and L, the largest |coordinate| of any hull vertex.
+  explicit StepAxisRadii(const RobotCell& cell);
+
+  /// D_jh at the probe's configuration for every hull and joint 1..N, at [hull * N + j - 1]:
+  /// an upper bound on the distance of every point of the exactly placed hull from axis j
+  /// (0 for joints after the hull's link). proof: proofs/motion-bound.md#axis-distance-evaluation
+  void axis_distances(const ProbeResult& probe, std::vector<double>& distances) const;
+
+  /// M'_h rounded up, for joint increments (or variations) `increments_up` that are upper
+  /// bounds, with the axis distances of both ends of the step.
+  double motion_bound(int hull_index, const Eigen::VectorXd& increments_up,
+                      const std::vector<double>& distances_from,
+                      const std::vector<double>& distances_to) const;
+
+  /// The proposal's weights of |dq_j| at one configuration: R_jh lowered to D_jh (the first
+  /// hulls x joints entries of `weights`, M_h's coefficients; self-pair rows are kept).
+  void tighten_proposal_weights(const std::vector<double>& distances,
+                                std::vector<double>& weights) const;
+
+  int joint_count() const { return joints_; }
+
+ private:
+  const RobotCell* cell_;
+  int joints_ = 0;
+  double coordinate_limit_ = 0.0;        ///< L
+  std::vector<Eigen::Vector3d> center_L_;  ///< c_h per hull
+  std::vector<double> radius_up_;        ///< r_h per hull
+};
+
+/// Per joint an upper bound on |q_to - q_from| (upward rounding), or |variation| when the
+/// step has a joint-variation bound.
+Eigen::VectorXd increments_up(const Eigen::VectorXd& q_from, const Eigen::VectorXd& q_to,
+                              const Eigen::VectorXd& joint_variation);
+
+}  // namespace grpvss::certify
