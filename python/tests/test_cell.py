@@ -36,8 +36,8 @@ def test_a_cell_loads_with_names_units_and_defaults():
         cell.robot.dh
 
 
-@pytest.mark.parametrize("name,verdict,steps", [("path-clear.txt", "CLEAR", 6),
-                                                ("path-collision.txt", "COLLISION", 6)])
+@pytest.mark.parametrize("name,verdict,steps", [("path-clear.txt", "CLEAR", 4),
+                                                ("path-collision.txt", "COLLISION", 8)])
 def test_cell_verify_is_the_clis(tmp_path, name, verdict, steps):
     path = str(SIXAXIS / name)
     code, report_text, certificate_text = cli_verify_cell(tmp_path, path)

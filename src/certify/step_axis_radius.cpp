@@ -126,6 +126,16 @@ void StepAxisRadii::tighten_proposal_weights(const std::vector<double>& distance
       weight = std::min(weight, distances[i * joints + static_cast<std::size_t>(joint - 1)]);
     }
   }
+  // A self pair's row: hull b's weights for the joints after link a (0 before).
+  const std::vector<SelfPairHulls>& pairs = cell_->self_pairs();
+  for (std::size_t p = 0; p < pairs.size(); ++p) {
+    const std::size_t row = (hulls.size() + p) * joints;
+    const std::size_t b_row = static_cast<std::size_t>(pairs[p].b) * joints;
+    if (weights.size() < row + joints) break;
+    for (std::size_t j = 0; j < joints; ++j) {
+      if (weights[row + j] > 0.0) weights[row + j] = std::min(weights[row + j], weights[b_row + j]);
+    }
+  }
 }
 
 Eigen::VectorXd increments_up(const Eigen::VectorXd& q_from, const Eigen::VectorXd& q_to,

@@ -30,7 +30,8 @@ class StepAxisRadii {
                       const std::vector<double>& distances_to) const;
 
   /// The proposal's weights of |dq_j| at one configuration: R_jh lowered to D_jh (the first
-  /// hulls x joints entries of `weights`, M_h's coefficients; self-pair rows are kept).
+  /// hulls x joints entries of `weights`, M_h's coefficients), and each self pair's row
+  /// (hull b's weights after link a) lowered with its hull b's.
   void tighten_proposal_weights(const std::vector<double>& distances,
                                 std::vector<double>& weights) const;
 
@@ -42,6 +43,13 @@ class StepAxisRadii {
   double coordinate_limit_ = 0.0;        ///< L
   std::vector<Eigen::Vector3d> center_L_;  ///< c_h per hull
   std::vector<double> radius_up_;        ///< r_h per hull
+};
+
+/// One transition's axis distances at both ends, with the increments (rounded up).
+struct StepAxisDistances {
+  const StepAxisRadii* radii = nullptr;
+  std::vector<double> from, to;
+  Eigen::VectorXd increments_up;
 };
 
 /// Per joint an upper bound on |q_to - q_from| (upward rounding), or |variation| when the

@@ -41,7 +41,8 @@ GoverningTerm governing_term(const HullState& from, const HullState& to, double 
 // to the other). proof: proofs/two-ball-cover.md#lemma-relative-motion,
 // proofs/two-ball-cover.md#relative-frame
 double self_pair_motion_bound(const RobotCell& cell, const SelfPairHulls& pair,
-                              const TransitionRecord& record, const Eigen::VectorXd& dq) {
+                              const TransitionRecord& record, const Eigen::VectorXd& dq,
+                              const StepAxisDistances* axis) {
   namespace r = geometry::rounding;
   const LinkHull& a = cell.hulls()[static_cast<std::size_t>(pair.a)];
   const LinkHull& b = cell.hulls()[static_cast<std::size_t>(pair.b)];
@@ -49,17 +50,25 @@ double self_pair_motion_bound(const RobotCell& cell, const SelfPairHulls& pair,
                                              record.hull_motion_bounds[static_cast<std::size_t>(pair.b)]);
   Eigen::VectorXd relative = dq;
   relative.head(a.link).setZero();  // joints 1..a move link a's frame, not b within it
-  return std::min(both, cell.radii().hull_motion_bound(b.link, b.hull, relative));
+  double bound = std::min(both, cell.radii().hull_motion_bound(b.link, b.hull, relative));
+  if (axis != nullptr && bound > 0.0) {
+    // Distances from the axes a+1..b are the same seen from link a's frame.
+    // proof: proofs/motion-bound.md#lemma-axis-distance-along-step
+    Eigen::VectorXd relative_up = axis->increments_up;
+    relative_up.head(a.link).setZero();
+    bound = std::min(bound, axis->radii->motion_bound(pair.b, relative_up, axis->from, axis->to));
+  }
+  return bound;
 }
 
 void judge_self_pairs(const RobotCell& cell, const ProbeResult& from, const ProbeResult& to,
-                      TransitionRecord& record) {
+                      TransitionRecord& record, const StepAxisDistances* axis) {
   const std::vector<SelfPairHulls>& pairs = cell.self_pairs();
   const Eigen::VectorXd dq = to.q - from.q;
   for (std::size_t p = 0; p < pairs.size(); ++p) {
     const auto a = static_cast<std::size_t>(pairs[p].a);
     const auto b = static_cast<std::size_t>(pairs[p].b);
-    const double bound = self_pair_motion_bound(cell, pairs[p], record, dq);
+    const double bound = self_pair_motion_bound(cell, pairs[p], record, dq, axis);
     const double allowance = allowance_down(from.self_pairs[p].distance, to.self_pairs[p].distance);
     if (!(bound < allowance)) {
       record.certified = false;
@@ -87,18 +96,18 @@ TransitionRecord judge_transition(const RobotCell& cell, const ProbeResult& from
   const Eigen::VectorXd dq = joint_variation.size() > 0 ? joint_variation : Eigen::VectorXd(to.q - from.q);
   const double two_delta = 2.0 * cell.tolerance();
   // proof: proofs/motion-bound.md#lemma-axis-distance-along-step
-  std::vector<double> distances_from, distances_to;
-  Eigen::VectorXd increments;
+  StepAxisDistances axis;
   if (step_radii != nullptr) {
-    step_radii->axis_distances(from, distances_from);
-    step_radii->axis_distances(to, distances_to);
-    increments = increments_up(from.q, to.q, joint_variation);
+    axis.radii = step_radii;
+    step_radii->axis_distances(from, axis.from);
+    step_radii->axis_distances(to, axis.to);
+    axis.increments_up = increments_up(from.q, to.q, joint_variation);
   }
   for (std::size_t i = 0; i < cell.hulls().size(); ++i) {
     double bound = hull_motion_bound(cell, cell.hulls()[i], from, to, dq, joint_linear);
     if (step_radii != nullptr && bound > 0.0) {
-      bound = std::min(bound, step_radii->motion_bound(static_cast<int>(i), increments,
-                                                       distances_from, distances_to));
+      bound = std::min(bound, step_radii->motion_bound(static_cast<int>(i), axis.increments_up,
+                                                       axis.from, axis.to));
     }
     const double allowance = allowance_down(from.hulls[i].radius, to.hulls[i].radius);
     GoverningTerm governing =
@@ -111,7 +120,7 @@ TransitionRecord judge_transition(const RobotCell& cell, const ProbeResult& from
     record.hull_allowances.push_back(allowance);
     record.governing.push_back(governing);
   }
-  judge_self_pairs(cell, from, to, record);
+  judge_self_pairs(cell, from, to, record, step_radii != nullptr ? &axis : nullptr);
   return record;
 }
 

@@ -31,8 +31,10 @@ TransitionRecord judge_transition(const RobotCell& cell, const ProbeResult& from
 /// \brief Appends to `record` (its hull bounds filled) every self pair's M_a + M_b and
 /// d_k + d_{k+1}, and uncertifies it unless M_a + M_b < d_k + d_{k+1} for every pair.
 /// proof: proofs/two-ball-cover.md#lemma-relative-motion
+/// With `axis` (the step's axis distances at both ends), the relative bound may be M'_{b|a}
+/// (proofs/motion-bound.md#lemma-axis-distance-along-step, joints 1..a frozen).
 void judge_self_pairs(const RobotCell& cell, const ProbeResult& from, const ProbeResult& to,
-                      TransitionRecord& record);
+                      TransitionRecord& record, const StepAxisDistances* axis = nullptr);
 
 /// max(r_k + r_{k+1} - 2 Delta, max(r_k, r_{k+1}) - Delta), each side rounded down: a motion
 /// bound at most this keeps g >= Delta. proof: proofs/two-ball-cover.md#lemma-tolerance-along-motion

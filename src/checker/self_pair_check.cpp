@@ -13,20 +13,6 @@ std::string pair_where(const CheckedCell& cell, std::size_t p, const std::string
   return where + " self pair " + self_pair_label(cell.robot(), cell.robot().self_collision_pairs[p]);
 }
 
-// Hull b's exact joint-sum bound over joints link_a+1..b: its path length in link a's frame.
-// proof: proofs/two-ball-cover.md#relative-frame, proofs/motion-bound.md#lemma-path-length
-Rational relative_bound(const CheckedCell& cell, const CheckedHull& a, const CheckedHull& b,
-                        const StepCertificate& from, const StepCertificate& to) {
-  Rational bound = 0;
-  for (int joint = a.link + 1; joint <= b.link; ++joint) {
-    const Rational increment = abs(exact(to.q[joint - 1]) - exact(from.q[joint - 1]));
-    bound += cell.robot().joints[static_cast<std::size_t>(joint - 1)].type == JointType::kRevolute
-                 ? increment * b.axis_radius[static_cast<std::size_t>(joint - 1)]
-                 : increment;
-  }
-  return bound;
-}
-
 // The gap g = max((d_k + d_{k+1} - M)/2, max(d_k, d_{k+1}) - M), at least 0, exactly.
 // proof: proofs/two-ball-cover.md#corollary-self-tolerance-along-motion
 Rational kept_gap(const Rational& distance_from, const Rational& distance_to, const Rational& bound) {
@@ -89,6 +75,7 @@ void check_self_pair_transition(const CheckedCell& cell, const Certificate& head
                                 const StepCertificate& from, const StepCertificate& to,
                                 const TransitionRecord& claimed,
                                 const std::vector<std::optional<Rational>>& hull_bounds,
+                                const std::vector<Rational>& relative_bounds,
                                 const std::vector<Rational>& distance_from,
                                 const std::vector<Rational>& distance_to, CheckLedger& ledger,
                                 ClaimFacts& facts, const std::string& where) {
@@ -100,8 +87,9 @@ void check_self_pair_transition(const CheckedCell& cell, const Certificate& head
     const auto b = static_cast<std::size_t>(pairs[p].second);
     ledger.decided();
     bool proven = false;
-    if (configurations_usable && p < distance_from.size() && p < distance_to.size()) {
-      Rational bound = relative_bound(cell, cell.hulls()[a], cell.hulls()[b], from, to);
+    if (configurations_usable && p < distance_from.size() && p < distance_to.size() &&
+        p < relative_bounds.size()) {
+      Rational bound = relative_bounds[p];
       if (a < hull_bounds.size() && b < hull_bounds.size() && hull_bounds[a] && hull_bounds[b] &&
           *hull_bounds[a] + *hull_bounds[b] < bound) {
         bound = *hull_bounds[a] + *hull_bounds[b];

@@ -36,6 +36,7 @@ void check_self_pair_transition(const CheckedCell& cell, const Certificate& head
                                 const StepCertificate& from, const StepCertificate& to,
                                 const TransitionRecord& claimed,
                                 const std::vector<std::optional<Rational>>& hull_bounds,
+                                const std::vector<Rational>& relative_bounds,
                                 const std::vector<Rational>& distance_from,
                                 const std::vector<Rational>& distance_to, CheckLedger& ledger,
                                 ClaimFacts& facts, const std::string& where);

@@ -28,6 +28,7 @@ void TransitionCheck::check(const StepCertificate& from, const StepCertificate& 
   const TransitionRecord& claimed = from.to_next;
   const std::vector<CheckedHull>& hulls = cell_.hulls();
   hull_bounds_.clear();
+  self_pair_relative_bounds_.clear();
   // A step with the wrong joint count was already rejected by the step check; reading its q
   // here would run past the vector (found reviewing for the checker fuzz target).
   const int joints = cell_.robot().joint_count();
@@ -93,6 +94,21 @@ void TransitionCheck::check(const StepCertificate& from, const StepCertificate& 
     }
   }
   if (!certified) facts_.all_transitions_certified = false;
+  for (const auto& [a, b] : cell_.self_pairs()) {
+    const CheckedHull& hull_a = hulls[static_cast<std::size_t>(a)];
+    const CheckedHull& hull_b = hulls[static_cast<std::size_t>(b)];
+    std::vector<Rational> relative = increments;  // joints 1..a move link a's frame, not b in it
+    for (int j = 0; j < std::min(hull_a.link, joints); ++j) relative[static_cast<std::size_t>(j)] = 0;
+    Rational joint_sum = 0;
+    for (int joint = hull_a.link + 1; joint <= std::min(hull_b.link, joints); ++joint) {
+      const Rational& increment = relative[static_cast<std::size_t>(joint - 1)];
+      joint_sum += cell_.robot().joints[joint - 1].type == JointType::kRevolute
+                       ? increment * hull_b.axis_radius[static_cast<std::size_t>(joint - 1)]
+                       : increment;
+    }
+    const Rational step_axis = step_axis_bound(hull_b, relative);
+    self_pair_relative_bounds_.push_back(std::min(joint_sum, step_axis));
+  }
 }
 
 // proof: proofs/motion-bound.md#lemma-motion-bound

@@ -36,6 +36,12 @@ class TransitionCheck {
   /// Per hull, the motion bound the last check() proved (>= every point's path length over
   /// the transition); nullopt where none was proven, empty when the record was unusable.
   const std::vector<std::optional<Rational>>& hull_bounds() const { return hull_bounds_; }
+  /// Per self pair (CheckedCell::self_pairs() order), an exact bound on the path of hull b in
+  /// link a's frame over the last check()'s transition: the smaller of the joint-sum bound over
+  /// joints a+1..b and M'_{b|a}, both with the joints' variations on a trajectory piece; empty
+  /// when the record was unusable. proof: proofs/two-ball-cover.md#relative-frame,
+  /// proofs/motion-bound.md#lemma-axis-distance-along-step
+  const std::vector<Rational>& self_pair_relative_bounds() const { return self_pair_relative_bounds_; }
 
  private:
   /// The exact joint-sum bound M_h of the hull over the transition; with `joint_variation`
@@ -71,6 +77,7 @@ class TransitionCheck {
   ClaimFacts& facts_;
   MotionClearances& clearances_;
   std::vector<std::optional<Rational>> hull_bounds_;
+  std::vector<Rational> self_pair_relative_bounds_;
   kinematics::Workspace from_frames_, to_frames_;  ///< this checker's own FK at both ends
 };
 

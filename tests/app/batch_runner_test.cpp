@@ -219,13 +219,13 @@ TEST_F(BatchRunner, CellJobsVerifyAsVerifyDoesWithTheCellsDefaultsAndNames) {
   BatchStatistics statistics;
   const std::vector<std::string> lines = run(jobs, 2, &statistics);
   ASSERT_EQ(lines.size(), 2u);
-  EXPECT_NE(lines[0].find("\"verdict\":\"CLEAR\",\"exit_code\":0,\"steps\":6,"), std::string::npos)
+  EXPECT_NE(lines[0].find("\"verdict\":\"CLEAR\",\"exit_code\":0,\"steps\":4,"), std::string::npos)
       << lines[0];
   EXPECT_NE(lines[0].find("\"link\":4,\"obstacle\":"), std::string::npos) << lines[0];
   EXPECT_NE(lines[0].find("\"link_name\":\"link_4\",\"obstacle_name\":\"post\"}"),
             std::string::npos)
       << lines[0];
-  EXPECT_NE(lines[1].find("\"verdict\":\"COLLISION\",\"exit_code\":1,\"steps\":6,"),
+  EXPECT_NE(lines[1].find("\"verdict\":\"COLLISION\",\"exit_code\":1,\"steps\":8,"),
             std::string::npos)
       << lines[1];
   EXPECT_EQ(statistics.cells_built, 1u);

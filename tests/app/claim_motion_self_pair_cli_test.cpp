@@ -44,14 +44,14 @@ TEST_F(ClaimMotionSelfPairCli, TheSummaryAndTheJsonNameBothLinksOfThePair) {
   ASSERT_EQ(verify.exit_code, grpvss::app::kExitWithinTolerance) << verify.out << verify.err;
   EXPECT_NE(verify.out.find("verdict: WITHIN_TOLERANCE\n"), std::string::npos) << verify.out;
   EXPECT_NE(verify.out.find("claim motion not met: panda_link2 / panda_hand_tcp keeps only 0.0049 "
-                            "along steps 45-46 (tolerance 0.005)"),
+                            "along steps 29-30 (tolerance 0.005)"),
             std::string::npos)
       << verify.out;
   const json report = json::parse(grpvss::test::read_text_file(directory_ + "/r.json"));
   const json schema = json::parse(grpvss::test::read_text_file(kSource + "/docs/report.schema.json"));
   EXPECT_EQ(grpvss::test::check_json_structure(report, schema), std::vector<std::string>{});
   const json& shortfall = report.at("tolerance_shortfall");
-  EXPECT_EQ(shortfall.at("step"), 46);
+  EXPECT_EQ(shortfall.at("step"), 30);
   EXPECT_EQ(shortfall.at("link"), 2);
   EXPECT_EQ(shortfall.at("other_link"), 7);
   EXPECT_TRUE(shortfall.at("obstacle").is_null());

@@ -460,7 +460,7 @@ TEST(InteractiveCli, ACellReplacesTheRobotAndEnvironmentQuestions) {
               "CELL FILE " + six + "cell.yaml: 6 OBSTACLE HULLS (pedestal, table, fixture piece 0, "
                                    "fixture piece 1, fixture piece 2, post)\n",
               "ENTER THE TOLERANCE VALUE (DEFAULT = 0.005)\n", "THE TOLERANCE VALUE = 0.005\n",
-              "END EFFECTOR POSITION ", "verdict: COLLISION\nmode: certified  tolerance: 0.005  steps: 6 ",
+              "END EFFECTOR POSITION ", "verdict: COLLISION\nmode: certified  tolerance: 0.005  steps: 8 ",
               "interference: link_4 hull 0 / post, ", "GRPVSS SESSION ENDED\n"}))
       << r.out;
   EXPECT_EQ(r.out.find("WHICH ROBOT ARE YOU GOING TO SIMULATE"), std::string::npos) << r.out;

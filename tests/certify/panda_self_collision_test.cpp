@@ -34,16 +34,16 @@ TEST(PandaSelfCollision, FoldingTheHandIntoTheUpperArmIsACollisionNamingBothLink
   const VerificationResult& result = r.verified.result;
   EXPECT_EQ(result.verdict, Verdict::kCollision);
   ASSERT_TRUE(result.collision_step.has_value());
-  // 29 steps (26 before the claim `motion` held self pairs to a gap of Delta: the steps close in
+  // 19 steps (26 before the claim `motion` held self pairs to a gap of Delta: the steps close in
   // on the fold until they give up aiming at g >= Delta; 50 before the step's axis distances).
-  EXPECT_EQ(*result.collision_step, 29);
+  EXPECT_EQ(*result.collision_step, 19);
   ASSERT_FALSE(result.self_collision_episodes.empty());
   const SelfCollisionEpisode& first = result.self_collision_episodes.front();
   EXPECT_EQ(self_pair_label(r.cell.robot, first.pair), "panda_hand_sc / panda_link2_sc");
   EXPECT_EQ(link_label(r.cell.robot, first.pair.link_b), "panda_hand_tcp");  // the hand rides link 7
   EXPECT_EQ(first.pair.link_b, 7);
   EXPECT_EQ(link_label(r.cell.robot, first.pair.link_a), "panda_link2");
-  EXPECT_EQ(first.first_step, 29);
+  EXPECT_EQ(first.first_step, 19);
   EXPECT_TRUE(result.interference_episodes.empty());  // the table is never touched
   const CheckReport report = check(r);
   EXPECT_TRUE(report.accepted) << (report.failures.empty() ? "" : report.failures.front());
