@@ -54,6 +54,10 @@ struct ProbeResult {
   std::vector<Eigen::Isometry3d> X_WL;
   /// X_WJ[j-1]: joint frame J_j (its z axis is joint j's axis), as forward kinematics computed it.
   std::vector<Eigen::Isometry3d> X_WJ;
+  /// D_jh at `axis_distances_q` (step_axis_radius.hpp), kept by the certified march so that each
+  /// configuration's axis distances are evaluated once; stale when axis_distances_q != q.
+  std::vector<double> axis_distances;
+  Eigen::VectorXd axis_distances_q;
   std::vector<HullState> hulls;  ///< index = RobotCell::hulls() index
   std::vector<PairEvidence> evidence;
   std::vector<InterferencePoint> interference_points;  ///< filled only when requested

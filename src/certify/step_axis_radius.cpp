@@ -70,21 +70,47 @@ void StepAxisRadii::axis_distances(const ProbeResult& probe, std::vector<double>
     std::fill(distances.begin(), distances.end(), std::numeric_limits<double>::infinity());
     return;
   }
+  // The centres placed and each axis parameter s taken in round-to-nearest, as the FK bound
+  // and the checker assume; then only the distances are evaluated upward, in one scope.
+  thread_local std::vector<Eigen::Vector3d> centers_W;
+  thread_local std::vector<double> parameters;
+  centers_W.resize(hulls.size());
+  parameters.assign(hulls.size() * joints, 0.0);
   for (std::size_t i = 0; i < hulls.size(); ++i) {
-    const int moving = std::min(hulls[i].link, joints_);
-    const Eigen::Vector3d c = probe.X_WL[static_cast<std::size_t>(hulls[i].link)] * center_L_[i];
-    for (int j = 1; j <= moving; ++j) {
+    centers_W[i] = probe.X_WL[static_cast<std::size_t>(hulls[i].link)] * center_L_[i];
+    for (int j = 1; j <= std::min(hulls[i].link, joints_); ++j) {
       const Eigen::Isometry3d& X_WJ = probe.X_WJ[static_cast<std::size_t>(j - 1)];
-      const Eigen::Vector3d o = X_WJ.translation();
-      const Eigen::Vector3d z = X_WJ.linear().col(2);
       // Near the foot of the perpendicular, within the FK bound's reach (any s is sound).
-      const double s = std::clamp(z.dot(c - o), -coordinate_limit_, coordinate_limit_);
-      r::UpwardRoundingScope upward;
-      distances[i * joints + static_cast<std::size_t>(j - 1)] =
-          r::add_up(r::add_up(axis_point_distance_up(c, o, z, s), cell_->placement_error()),
-                    radius_up_[i]);
+      parameters[i * joints + static_cast<std::size_t>(j - 1)] =
+          std::clamp(X_WJ.linear().col(2).dot(centers_W[i] - X_WJ.translation()),
+                     -coordinate_limit_, coordinate_limit_);
     }
   }
+  r::UpwardRoundingScope upward;
+  for (std::size_t i = 0; i < hulls.size(); ++i) {
+    for (int j = 1; j <= std::min(hulls[i].link, joints_); ++j) {
+      const std::size_t at = i * joints + static_cast<std::size_t>(j - 1);
+      const Eigen::Isometry3d& X_WJ = probe.X_WJ[static_cast<std::size_t>(j - 1)];
+      distances[at] = r::add_up(r::add_up(axis_point_distance_up(centers_W[i], X_WJ.translation(),
+                                                                 X_WJ.linear().col(2), parameters[at]),
+                                          cell_->placement_error()),
+                                radius_up_[i]);
+    }
+  }
+}
+
+const std::vector<double>& StepAxisRadii::kept_or_computed(const ProbeResult& probe,
+                                                           std::vector<double>& scratch) const {
+  const bool kept = probe.axis_distances.size() == cell_->hulls().size() * static_cast<std::size_t>(joints_) &&
+                    probe.axis_distances_q.size() == probe.q.size() && probe.axis_distances_q == probe.q;
+  if (kept) return probe.axis_distances;
+  axis_distances(probe, scratch);
+  return scratch;
+}
+
+void StepAxisRadii::keep(ProbeResult& probe) const {
+  axis_distances(probe, probe.axis_distances);
+  probe.axis_distances_q = probe.q;
 }
 
 // proof: proofs/motion-bound.md#lemma-axis-distance-along-step
@@ -114,27 +140,14 @@ double StepAxisRadii::motion_bound(int hull_index, const Eigen::VectorXd& increm
   return bound;
 }
 
-void StepAxisRadii::tighten_proposal_weights(const std::vector<double>& distances,
-                                             std::vector<double>& weights) const {
-  const std::vector<LinkHull>& hulls = cell_->hulls();
+void StepAxisRadii::proposal_axis_distances(const ProbeResult& probe,
+                                            std::vector<double>& distances) const {
+  std::vector<double> scratch;
+  distances = kept_or_computed(probe, scratch);
   const auto joints = static_cast<std::size_t>(joints_);
-  for (std::size_t i = 0; i < hulls.size(); ++i) {
-    const int moving = std::min(hulls[i].link, joints_);
-    for (int joint = 1; joint <= moving; ++joint) {
-      if (cell_->radii().joint_type(joint) != JointType::kRevolute) continue;
-      double& weight = weights[i * joints + static_cast<std::size_t>(joint - 1)];
-      weight = std::min(weight, distances[i * joints + static_cast<std::size_t>(joint - 1)]);
-    }
-  }
-  // A self pair's row: hull b's weights for the joints after link a (0 before).
-  const std::vector<SelfPairHulls>& pairs = cell_->self_pairs();
-  for (std::size_t p = 0; p < pairs.size(); ++p) {
-    const std::size_t row = (hulls.size() + p) * joints;
-    const std::size_t b_row = static_cast<std::size_t>(pairs[p].b) * joints;
-    if (weights.size() < row + joints) break;
-    for (std::size_t j = 0; j < joints; ++j) {
-      if (weights[row + j] > 0.0) weights[row + j] = std::min(weights[row + j], weights[b_row + j]);
-    }
+  for (const SelfPairHulls& pair : cell_->self_pairs()) {
+    const std::size_t b_row = static_cast<std::size_t>(pair.b) * joints;
+    for (std::size_t j = 0; j < joints; ++j) distances.push_back(distances[b_row + j]);
   }
 }
 

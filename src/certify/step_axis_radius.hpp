@@ -22,6 +22,12 @@ class StepAxisRadii {
   /// an upper bound on the distance of every point of the exactly placed hull from axis j
   /// (0 for joints after the hull's link). proof: proofs/motion-bound.md#axis-distance-evaluation
   void axis_distances(const ProbeResult& probe, std::vector<double>& distances) const;
+  /// The probe's kept distances when they are of its configuration, else axis_distances()
+  /// into `scratch`.
+  const std::vector<double>& kept_or_computed(const ProbeResult& probe,
+                                              std::vector<double>& scratch) const;
+  /// Keeps the probe's axis distances in it (ProbeResult::axis_distances).
+  void keep(ProbeResult& probe) const;
 
   /// M'_h rounded up, for joint increments (or variations) `increments_up` that are upper
   /// bounds, with the axis distances of both ends of the step.
@@ -29,11 +35,9 @@ class StepAxisRadii {
                       const std::vector<double>& distances_from,
                       const std::vector<double>& distances_to) const;
 
-  /// The proposal's weights of |dq_j| at one configuration: R_jh lowered to D_jh (the first
-  /// hulls x joints entries of `weights`, M_h's coefficients), and each self pair's row
-  /// (hull b's weights after link a) lowered with its hull b's.
-  void tighten_proposal_weights(const std::vector<double>& distances,
-                                std::vector<double>& weights) const;
+  /// axis_distances() with one more row per self pair (hull b's, in RobotCell::self_pairs()
+  /// order): the proposal's D rows beside its weights (step_march.cpp).
+  void proposal_axis_distances(const ProbeResult& probe, std::vector<double>& distances) const;
 
   int joint_count() const { return joints_; }
 

@@ -106,6 +106,7 @@ bool CertifiedMarch::march_segment(const SegmentPath& path, int segment) {
       if (cp == Outcome::kStop) return false;
     }
     probe_trial(*q1);
+    step_radii_.keep(trial_);  // evaluated once per configuration: the proposal reuses them
     const TransitionRecord transition =
         judge_transition(cell_, current_, trial_, trial.s1 >= end_, path.is_cp(),
                          path.joint_variation(s_, trial.s1), &step_radii_);
@@ -187,15 +188,13 @@ double CertifiedMarch::predicted_ptp_step(const SegmentPath& path, double max_st
   }
   const double s = s_;
   const Eigen::VectorXd& q = current_.q;
-  // Weighted by where the hulls are now, not by the worst configuration (M'_h's first order).
+  // Weighted by where the hulls are now, not by the worst configuration (M'_h's form).
   std::vector<double> distances;
-  step_radii_.axis_distances(current_, distances);
-  std::vector<double> weights = proposal_weights_;
-  step_radii_.tighten_proposal_weights(distances, weights);
+  step_radii_.proposal_axis_distances(current_, distances);
   // PTP: the profile; a trajectory piece: its interpolation (the transition still decides).
   return certify::predicted_ptp_step([&](double candidate) { return *path.q_at(s + candidate, q); },
-                                     current_.q, max_step, weights, hulls, has_trend,
-                                     previous_step_);
+                                     current_.q, max_step, proposal_weights_, hulls, has_trend,
+                                     previous_step_, distances);
 }
 
 namespace {

@@ -43,7 +43,7 @@ double predicted_ptp_step(const std::function<Eigen::VectorXd(double)>& joints_a
                           const Eigen::VectorXd& q_now, double max_step,
                           const std::vector<double>& weights,
                           const std::vector<ProposalHull>& hulls, bool has_trend,
-                          double previous_step) {
+                          double previous_step, const std::vector<double>& axis_distances) {
   const std::size_t joints = static_cast<std::size_t>(q_now.size());
   const auto fits = [&](double candidate) {
     const Eigen::VectorXd dq = (joints_at(candidate) - q_now).cwiseAbs();
@@ -54,7 +54,13 @@ double predicted_ptp_step(const std::function<Eigen::VectorXd(double)>& joints_a
       if (!(radius > 0.0) || hulls[i].expanded_interferes) continue;
       // A proposal needs no rounding care: M_h in plain double (judge_transition decides).
       double bound = 0.0;
-      for (std::size_t j = 0; j < joints; ++j) bound += weights[i * joints + j] * dq[j];
+      double tail = 0.0;  // what the joints after j may move the hull during the step
+      for (std::size_t j = joints; j-- > 0;) {
+        const double weight = weights[i * joints + j];
+        const double near = axis_distances.empty() ? weight : axis_distances[i * joints + j] + tail;
+        bound += std::min(weight, near) * dq[j];
+        tail += weight * dq[j];
+      }
       const double trend = has_trend ? radius - hulls[i].previous_radius : 0.0;
       const double expected_far_radius =
           std::max(radius - bound, radius + trend * candidate / previous_step);

@@ -41,11 +41,14 @@ struct ProposalHull {
 /// \param joints_at the segment's joints at parameter s + step
 /// \param weights [hull * joints + j]: M_h's coefficient of |dq_j| (R_jh, 1 or 0)
 /// \param has_trend whether previous_radius / previous_step are meaningful
+/// \param axis_distances when not empty, [hull * joints + j]: D_jh at q_now; the bound is then
+///        M'_h's form, sum_j |dq_j| min(w_j, D_j + sum_{m>j} w_m |dq_m|)
+///        (proofs/motion-bound.md#lemma-axis-distance-along-step)
 double predicted_ptp_step(const std::function<Eigen::VectorXd(double)>& joints_at,
                           const Eigen::VectorXd& q_now, double max_step,
                           const std::vector<double>& weights,
                           const std::vector<ProposalHull>& hulls, bool has_trend,
-                          double previous_step);
+                          double previous_step, const std::vector<double>& axis_distances = {});
 
 /// \brief CP steps against the joint-path model (proofs/cp-joint-path.md#model): a smooth
 /// joint-linear path strays from the line by about the square of the step. A trial that failed

@@ -99,8 +99,9 @@ TransitionRecord judge_transition(const RobotCell& cell, const ProbeResult& from
   StepAxisDistances axis;
   if (step_radii != nullptr) {
     axis.radii = step_radii;
-    step_radii->axis_distances(from, axis.from);
-    step_radii->axis_distances(to, axis.to);
+    std::vector<double> scratch;
+    axis.from = step_radii->kept_or_computed(from, scratch);
+    axis.to = step_radii->kept_or_computed(to, scratch);
     axis.increments_up = increments_up(from.q, to.q, joint_variation);
   }
   for (std::size_t i = 0; i < cell.hulls().size(); ++i) {

@@ -52,7 +52,7 @@ TEST_F(BatchTrajectory, ReportsCertificatesAndResultLinesAreThoseOfVerifyTraject
   const auto lines = grpvss::test::split_lines(batch.out);
   ASSERT_EQ(lines.size(), 2u) << batch.out;
   const struct { const char* id; const char* file; const char* verdict; int exit_code; int steps; }
-      expected[] = {{"clear", "ur5e-clear.json", "CLEAR", 0, 7},
+      expected[] = {{"clear", "ur5e-clear.json", "CLEAR", 0, 6},
                     {"post", "ur5e-through-post.csv", "COLLISION", 1, 34}};
   for (int i = 0; i < 2; ++i) {
     const std::string id = expected[i].id;

@@ -57,8 +57,8 @@ TEST_F(PandaCell, APathIntoTheShelfIsACollisionOfTheHandWithTheShelf) {
       "--cell " + kCells + "panda-shelf.yaml --path " + kCells + "panda-into-shelf.txt";
   const CliRun verify = run_cli(directory_, "verify " + inputs + " --certificate c.json");
   ASSERT_EQ(verify.exit_code, grpvss::app::kExitFinding) << verify.out << verify.err;
-  // Step 30 (86 before the step's axis distances, proofs/motion-bound.md#lemma-axis-distance-along-step).
-  EXPECT_NE(verify.out.find("first collision at step 30\n"
+  // Step 29 (86 before the step's axis distances, proofs/motion-bound.md#lemma-axis-distance-along-step).
+  EXPECT_NE(verify.out.find("first collision at step 29\n"
                             "interference: panda_hand_tcp hull 12 (panda_hand_sc) / shelf, "),
             std::string::npos)
       << verify.out;

@@ -35,12 +35,12 @@ TEST(VerifySummaryCli, TheSamplesEpisodesArePrintedBetweenTheFirstCollisionAndTh
   std::filesystem::remove_all(directory);
   const std::string expected =
       "first collision at step 4\n"
-      "interference: link 3 hull 1 / obstacle 0, steps 3-12 (8.979-13.332 s, clear by "
-      "13.750 s), unexpanded collides at steps 4-9\n"
-      "interference: link 3 hull 0 / obstacle 0, steps 4-13 (9.309-13.750 s, clear by "
+      "interference: link 3 hull 1 / obstacle 0, steps 3-12 (8.980-13.332 s, clear by "
+      "13.751 s), unexpanded collides at steps 4-9\n"
+      "interference: link 3 hull 0 / obstacle 0, steps 4-13 (9.309-13.751 s, clear by "
       "14.170 s), unexpanded collides at steps 5-13\n"
       "interference: link 4 hull 0 / obstacle 0, steps 4-5 (9.309-9.735 s, clear by "
-      "10.161 s), expanded hull only\n"
+      "10.162 s), expanded hull only\n"
       "error 7 (segment 3, step 23)";
   EXPECT_NE(text.find(expected), std::string::npos) << text;
 }

@@ -63,6 +63,22 @@ TEST(StepProposal, ClaimMotionAimsAtTheAllowanceLessTwoDelta) {
   expect_from_below(propose({held}, false, 1.0, 4.0), 0.7125, 4.0);
 }
 
+// Two revolute joints, q(t) = (t, t), weights R = (2, 2), axis distances D = (0.5, 0.5) at q_now:
+// M'_h = t min(2, 0.5) + t min(2, 0.5 + 2 t) (proofs/motion-bound.md#lemma-axis-distance-along-step).
+// Within 0.95 (1 + 1) = 1.9: up to t = 0.75 it is t + 2 t^2 (1.875 at 0.75); beyond, joint 1's
+// distance is capped by R = 2, so 0.5 t + 2 t <= 1.9, t = 0.76.
+TEST(StepProposal, AxisDistancesGiveTheStepRadiusFormWithTheJointsAfterEachAxis) {
+  const Eigen::VectorXd q_now = Eigen::VectorXd::Zero(2);
+  const auto joints_at = [](double t) { return Eigen::VectorXd::Constant(2, t); };
+  const std::vector<ProposalHull> hulls{{1.0, false, 0.0}};
+  const double with_distances = predicted_ptp_step(joints_at, q_now, 4.0, {2.0, 2.0}, hulls, false,
+                                                   1.0, {0.5, 0.5});
+  expect_from_below(with_distances, 0.76, 4.0);
+  // Without them, M_h = 4 t <= 1.9.
+  const double without = predicted_ptp_step(joints_at, q_now, 4.0, {2.0, 2.0}, hulls, false, 1.0);
+  expect_from_below(without, 1.9 / 4.0, 4.0);
+}
+
 TEST(StepProposal, AShrinkingClearanceIsExtrapolated) {
   // r_{k-1} = 1.5 one unit ago: r_far = 1 - 0.5 t, so 2 t <= 0.95 (2 - 0.5 t), t <= 1.9 / 2.475.
   expect_from_below(propose({{1.0, false, 1.5}}, true, 1.0, 4.0), 1.9 / 2.475, 4.0);
