@@ -10,49 +10,17 @@
 #include "grpvss/geometry/directed_rounding.hpp"
 #include "grpvss/geometry/placed_box.hpp"
 #include "grpvss/exact/exact_contact.hpp"
+#include "sphere_slab.hpp"
 
 namespace grpvss::certify {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-// A separating slab from two balls that contain the sets: n = c_b - c_a,
-// a0 >= n.c_a + r_a |n|, b0 <= n.c_b - r_b |n|, all with directed rounding.
-// proof: proofs/separation-witness.md#sphere-slab
-// The slab's distance lower bound is formed like certify_separation's, in the same scope:
-// (b0 - a0) rounded down over |n| rounded up (proofs/fast-path.md#certified-separation).
-bool sphere_witness(const Eigen::Vector3d& center_a, double radius_a,
-                    const Eigen::Vector3d& center_b, double radius_b,
-                    geometry::SeparationWitness& witness, double& lower_bound) {
-  namespace r = geometry::rounding;
-  const Eigen::Vector3d normal = center_b - center_a;
-  if (!(normal.squaredNorm() > 0.0)) return false;
-  r::UpwardRoundingScope upward;
-  const double norm_up = r::sqrt_up(r::dot_up(normal.data(), normal.data()));
-  const double offset_a = r::add_up(r::dot_up(normal.data(), center_a.data()),
-                                    r::mul_up(radius_a, norm_up));
-  const double offset_b = r::sub_down(r::dot_down(normal.data(), center_b.data()),
-                                      r::mul_up(radius_b, norm_up));
-  if (!(offset_b > offset_a)) return false;
-  witness.normal = normal;
-  witness.offset_a = offset_a;
-  witness.offset_b = offset_b;
-  lower_bound = std::max(0.0, r::div_down(r::sub_down(offset_b, offset_a), norm_up));
-  return true;
-}
-
 // Radii are certified lower bounds: every sum or difference forming one is rounded down
 // (exactly, without switching the rounding mode: directed_rounding.hpp).
 double add_down(double a, double b) { return geometry::rounding::nearest_mode_add_down(a, b); }
 double sub_down(double a, double b) { return geometry::rounding::nearest_mode_sub_down(a, b); }
-
-double placed_sphere_radius(double radius_L, double placement_error) {
-  // |p~ - c~| <= |p - c| + 2 eps for rigidly placed p, c computed with error < eps each.
-  namespace r = geometry::rounding;
-  const double twice_error = 2.0 * placement_error;  // exact (no overflow for a valid cell)
-  if (!std::isfinite(twice_error)) return std::numeric_limits<double>::infinity();
-  return r::nearest_mode_add_up(radius_L, twice_error);
-}
 
 }  // namespace
 
@@ -114,7 +82,12 @@ void CellProbe::probe(const Eigen::VectorXd& q, bool with_points, ProbeResult& o
   out.X_WL = workspace_.X_WL;
   out.X_WJ = workspace_.X_WJ;
   for (int i = 0; i < static_cast<int>(cell_->hulls().size()); ++i) probe_hull(i, with_points, out);
-  if (self_pairs_.probe(out.X_WL, out.self_pairs)) out.any_self_collision = out.any_collision = true;
+  // A self pair far beyond its hulls' obstacle radii needs no closer look than its balls.
+  hull_radii_.resize(out.hulls.size());
+  for (std::size_t i = 0; i < out.hulls.size(); ++i) hull_radii_[i] = out.hulls[i].radius;
+  if (self_pairs_.probe(out.X_WL, hull_radii_, out.self_pairs)) {
+    out.any_self_collision = out.any_collision = true;
+  }
   sort_points(out);
 }
 

@@ -133,6 +133,7 @@ class CellProbe {
   const RobotCell* cell_;
   kinematics::Workspace workspace_;
   SelfPairProbe self_pairs_;
+  std::vector<double> hull_radii_;  ///< [hull]: this probe's radii, for SelfPairProbe::probe
   std::vector<Eigen::Vector3d> placed_expanded_;
   std::vector<Eigen::Vector3d> placed_raw_;
   std::vector<Eigen::Vector3d> placed_obstacle_L_;

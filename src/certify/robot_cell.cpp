@@ -57,6 +57,7 @@ RobotCell::RobotCell(const RobotModel& robot, const Environment& environment,
       entry.link = link;
       entry.hull = hull;
       entry.raw_L = raw_polytopes.back().vertices();
+      raw_skeletons_.push_back(geometry::vertex_skeleton(raw_polytopes.back()));
       hulls_.push_back(std::move(entry));
     }
   }

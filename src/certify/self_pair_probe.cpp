@@ -6,6 +6,7 @@
 #include "grpvss/exact/certified_query.hpp"
 #include "grpvss/geometry/directed_rounding.hpp"
 #include "grpvss/kinematics/forward_kinematics.hpp"
+#include "sphere_slab.hpp"
 
 namespace grpvss::certify {
 
@@ -23,7 +24,9 @@ SelfPairProbe::SelfPairProbe(const RobotCell& cell)
       placed_raw_(cell.hulls().size()),
       is_placed_(cell.hulls().size(), 0),
       warm_normals_(cell.self_pairs().size()),
-      has_warm_normal_(cell.self_pairs().size(), 0) {}
+      has_warm_normal_(cell.self_pairs().size(), 0),
+      climb_hints_a_(cell.self_pairs().size(), 0),
+      climb_hints_b_(cell.self_pairs().size(), 0) {}
 
 const std::vector<Eigen::Vector3d>& SelfPairProbe::placed(
     int hull, const std::vector<Eigen::Isometry3d>& X_WL) {
@@ -37,17 +40,56 @@ const std::vector<Eigen::Vector3d>& SelfPairProbe::placed(
   return placed_raw_[h];
 }
 
+bool SelfPairProbe::settle_by_balls(const SelfPairHulls& pair,
+                                    const std::vector<Eigen::Isometry3d>& X_WL, double ample,
+                                    SelfPairEvidence& evidence) const {
+  const auto ball_W = [&](int hull, Eigen::Vector3d& center_W, double& radius_W) {
+    const LinkHull& link_hull = cell_->hulls()[static_cast<std::size_t>(hull)];
+    center_W = X_WL[static_cast<std::size_t>(link_hull.link)] * link_hull.raw_sphere_L.center;
+    radius_W = placed_sphere_radius(link_hull.raw_sphere_L.radius_upper, cell_->placement_error());
+  };
+  Eigen::Vector3d center_a, center_b;
+  double radius_a = 0.0, radius_b = 0.0;
+  ball_W(pair.a, center_a, radius_a);
+  ball_W(pair.b, center_b, radius_b);
+  // A cheap estimate first: most pairs are either far apart or close.
+  if (!((center_b - center_a).norm() - radius_a - radius_b >= ample)) return false;
+  geometry::SeparationWitness witness;
+  double lower_bound = 0.0;
+  // proof: proofs/separation-witness.md#sphere-slab (each placed hull lies in its placed ball)
+  if (!sphere_witness(center_a, radius_a, center_b, radius_b, witness, lower_bound)) return false;
+  const double distance = exact_distance_lower_bound(lower_bound, cell_->placement_error());
+  if (!(distance >= ample)) return false;
+  evidence.separated = true;
+  evidence.witness = witness;
+  evidence.lower_bound = lower_bound;
+  evidence.distance = distance;
+  return true;
+}
+
 bool SelfPairProbe::probe(const std::vector<Eigen::Isometry3d>& X_WL,
+                          const std::vector<double>& hull_radius,
                           std::vector<SelfPairEvidence>& out) {
   const std::vector<SelfPairHulls>& pairs = cell_->self_pairs();
   out.assign(pairs.size(), SelfPairEvidence{});
   std::fill(is_placed_.begin(), is_placed_.end(), 0);
   bool any_contact = false;
   for (std::size_t p = 0; p < pairs.size(); ++p) {
+    if (!hull_radius.empty() &&
+        settle_by_balls(pairs[p], X_WL,
+                        hull_radius[static_cast<std::size_t>(pairs[p].a)] +
+                            hull_radius[static_cast<std::size_t>(pairs[p].b)],
+                        out[p])) {
+      continue;
+    }
     const std::vector<Eigen::Vector3d>& a = placed(pairs[p].a, X_WL);
     const std::vector<Eigen::Vector3d>& b = placed(pairs[p].b, X_WL);
-    const geometry::CertifiedPairResult result =
-        geometry::certified_pair_query(a, b, has_warm_normal_[p] ? &warm_normals_[p] : nullptr);
+    // GJK climbs both hulls' skeletons (it only proposes: the witness is certified over
+    // every vertex, proofs/fast-path.md#certified-query).
+    const geometry::CertifiedPairResult result = geometry::certified_pair_query(
+        a, b, has_warm_normal_[p] ? &warm_normals_[p] : nullptr,
+        &cell_->raw_skeleton(static_cast<std::size_t>(pairs[p].a)), &climb_hints_a_[p],
+        &cell_->raw_skeleton(static_cast<std::size_t>(pairs[p].b)), &climb_hints_b_[p]);
     SelfPairEvidence& evidence = out[p];
     if (result.contact != geometry::Contact::kSeparated) {
       evidence.contact = true;

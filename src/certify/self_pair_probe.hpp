@@ -35,16 +35,31 @@ class SelfPairProbe {
   explicit SelfPairProbe(const RobotCell& cell);
   /// Decides every self pair at the link poses X_WL; `out` gets one entry per pair. True when
   /// some pair's hulls meet.
-  bool probe(const std::vector<Eigen::Isometry3d>& X_WL, std::vector<SelfPairEvidence>& out);
+  /// \param hull_radius per hull (RobotCell::hulls() order), empty or the hulls' clearance
+  ///        radii from the obstacles at X_WL: a pair (a, b) whose placed balls are proven at
+  ///        least hull_radius[a] + hull_radius[b] apart keeps that ball slab as its evidence,
+  ///        without GJK or a vertex scan. The slab is a valid witness whatever the threshold;
+  ///        this one keeps the pair from limiting a step more than its hulls' obstacles do
+  ///        (the pair's motion bound is at most the sum of its hulls' bounds, each of which
+  ///        the step must keep below that hull's allowance). Empty: every pair is decided by
+  ///        its closest witness.
+  bool probe(const std::vector<Eigen::Isometry3d>& X_WL, const std::vector<double>& hull_radius,
+             std::vector<SelfPairEvidence>& out);
 
  private:
   const std::vector<Eigen::Vector3d>& placed(int hull, const std::vector<Eigen::Isometry3d>& X_WL);
+  /// The slab of the two hulls' placed balls, kept in `evidence` when it proves at least
+  /// `ample` (false otherwise).
+  bool settle_by_balls(const SelfPairHulls& pair, const std::vector<Eigen::Isometry3d>& X_WL,
+                       double ample, SelfPairEvidence& evidence) const;
 
   const RobotCell* cell_;
   std::vector<std::vector<Eigen::Vector3d>> placed_raw_;  ///< [hull], this probe's
   std::vector<char> is_placed_;
   std::vector<Eigen::Vector3d> warm_normals_;  ///< [pair]
   std::vector<char> has_warm_normal_;
+  std::vector<int> climb_hints_a_;  ///< [pair]: where GJK's climb on hull a starts
+  std::vector<int> climb_hints_b_;  ///< [pair]: the same on hull b
 };
 
 }  // namespace grpvss::certify

@@ -193,10 +193,12 @@ bool certify_overlap(const std::vector<Vector3d>& a, const std::vector<Vector3d>
 CertifiedPairResult certified_pair_query(const std::vector<Vector3d>& a,
                                          const std::vector<Vector3d>& b,
                                          const Vector3d* warm_start_direction,
-                                         const HullSkeleton* a_skeleton, int* a_climb_hint) {
-  const GjkResult g =
-      gjk(a, b, warm_start_direction, a_skeleton, a_climb_hint ? *a_climb_hint : 0);
+                                         const HullSkeleton* a_skeleton, int* a_climb_hint,
+                                         const HullSkeleton* b_skeleton, int* b_climb_hint) {
+  const GjkResult g = gjk(a, b, warm_start_direction, a_skeleton, a_climb_hint ? *a_climb_hint : 0,
+                          b_skeleton, b_climb_hint ? *b_climb_hint : 0);
   if (a_climb_hint) *a_climb_hint = g.last_support_a;
+  if (b_climb_hint) *b_climb_hint = g.last_support_b;
   if (g.status == GjkStatus::kOverlapping &&
       certify_overlap(a, b, g.simplex_a, g.simplex_b)) {
     CertifiedPairResult result;

@@ -5,8 +5,11 @@
 
 namespace grpvss::geometry {
 
-HullSkeleton hull_skeleton(const ConvexPolytope& polytope, int point_count) {
-  const std::vector<int>& input = polytope.input_indices();
+namespace {
+
+// The skeleton over point_count points, polytope vertex v numbered input[v].
+HullSkeleton skeleton_numbered(const ConvexPolytope& polytope, const std::vector<int>& input,
+                               int point_count) {
   std::vector<int> degree(static_cast<std::size_t>(point_count), 0);
   for (const auto& edge : polytope.edges()) {
     for (const int end : edge) {
@@ -38,6 +41,19 @@ HullSkeleton hull_skeleton(const ConvexPolytope& polytope, int point_count) {
               skeleton.neighbours.begin() + skeleton.first[static_cast<std::size_t>(i) + 1]);
   }
   return skeleton;
+}
+
+}  // namespace
+
+HullSkeleton hull_skeleton(const ConvexPolytope& polytope, int point_count) {
+  return skeleton_numbered(polytope, polytope.input_indices(), point_count);
+}
+
+HullSkeleton vertex_skeleton(const ConvexPolytope& polytope) {
+  const int vertex_count = static_cast<int>(polytope.vertices().size());
+  std::vector<int> identity(static_cast<std::size_t>(vertex_count));
+  for (int v = 0; v < vertex_count; ++v) identity[static_cast<std::size_t>(v)] = v;
+  return skeleton_numbered(polytope, identity, vertex_count);
 }
 
 }  // namespace grpvss::geometry

@@ -137,12 +137,32 @@ Simplex closest(const Simplex& s) {
   }
 }
 
-/// The support point of A - B in direction d; A's climbed from `a_start` when A has a skeleton.
+/// Where each set's support search starts: its skeleton (climbed from `start`) or a scan.
+struct SupportSearch {
+  const HullSkeleton* skeleton = nullptr;
+  int start = 0;
+
+  int index(const std::vector<Vector3d>& points, const Vector3d& d) const {
+    return skeleton ? climb_support_index(points, *skeleton, start, d) : support_index(points, d);
+  }
+};
+
+/// The support point of A - B in direction d.
 SimplexVertex support(const std::vector<Vector3d>& a, const std::vector<Vector3d>& b,
-                      const Vector3d& d, const HullSkeleton* a_skeleton, int a_start) {
-  const int ia = a_skeleton ? climb_support_index(a, *a_skeleton, a_start, d) : support_index(a, d);
-  const int ib = support_index(b, -d);
+                      const Vector3d& d, const SupportSearch& a_search,
+                      const SupportSearch& b_search) {
+  const int ia = a_search.index(a, d);
+  const int ib = b_search.index(b, -d);
   return {a[ia] - b[ib], ia, ib};
+}
+
+SupportSearch checked_search(const std::vector<Vector3d>& points, const HullSkeleton* skeleton,
+                             int start) {
+  if (skeleton && skeleton->point_count() != static_cast<int>(points.size())) {
+    throw std::invalid_argument("gjk: the skeleton does not fit the point set");
+  }
+  if (start < 0 || start >= static_cast<int>(points.size())) start = 0;
+  return {skeleton, start};
 }
 
 void fill_result(const Simplex& s, const std::vector<Vector3d>& a,
@@ -182,11 +202,10 @@ int support_index(const std::vector<Vector3d>& points, const Vector3d& d) {
 
 GjkResult gjk(const std::vector<Vector3d>& a, const std::vector<Vector3d>& b,
               const Vector3d* warm_start_normal, const HullSkeleton* a_skeleton,
-              int a_climb_start) {
+              int a_climb_start, const HullSkeleton* b_skeleton, int b_climb_start) {
   if (a.empty() || b.empty()) throw std::invalid_argument("gjk: empty point set");
-  if (a_skeleton && a_skeleton->point_count() != static_cast<int>(a.size())) {
-    throw std::invalid_argument("gjk: the skeleton does not fit the point set");
-  }
+  SupportSearch a_search = checked_search(a, a_skeleton, a_climb_start);
+  SupportSearch b_search = checked_search(b, b_skeleton, b_climb_start);
   GjkResult result;
   // n separates A (below) from B (above), so the first useful support direction of A - B is
   // -v = n; without a warm start use the direction from a[0] to b[0].
@@ -195,11 +214,11 @@ GjkResult gjk(const std::vector<Vector3d>& a, const std::vector<Vector3d>& b,
   Vector3d direction = warm ? *warm_start_normal : Vector3d(b[0] - a[0]);
   if ((direction.array() == 0.0).all()) direction = Vector3d::UnitX();
   Simplex simplex;
-  if (a_climb_start < 0 || a_climb_start >= static_cast<int>(a.size())) a_climb_start = 0;
-  simplex.v[0] = support(a, b, direction, a_skeleton, a_climb_start);
+  simplex.v[0] = support(a, b, direction, a_search, b_search);
   simplex.weight[0] = 1.0;
   simplex.size = 1;
-  result.last_support_a = simplex.v[0].ia;
+  result.last_support_a = a_search.start = simplex.v[0].ia;
+  result.last_support_b = b_search.start = simplex.v[0].ib;
   double scale2 = simplex.v[0].w.squaredNorm();
   Vector3d v = simplex.v[0].w;
 
@@ -211,9 +230,10 @@ GjkResult gjk(const std::vector<Vector3d>& a, const std::vector<Vector3d>& b,
       result.status = GjkStatus::kNearContact;
       return result;
     }
-    // A's support moves little between iterations: climb from the last one.
-    const SimplexVertex w = support(a, b, -v, a_skeleton, result.last_support_a);
-    result.last_support_a = w.ia;
+    // The supports move little between iterations: climb from the last ones.
+    const SimplexVertex w = support(a, b, -v, a_search, b_search);
+    result.last_support_a = a_search.start = w.ia;
+    result.last_support_b = b_search.start = w.ib;
     scale2 = std::max(scale2, w.w.squaredNorm());
     const bool repeated = std::any_of(simplex.v.begin(), simplex.v.begin() + simplex.size,
                                       [&](const SimplexVertex& s) {

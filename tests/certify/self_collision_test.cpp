@@ -4,7 +4,8 @@
 // SRDF's; folding the wrist into the upper arm is a COLLISION naming both links whose
 // certificate the checker accepts; a clear path is CLEAR and ACCEPTED; tampering with the pair
 // list or a slab is REJECTED; the SRDF's disable of the colliding pair makes the fold CLEAR; and
-// an independent exact reference (CGAL, tests/support) agrees on sampled configurations.
+// an independent exact reference (CGAL, tests/support) agrees on sampled configurations; far
+// pairs settled by their balls keep a slab that holds exactly.
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -26,6 +27,7 @@
 #include "grpvss/certify/verifier.hpp"
 #include "grpvss/checker/certificate_checker.hpp"
 #include "grpvss/io/path_file.hpp"
+#include "grpvss/geometry/separation_witness.hpp"
 #include "grpvss/kinematics/forward_kinematics.hpp"
 #include "grpvss/motion/kinematics_adapter.hpp"
 #include "grpvss/motion/trajectory.hpp"
@@ -391,6 +393,51 @@ TEST(SelfCollision, TheStepRuleHoldsEachPairToItsRelativeBound) {
               allowance_down(from.self_pairs[p].distance, to.self_pairs[p].distance));
     EXPECT_GE(b.link - a.link, 2);
   }
+}
+
+// A pair whose placed balls are far enough apart is settled by their slab, without GJK or a
+// vertex scan (self_pair_probe.hpp): the slab holds exactly on the placed hulls, its distance
+// never exceeds the closest witness's nor the reference distance, and it is kept only at or
+// above the sum of the two hulls' radii passed in; empty radii give every pair its closest
+// witness, bit for bit as before the shortcut.
+TEST(SelfCollision, FarPairsAreSettledByTheirBallsAndTheSlabHoldsOnThePlacedHulls) {
+  const cell::LoadedCell loaded = cell::load_cell(kCells + "ur5e-self.yaml");
+  CellSettings settings;
+  settings.tolerance = loaded.tolerance;
+  const RobotCell cell(loaded.robot, loaded.environment, settings);
+  const std::size_t hulls = cell.hulls().size();
+  kinematics::Workspace workspace(cell.robot());
+  Eigen::VectorXd q(6);
+  q << 0.3, -1.2, 1.1, -0.4, 1.57, 0.2;
+  kinematics::forward_kinematics(cell.chain(), q, workspace);
+  const std::vector<Points> placed = placed_hulls(cell, q);
+  std::vector<SelfPairEvidence> closest, by_balls, unreached;
+  SelfPairProbe closest_probe(cell), ball_probe(cell), unreached_probe(cell);
+  closest_probe.probe(workspace.X_WL, {}, closest);
+  const double radius = 0.01;  // every hull: a pair needs 2 cm between its balls
+  ball_probe.probe(workspace.X_WL, std::vector<double>(hulls, radius), by_balls);
+  unreached_probe.probe(workspace.X_WL, std::vector<double>(hulls, 1e9), unreached);
+  int settled = 0, closer_look = 0;
+  for (std::size_t p = 0; p < cell.self_pairs().size(); ++p) {
+    const auto& a = placed[static_cast<std::size_t>(cell.self_pairs()[p].a)];
+    const auto& b = placed[static_cast<std::size_t>(cell.self_pairs()[p].b)];
+    ASSERT_TRUE(closest[p].separated) << "pair " << p;
+    ASSERT_TRUE(by_balls[p].separated) << "pair " << p;
+    EXPECT_EQ(unreached[p].lower_bound, closest[p].lower_bound) << "pair " << p;
+    EXPECT_EQ(unreached[p].witness.normal, closest[p].witness.normal) << "pair " << p;
+    EXPECT_TRUE(geometry::check_witness_exactly(a, b, by_balls[p].witness, by_balls[p].lower_bound))
+        << "pair " << p;
+    EXPECT_LE(by_balls[p].distance, closest[p].distance) << "pair " << p;
+    EXPECT_LT(by_balls[p].lower_bound, grpvss::testing::reference_distance(a, b)) << "pair " << p;
+    if (by_balls[p].lower_bound != closest[p].lower_bound) {
+      ++settled;
+      EXPECT_GE(by_balls[p].distance, 2 * radius) << "pair " << p;
+    } else {
+      ++closer_look;
+    }
+  }
+  EXPECT_GE(settled, 3);
+  EXPECT_GE(closer_look, 1);  // base / upper arm: ~1 cm apart, closer than the threshold
 }
 
 // The UR5e alone (no obstacle: only self-collision can stop a path), base at the origin.

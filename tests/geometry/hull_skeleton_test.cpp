@@ -1,6 +1,7 @@
 // The vertex graph GJK climbs on placed link offsets (hull_skeleton.hpp): its rows are the
 // hull's edges in the point set's numbering, and a climb from any vertex ends where a full
-// scan ends (the maximum), on rotated prisms and on their tolerance offsets.
+// scan ends (the maximum), on rotated prisms and on their tolerance offsets; GJK climbing one
+// or both sets proposes what GJK scanning proposes.
 #include "grpvss/exact/polytope_skeleton.hpp"
 
 #include <algorithm>
@@ -122,12 +123,66 @@ TEST(HullSkeleton, GjkClimbingProposesWhatGjkScanningProposes) {
   EXPECT_GT(overlapping, 30);
 }
 
+// The vertex-numbered skeleton (a raw link hull's: its point set is the hull's vertex list) is
+// the input-numbered one renumbered through input_indices(): the same edges, vertex for vertex.
+TEST(HullSkeleton, VertexSkeletonIsTheInputSkeletonRenumberedToTheVertexList) {
+  std::mt19937_64 rng(7545);
+  for (int trial = 0; trial < 20; ++trial) {
+    std::vector<Vector3d> points = test::random_prism(rng, Vector3d(trial, 1, -2), 2.0);
+    points.insert(points.begin(), Vector3d(trial, 1, -2));  // an interior input point first
+    const ConvexPolytope hull = ConvexPolytope::from_points(points);
+    const HullSkeleton by_input = hull_skeleton(hull, static_cast<int>(points.size()));
+    const HullSkeleton by_vertex = vertex_skeleton(hull);
+    ASSERT_EQ(by_vertex.point_count(), static_cast<int>(hull.vertices().size()));
+    EXPECT_EQ(by_vertex.neighbours.size(), by_input.neighbours.size());
+    const std::vector<int>& input = hull.input_indices();
+    for (int v = 0; v < by_vertex.point_count(); ++v) {
+      std::vector<int> expected;
+      for (const int u : row(by_vertex, v)) expected.push_back(input[static_cast<std::size_t>(u)]);
+      std::sort(expected.begin(), expected.end());
+      EXPECT_EQ(row(by_input, input[static_cast<std::size_t>(v)]), expected)
+          << "trial " << trial << ", vertex " << v;
+    }
+  }
+}
+
+// GJK that climbs both sets' skeletons (a self pair: two link hulls) proposes what GJK that
+// scans both proposes, from any starts, on random prism pairs separated and overlapping.
+TEST(HullSkeleton, GjkClimbingBothSetsProposesWhatGjkScanningProposes) {
+  std::mt19937_64 rng(4342);
+  std::uniform_real_distribution<double> offset(-5.5, 5.5);
+  int separated = 0;
+  int overlapping = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    const ConvexPolytope a =
+        ConvexPolytope::from_points(test::random_prism(rng, Vector3d::Zero(), 3.0));
+    const ConvexPolytope b = ConvexPolytope::from_points(
+        test::random_prism(rng, Vector3d(offset(rng), offset(rng), offset(rng)), 2.0));
+    const HullSkeleton a_skeleton = vertex_skeleton(a);
+    const HullSkeleton b_skeleton = vertex_skeleton(b);
+    const GjkResult scanned = gjk(a.vertices(), b.vertices());
+    std::uniform_int_distribution<int> start(-2, 17);  // out of range: 0
+    const GjkResult climbed = gjk(a.vertices(), b.vertices(), nullptr, &a_skeleton, start(rng),
+                                  &b_skeleton, start(rng));
+    ASSERT_EQ(climbed.status, scanned.status) << "trial " << trial;
+    EXPECT_NEAR(climbed.distance, scanned.distance, 1e-12 * (1.0 + scanned.distance));
+    ASSERT_GE(climbed.last_support_b, 0);
+    ASSERT_LT(climbed.last_support_b, static_cast<int>(b.vertices().size()));
+    separated += scanned.status == GjkStatus::kSeparated;
+    overlapping += scanned.status == GjkStatus::kOverlapping;
+  }
+  EXPECT_GT(separated, 100);
+  EXPECT_GT(overlapping, 30);
+}
+
 TEST(HullSkeleton, GjkRefusesASkeletonOfAnotherPointSet) {
   const auto a = test::cube(Vector3d::Zero(), 1.0);
   const HullSkeleton skeleton = hull_skeleton(ConvexPolytope::from_points(a), 8);
   std::vector<Vector3d> more = a;
   more.push_back(Vector3d(0.5, 0.5, 0.5));
   EXPECT_THROW(gjk(more, test::cube(Vector3d(3, 0, 0), 1.0), nullptr, &skeleton),
+               std::invalid_argument);
+  EXPECT_THROW(gjk(test::cube(Vector3d(3, 0, 0), 1.0), more, nullptr, nullptr, 0, &skeleton),
                std::invalid_argument);
 }
 

@@ -96,6 +96,9 @@ class RobotCell {
   const geometry::HullSkeleton& expanded_skeleton(std::size_t i) const {
     return expanded_skeletons_[i];
   }
+  /// Vertex graph of hull i's raw_L (in raw_L's numbering): GJK climbs it on the placed raw
+  /// hulls of a self pair.
+  const geometry::HullSkeleton& raw_skeleton(std::size_t i) const { return raw_skeletons_[i]; }
   /// The obstacles: broadphase built, exact hulls and spheres built on first use.
   const ObstacleSet& obstacles() const { return obstacles_; }
   const HullRadiusTable& radii() const { return radii_; }
@@ -129,6 +132,7 @@ class RobotCell {
   std::vector<LinkHull> hulls_;
   std::vector<geometry::ConvexPolytope> expanded_polytopes_L_;
   std::vector<geometry::HullSkeleton> expanded_skeletons_;
+  std::vector<geometry::HullSkeleton> raw_skeletons_;
   ObstacleSet obstacles_;
   std::vector<AllowedContactPair> allowed_contacts_;
   std::vector<SelfPairHulls> self_pairs_;

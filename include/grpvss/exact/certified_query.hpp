@@ -60,11 +60,14 @@ struct CertifiedPairResult {
 ///        certificate is decided over all points whatever GJK proposes.
 /// \param a_climb_hint optional, with a_skeleton: in, where GJK's first climb starts; out, the
 ///        last support point of A it found (the next query of the pair starts there).
+/// \param b_skeleton, b_climb_hint the same for B.
 CertifiedPairResult certified_pair_query(const std::vector<Eigen::Vector3d>& a,
                                          const std::vector<Eigen::Vector3d>& b,
                                          const Eigen::Vector3d* warm_start_direction = nullptr,
                                          const HullSkeleton* a_skeleton = nullptr,
-                                         int* a_climb_hint = nullptr);
+                                         int* a_climb_hint = nullptr,
+                                         const HullSkeleton* b_skeleton = nullptr,
+                                         int* b_climb_hint = nullptr);
 
 /// \brief A separation proven by the filter: the witness and its rounded-down bound.
 struct CertifiedSeparation {

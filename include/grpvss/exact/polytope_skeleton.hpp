@@ -13,4 +13,8 @@ namespace grpvss::geometry {
 /// have no neighbours.
 HullSkeleton hull_skeleton(const ConvexPolytope& polytope, int point_count);
 
+/// \brief The skeleton of \p polytope in the numbering of `polytope.vertices()` (for a point
+/// set that is the hull's vertex list, e.g. a link's raw hull).
+HullSkeleton vertex_skeleton(const ConvexPolytope& polytope);
+
 }  // namespace grpvss::geometry

@@ -37,6 +37,7 @@ struct GjkResult {
   std::array<int, 4> simplex_b{};
   int iterations = 0;
   int last_support_a = 0;  ///< index into a of the last support point of A computed
+  int last_support_b = 0;  ///< index into b of the last support point of B computed
 };
 
 /// \brief Runs GJK on the convex hulls of \p a and \p b (each non-empty).
@@ -46,10 +47,12 @@ struct GjkResult {
 ///        A's support points are then climbed to from the last one instead of scanned for.
 /// \param a_climb_start with a_skeleton: where the first climb starts (an index into a, e.g.
 ///        the previous query's last support point); 0 if null or out of range.
-/// \throws std::invalid_argument if a point set is empty or a_skeleton does not fit a.
+/// \param b_skeleton, b_climb_start the same for B (e.g. two link hulls of a self pair).
+/// \throws std::invalid_argument if a point set is empty or a skeleton does not fit its set.
 GjkResult gjk(const std::vector<Eigen::Vector3d>& a, const std::vector<Eigen::Vector3d>& b,
               const Eigen::Vector3d* warm_start_normal = nullptr,
-              const HullSkeleton* a_skeleton = nullptr, int a_climb_start = 0);
+              const HullSkeleton* a_skeleton = nullptr, int a_climb_start = 0,
+              const HullSkeleton* b_skeleton = nullptr, int b_climb_start = 0);
 
 /// \brief Index of the point of \p points maximising \f$d \cdot p\f$ (first on ties).
 int support_index(const std::vector<Eigen::Vector3d>& points, const Eigen::Vector3d& d);
