@@ -24,6 +24,7 @@ struct RobotEntry {
   const char* name;
   std::string robot_yaml;  ///< the cell's `robot:` mapping, absolute paths
   double reach_m;          ///< radius of the region the inner obstacles are placed in
+  std::string tail_yaml;   ///< appended after the obstacles (the robot's allowed self-contacts)
 };
 
 RobotEntry robot_entry(BenchRobot robot) {
@@ -34,20 +35,25 @@ RobotEntry robot_entry(BenchRobot robot) {
               fmt::format("  urdf: {0}ur5e/ur5e.urdf\n  package_paths: [{0}ur5e]\n  tip: tool0\n"
                           "  home: [0, -1.5708, 1.5708, 0, 0, 0]\n",
                           shared),
-              0.85};
+              0.85, ""};
     case BenchRobot::kPanda:
       return {"panda",
               fmt::format("  urdf: {0}franka_panda/panda_arm_only.urdf\n"
                           "  package_paths: [{0}franka_panda]\n  tip: panda_link8\n"
                           "  home: [0, -0.785, 0, -2.356, 0, 1.571, 0.785]\n",
                           shared),
-              0.85};
+              0.85,
+              // The Franka's self-collision capsules (`_sc`) of links two apart overlap in
+              // every configuration (its SRDF disables them; tests/data/cells/panda-self.yaml).
+              "allowed_contacts:\n  - [panda_link1, panda_link3_sc]\n"
+              "  - [panda_link1_sc, panda_link3_sc]\n  - [panda_link3, panda_link5_sc]\n"
+              "  - [panda_link5, panda_link7_sc]\n"};
     case BenchRobot::kSixAxis:
       return {"sixaxis",
               fmt::format("  urdf: {}/data/sixaxis/sixaxis.urdf\n  home: [0, 0, 0, 0, 0, 0]\n"
                           "  acceleration: {{default: 4.0}}\n",
                           kSource),
-              0.75};
+              0.75, ""};
   }
   throw std::logic_error("bench: unknown robot");
 }
@@ -150,6 +156,7 @@ std::string bench_cell_yaml(BenchRobot robot, int obstacles, double tolerance_m,
                         i, shape, centre.x(), centre.y(), centre.z(), roll,
                         pitch, yaw);
   }
+  yaml += entry.tail_yaml;
   yaml += fmt::format("tolerance: {}\n", tolerance_m);
   return yaml;
 }
