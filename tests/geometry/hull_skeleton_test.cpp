@@ -5,6 +5,7 @@
 #include "grpvss/exact/polytope_skeleton.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <random>
 
 #include <gtest/gtest.h>
@@ -97,32 +98,6 @@ TEST(HullSkeleton, ClimbFromEveryVertexReachesTheScannedMaximum) {
   EXPECT_GT(longer_than_one_move, climbs / 4);  // the climbs are walks, not one look around
 }
 
-// GJK that climbs A's skeleton, from any start, proposes what GJK that scans A proposes: the
-// same status and distance on random prism pairs, separated and overlapping.
-TEST(HullSkeleton, GjkClimbingProposesWhatGjkScanningProposes) {
-  std::mt19937_64 rng(11);
-  std::uniform_real_distribution<double> offset(-5.5, 5.5);
-  int separated = 0;
-  int overlapping = 0;
-  for (int trial = 0; trial < 400; ++trial) {
-    const ConvexPolytope a =
-        ConvexPolytope::from_points(test::random_prism(rng, Vector3d::Zero(), 3.0));
-    const auto b = test::random_prism(rng, Vector3d(offset(rng), offset(rng), offset(rng)), 2.0);
-    const HullSkeleton skeleton = hull_skeleton(a, static_cast<int>(a.vertices().size()));
-    const GjkResult scanned = gjk(a.vertices(), b);
-    const int start = std::uniform_int_distribution<int>(-2, 17)(rng);  // out of range: 0
-    const GjkResult climbed = gjk(a.vertices(), b, nullptr, &skeleton, start);
-    ASSERT_EQ(climbed.status, scanned.status) << "trial " << trial;
-    EXPECT_NEAR(climbed.distance, scanned.distance, 1e-12 * (1.0 + scanned.distance));
-    ASSERT_GE(climbed.last_support_a, 0);
-    ASSERT_LT(climbed.last_support_a, static_cast<int>(a.vertices().size()));
-    separated += scanned.status == GjkStatus::kSeparated;
-    overlapping += scanned.status == GjkStatus::kOverlapping;
-  }
-  EXPECT_GT(separated, 100);
-  EXPECT_GT(overlapping, 30);
-}
-
 // The vertex-numbered skeleton (a raw link hull's: its point set is the hull's vertex list) is
 // the input-numbered one renumbered through input_indices(): the same edges, vertex for vertex.
 TEST(HullSkeleton, VertexSkeletonIsTheInputSkeletonRenumberedToTheVertexList) {
@@ -146,11 +121,13 @@ TEST(HullSkeleton, VertexSkeletonIsTheInputSkeletonRenumberedToTheVertexList) {
   }
 }
 
-// GJK that climbs both sets' skeletons (a self pair: two link hulls) proposes what GJK that
-// scans both proposes, from any starts, on random prism pairs separated and overlapping.
-TEST(HullSkeleton, GjkClimbingBothSetsProposesWhatGjkScanningProposes) {
-  std::mt19937_64 rng(4342);
+// GJK that climbs A's skeleton (and B's when `climb_b`: a self pair's two link hulls), from
+// any starts, proposes what GJK that scans both proposes: the same status and distance on 400
+// random prism pairs, separated and overlapping.
+void expect_climbing_gjk_proposes_what_scanning_proposes(std::uint64_t seed, bool climb_b) {
+  std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> offset(-5.5, 5.5);
+  std::uniform_int_distribution<int> start(-2, 17);  // out of range: 0
   int separated = 0;
   int overlapping = 0;
   for (int trial = 0; trial < 400; ++trial) {
@@ -161,11 +138,12 @@ TEST(HullSkeleton, GjkClimbingBothSetsProposesWhatGjkScanningProposes) {
     const HullSkeleton a_skeleton = vertex_skeleton(a);
     const HullSkeleton b_skeleton = vertex_skeleton(b);
     const GjkResult scanned = gjk(a.vertices(), b.vertices());
-    std::uniform_int_distribution<int> start(-2, 17);  // out of range: 0
     const GjkResult climbed = gjk(a.vertices(), b.vertices(), nullptr, &a_skeleton, start(rng),
-                                  &b_skeleton, start(rng));
+                                  climb_b ? &b_skeleton : nullptr, start(rng));
     ASSERT_EQ(climbed.status, scanned.status) << "trial " << trial;
     EXPECT_NEAR(climbed.distance, scanned.distance, 1e-12 * (1.0 + scanned.distance));
+    ASSERT_GE(climbed.last_support_a, 0);
+    ASSERT_LT(climbed.last_support_a, static_cast<int>(a.vertices().size()));
     ASSERT_GE(climbed.last_support_b, 0);
     ASSERT_LT(climbed.last_support_b, static_cast<int>(b.vertices().size()));
     separated += scanned.status == GjkStatus::kSeparated;
@@ -173,6 +151,14 @@ TEST(HullSkeleton, GjkClimbingBothSetsProposesWhatGjkScanningProposes) {
   }
   EXPECT_GT(separated, 100);
   EXPECT_GT(overlapping, 30);
+}
+
+TEST(HullSkeleton, GjkClimbingProposesWhatGjkScanningProposes) {
+  expect_climbing_gjk_proposes_what_scanning_proposes(11, false);
+}
+
+TEST(HullSkeleton, GjkClimbingBothSetsProposesWhatGjkScanningProposes) {
+  expect_climbing_gjk_proposes_what_scanning_proposes(4342, true);
 }
 
 TEST(HullSkeleton, GjkRefusesASkeletonOfAnotherPointSet) {

@@ -53,7 +53,9 @@ RobotEntry robot_entry(BenchRobot robot) {
               fmt::format("  urdf: {}/data/sixaxis/sixaxis.urdf\n  home: [0, 0, 0, 0, 0, 0]\n"
                           "  acceleration: {{default: 4.0}}\n",
                           kSource),
-              0.75, ""};
+              0.75,
+              // The forearm starts inside the upper arm's hull (data/sixaxis/cell.yaml).
+              "allowed_contacts:\n  - [link_2, link_4]\n"};
   }
   throw std::logic_error("bench: unknown robot");
 }
