@@ -118,16 +118,17 @@ def trajectory_table(table):
 
 
 def misses_table(table):
-    print("| cell | Delta | COLLISION paths | CLEAR | other verdicts | missed: FCL Delta/4 | FCL 1 deg "
+    print("| cell | Delta | COLLISION paths (an obstacle hit) | self-collision only (not scored) "
+          "| CLEAR | other verdicts | missed: FCL Delta/4 | FCL 1 deg "
           "| FCL CA | false alarms (Delta/4, 1 deg, CA) |")
-    print("|---|---|---|---|---|---|---|---|---|")
+    print("|---|---|---|---|---|---|---|---|---|---|")
     cells = ((4, "benchmark cell (2 of 11 near obstacles thin)"), (1, "every near obstacle thin"))
     for (thin, cell), delta in ((c, d) for c in cells for d in (1, 5)):
         e = table.get(f"BM_RobotMissesUr5e/{delta}/{thin}/iterations:1")
         if not e:
             continue
         g = lambda k: f"{e.get(k, 0):.0f}"
-        print(f"| {cell} | {delta} mm | {g('collision')} | {g('clear')} | {g('other')} "
+        print(f"| {cell} | {delta} mm | {g('collision')} | {g('self_collision')} | {g('clear')} | {g('other')} "
               f"| {g('missed_sampled')} | {g('missed_one_degree')} | {g('missed_ca')} "
               f"| {g('false_sampled')}, {g('false_one_degree')}, {g('false_ca')} |")
 

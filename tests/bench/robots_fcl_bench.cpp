@@ -8,6 +8,7 @@
 // segment the certified verifier proved CLEAR when it was generated (so no peer stops early).
 // FCL peers get the verifier's planned trajectory (motion::Trajectory, planned outside the
 // timed loop); the certified verifier plans inside it.
+#include <algorithm>
 #include <map>
 #include <memory>
 #include <tuple>
@@ -230,7 +231,9 @@ BENCHMARK(BM_RobotTrajectoryFclConservativeAdvancement)
 
 // The misses: 50 random UR5e PTP programs (3 segments of up to 60 deg per joint, seeded) in
 // the 100-obstacle cell; the certified verifier's verdict is the ground truth. Counters:
-// collision / clear / other (within tolerance, undecided, error) paths by the verifier, and
+// collision (an obstacle hit) / self_collision (only self-contacts: the peers check no self
+// pairs, so these are not scored) / clear / other (within tolerance, undecided, error) paths by
+// the verifier, and
 // per peer the COLLISION paths it calls free (missed_*) and the CLEAR paths it calls
 // colliding (false_*). Args: Delta in mm; 4 = the benchmark cell (every fourth obstacle
 // within reach thin), 1 = the same cell with every obstacle within reach thin (2 mm plates,
@@ -245,10 +248,19 @@ void BM_RobotMissesUr5e(benchmark::State& state) {
     counts.clear();
     for (std::uint32_t seed = 0; seed < 50; ++seed) {
       const auto program = grpvss::bench::random_program(bench, 3, 60.0, 1000 + seed);
-      const auto verdict = grpvss::bench::verify_program(bench, program).result.verdict;
-      const bool collision = verdict == grpvss::certify::Verdict::kCollision;
+      const auto run = grpvss::bench::verify_program(bench, program);
+      const auto verdict = run.result.verdict;
+      // The peers check the robot against the obstacles only (no self pairs): a path whose only
+      // contacts are self-contacts is counted apart and not scored.
+      const auto& episodes = run.result.interference_episodes;
+      const bool hits_an_obstacle =
+          std::any_of(episodes.begin(), episodes.end(),
+                      [](const auto& episode) { return episode.first_collision_step.has_value(); });
+      const bool self_only = verdict == grpvss::certify::Verdict::kCollision && !hits_an_obstacle;
+      const bool collision = verdict == grpvss::certify::Verdict::kCollision && !self_only;
       const bool clear = verdict == grpvss::certify::Verdict::kClear;
-      counts[collision ? "collision" : clear ? "clear" : "other"] += 1;
+      counts[collision ? "collision" : self_only ? "self_collision" : clear ? "clear" : "other"] += 1;
+      if (self_only) continue;
       const auto trajectory = planned(bench, program);
       const std::pair<const char*, Peer> peers[] = {
           {"sampled", Peer::kSampledQuarterDelta},
@@ -261,7 +273,8 @@ void BM_RobotMissesUr5e(benchmark::State& state) {
       }
     }
   }
-  for (const char* key : {"collision", "clear", "other", "missed_sampled", "missed_one_degree",
+  for (const char* key : {"collision", "self_collision", "clear", "other", "missed_sampled",
+                          "missed_one_degree",
                           "missed_ca", "false_sampled", "false_one_degree", "false_ca"}) {
     state.counters[key] = counts[key];
   }
