@@ -221,6 +221,15 @@ CertifiedPairResult certified_pair_query(const std::vector<Vector3d>& a,
       if (auto s = certify_separation(a, b, n)) return from_separation(*s, g.distance);
     }
   }
+  // Double GJK misjudges near-degenerate simplices (CAD hulls have many coplanar vertices) and
+  // may claim an overlap the interval test cannot confirm; the caller's warm normal (the last
+  // witness of this pair) often still separates, and one more scan costs far less than the
+  // exact SAT over every edge pair of two big hulls.
+  if (warm_start_direction != nullptr && g.status != GjkStatus::kSeparated) {
+    if (auto s = certify_separation(a, b, *warm_start_direction)) {
+      return from_separation(*s, g.distance);
+    }
+  }
   return from_exact(a, b, g);
 }
 

@@ -27,6 +27,8 @@
 #include "grpvss/certify/verifier.hpp"
 #include "grpvss/checker/certificate_checker.hpp"
 #include "grpvss/io/path_file.hpp"
+#include "grpvss/exact/certified_query.hpp"
+#include "grpvss/geometry/gjk.hpp"
 #include "grpvss/geometry/separation_witness.hpp"
 #include "grpvss/kinematics/forward_kinematics.hpp"
 #include "grpvss/motion/kinematics_adapter.hpp"
@@ -448,6 +450,50 @@ cell::LoadedCell free_ur5e(const std::filesystem::path& directory) {
                       << "  package_paths: [" << robots << "ur5e]\n  tip: tool0\n"
                       << "  home: [0, -1.5708, 1.5708, 0, 0, 0]\ntolerance: 0.005\n";
   return cell::load_cell(file);
+}
+
+// Double GJK can claim an overlap on two CAD hulls ~6 mm apart (a nearly flat simplex of their
+// many coplanar vertices: found on a benchmark path, where the exact SAT over every edge pair
+// of base_link_inertia and upper_arm_link then cost ~0.1 s a query). certified_pair_query
+// tries the caller's warm normal (the pair's last witness) before the exact fallback: the
+// answer is a certified slab that holds exactly and stays below the reference distance.
+TEST(SelfCollision, TheWarmNormalSettlesAPairDoubleGjkCallsOverlapping) {
+  const std::filesystem::path directory = std::filesystem::temp_directory_path() /
+                                          ("grpvss-self-warm-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(directory);
+  const cell::LoadedCell loaded = free_ur5e(directory);
+  std::filesystem::remove_all(directory);
+  CellSettings settings;
+  settings.tolerance = loaded.tolerance;
+  const RobotCell cell(loaded.robot, loaded.environment, settings);
+  Eigen::VectorXd q(6);
+  q << 0.9772725874971312, 0.83967636208827023, 1.2511440378415255, -0.69245001152371943,
+      0.088747194030848603, -1.051461583708666;
+  const Eigen::Vector3d warm(-0.0036158021299844967, 0.0044345373303059307, 0.0012508983572103276);
+  const std::vector<Points> placed = placed_hulls(cell, q);
+  const auto& base = placed[0];
+  const auto& upper_arm = placed[2];
+  ASSERT_EQ(cell.robot().links[static_cast<std::size_t>(cell.hulls()[2].link)].name,
+            "upper_arm_link");
+  const geometry::GjkResult proposed =
+      geometry::gjk(base, upper_arm, &warm, &cell.raw_skeleton(0), 0, &cell.raw_skeleton(2), 0);
+  RecordProperty("gjk_status", static_cast<int>(proposed.status));
+  const double reference = grpvss::testing::reference_distance(base, upper_arm);
+  EXPECT_NEAR(reference, 0.0059, 0.0005);
+  for (const Eigen::Vector3d* warm_start : {&warm, static_cast<const Eigen::Vector3d*>(nullptr)}) {
+    const geometry::CertifiedPairResult result = geometry::certified_pair_query(
+        base, upper_arm, warm_start, &cell.raw_skeleton(0), nullptr, &cell.raw_skeleton(2), nullptr);
+    ASSERT_EQ(result.contact, geometry::Contact::kSeparated);
+    ASSERT_TRUE(result.witness.has_value());
+    EXPECT_TRUE(geometry::check_witness_exactly(base, upper_arm, *result.witness,
+                                                result.clearance_lower_bound));
+    EXPECT_LE(result.clearance_lower_bound, reference);
+    EXPECT_GT(result.clearance_lower_bound, 0.9 * reference);
+    if (warm_start != nullptr && proposed.status != geometry::GjkStatus::kSeparated) {
+      EXPECT_EQ(result.decided_by, geometry::DecidedBy::kIntervalFilter);
+    }
+  }
+  EXPECT_EQ(proposed.status, geometry::GjkStatus::kOverlapping);
 }
 
 TEST(SelfCollision, AnExactReferenceAgreesOnRandomUr5ePaths) {
