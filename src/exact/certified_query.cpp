@@ -224,7 +224,8 @@ CertifiedPairResult certified_pair_query(const std::vector<Vector3d>& a,
   // Double GJK misjudges near-degenerate simplices (CAD hulls have many coplanar vertices) and
   // may claim an overlap the interval test cannot confirm; the caller's warm normal (the last
   // witness of this pair) often still separates, and one more scan costs far less than the
-  // exact SAT over every edge pair of two big hulls.
+  // exact SAT over every edge pair of two big hulls. The slab is decided over every point
+  // as any other. proof: proofs/fast-path.md#certified-separation
   if (warm_start_direction != nullptr && g.status != GjkStatus::kSeparated) {
     if (auto s = certify_separation(a, b, *warm_start_direction)) {
       return from_separation(*s, g.distance);
