@@ -1,6 +1,7 @@
 #include "grpvss/io/krl_file.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <optional>
 
@@ -240,8 +241,9 @@ void Interpreter::bas(TokenCursor& statement) {
 
 void Interpreter::bas_frame(const std::string& command, const Value& number, const TokenCursor& statement) {
   const int line = statement.range().line;
-  if (number.kind != Value::Kind::kNumber || number.number < 0 || number.number > 1e6 ||
-      number.number != static_cast<double>(static_cast<long long>(number.number))) {
+  // Range before the cast: converting NaN or a huge double to an integer is undefined.
+  if (number.kind != Value::Kind::kNumber || !(number.number >= 0 && number.number <= 1e6) ||
+      number.number != std::floor(number.number)) {
     statement.fail_at(line, "a tool or base number for BAS(#" + command + ", n)", krl::describe(number));
   }
   const auto index = static_cast<long long>(number.number);

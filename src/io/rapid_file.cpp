@@ -1,6 +1,7 @@
 #include "grpvss/io/rapid_file.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <optional>
 #include <set>
@@ -299,8 +300,9 @@ void Interpreter::assign_path(Value& holder, const std::vector<Step>& steps, std
       holder = Value::unknown("an element with an index that is not computed (" + i.text + ")");
       return;
     }
-    if (!holder.array || i.kind != Value::Kind::kNumber || i.number < 1 || i.number > double(holder.elements.size()) ||
-        i.number != double(static_cast<long long>(i.number))) {
+    // Range before the cast: converting NaN or a huge double to an integer is undefined.
+    if (!holder.array || i.kind != Value::Kind::kNumber ||
+        !(i.number >= 1 && i.number <= double(holder.elements.size())) || i.number != std::floor(i.number)) {
       statement.fail_at(line, "an index of an array of " + std::to_string(holder.elements.size()), rapid::describe(i));
     }
     index = static_cast<std::size_t>(i.number) - 1;

@@ -138,8 +138,7 @@ Value Evaluator::element(const Value& container, const Value& index, int line) {
   if (!i || *i != std::floor(*i)) cursor_.fail_at(line, "an integer index", describe(index));
   if (const NumberList* list = std::get_if<NumberList>(&container)) {
     if (*i < 0 || *i >= static_cast<double>(list->size())) {
-      cursor_.fail_at(line, "an index below " + std::to_string(list->size()),
-                      std::to_string(static_cast<long long>(*i)));
+      cursor_.fail_at(line, "an index below " + std::to_string(list->size()), number_text(*i));
     }
     return (*list)[static_cast<std::size_t>(*i)];
   }
@@ -148,7 +147,7 @@ Value Evaluator::element(const Value& container, const Value& index, int line) {
   }
   if (const auto* pose = std::get_if<Eigen::Isometry3d>(&container)) {
     if (*i < 0 || *i > 5) {
-      cursor_.fail_at(line, "a pose index 0..5", std::to_string(static_cast<long long>(*i)));
+      cursor_.fail_at(line, "a pose index 0..5", number_text(*i));
     }
     return urscript_pose_vector(*pose)[static_cast<int>(*i)];
   }

@@ -301,6 +301,9 @@ TEST(KrlFile, RejectsMalformedProgramsNamingFileLineAndExpectation) {
                "expected ',' between the auxiliary point and the target of CIRC, found end of statement");
   expect_error(program("sub()\n") + "DEF sub()\nsub()\nEND\n", "", "t.src", 5,
                "expected calls nested at most 32 deep (recursion is not evaluated), found a call of sub nested deeper");
+  // inf - inf is NaN: refused before any conversion to an integer.
+  expect_error(program("BAS(#TOOL, 1E308*10 - 1E308*10)\n"), "", "t.src", 2,
+               "expected a tool or base number for BAS(#TOOL, n), found a result that is not a finite number");
 }
 
 TEST(KrlFile, FindsTheDatBesideTheSrcIgnoringCaseAndNeedsItOnlyWhenUsed) {

@@ -49,8 +49,7 @@ int run_reproducers(const std::string& target, void (*parse)(std::string_view)) 
 
 TEST(ProgramFuzzRegression, EveryReproducerEndsInAProgramOrAnInputError) {
   EXPECT_GE(run_reproducers("krl", parse_krl_input), 1);
-  // No URScript reproducer so far; any added later runs here.
-  run_reproducers("urscript", [](std::string_view text) { parse_urscript(text, "fuzz.script"); });
+  EXPECT_GE(run_reproducers("urscript", [](std::string_view text) { parse_urscript(text, "fuzz.script"); }), 1);
   EXPECT_GE(run_reproducers("rapid", [](std::string_view text) { parse_rapid(text, "fuzz.mod"); }), 1);
 }
 

@@ -218,6 +218,9 @@ TEST(UrScriptFile, RejectsMalformedProgramsNamingFileLineAndExpectation) {
   expect_error("def f():\nend\ndef f():\nend\n", 3, "expected a function name not defined before (line 1), found 'f'");
   expect_error("x = [1, 2] + 1\n", 1, "expected numbers for '+', found a list of 2 numbers");
   expect_error("5 = x\n", 1, "expected a statement, found '5'");
+  // An index far outside every integer type is reported, not converted (the fuzzer's finding).
+  expect_error("x = [1, 2][7.7e89]\n", 1, "expected an index below 2, found 7.7e+89");
+  expect_error("x = p[0, 0, 0, 0, 0, 0][-1e300]\n", 1, "expected a pose index 0..5, found -1e+300");
 }
 
 TEST(UrScriptFile, AStatementContinuesInsideBrackets) {
