@@ -4,6 +4,9 @@
 #include <atomic>
 #include <filesystem>
 #include <fstream>
+#include <mutex>
+#include <system_error>
+#include <vector>
 #include <sstream>
 
 #include <gtest/gtest.h>
@@ -37,6 +40,37 @@ std::vector<std::string> split_lines(const std::string& text) {
   return lines;
 }
 
+namespace {
+
+/// The directories make_temporary_directory() made in this process, removed when it exits
+/// (each test is its own process under ctest), so test runs leave nothing in /tmp.
+class TemporaryDirectories {
+ public:
+  void add(const std::filesystem::path& directory) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    directories_.push_back(directory);
+  }
+  ~TemporaryDirectories() {
+    if (::getpid() != owner_) return;  // a forked child leaving by exit() keeps its parent's
+    for (const auto& directory : directories_) {
+      std::error_code ignored;  // a directory a test removed itself is fine
+      std::filesystem::remove_all(directory, ignored);
+    }
+  }
+
+ private:
+  const pid_t owner_ = ::getpid();
+  std::mutex mutex_;
+  std::vector<std::filesystem::path> directories_;
+};
+
+TemporaryDirectories& temporary_directories() {
+  static TemporaryDirectories directories;
+  return directories;
+}
+
+}  // namespace
+
 std::string make_temporary_directory(const std::string& tag) {
   static std::atomic<int> counter{0};
   const std::filesystem::path directory =
@@ -44,6 +78,7 @@ std::string make_temporary_directory(const std::string& tag) {
       ("grpvss-" + tag + "-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
   std::filesystem::remove_all(directory);
   std::filesystem::create_directories(directory);
+  temporary_directories().add(directory);
   return directory.string();
 }
 
