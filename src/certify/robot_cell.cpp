@@ -8,18 +8,12 @@
 #include "grpvss/exact/offset_recheck.hpp"
 #include "grpvss/exact/polytope_skeleton.hpp"
 #include "grpvss/geometry/directed_rounding.hpp"
+#include "grpvss/geometry/placed_hull.hpp"
 #include "grpvss/kinematics/fk_error_bound.hpp"
 
 namespace grpvss::certify {
-namespace {
 
-double max_abs_coordinate(const std::vector<Eigen::Vector3d>& points) {
-  double largest = 0.0;
-  for (const auto& p : points) largest = std::max(largest, p.cwiseAbs().maxCoeff());
-  return largest;
-}
-
-}  // namespace
+using geometry::max_abs_coordinate;
 
 double largest_link_coordinate(const std::vector<LinkHull>& hulls) {
   double largest = 0.0;

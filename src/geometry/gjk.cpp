@@ -137,45 +137,68 @@ Simplex closest(const Simplex& s) {
   }
 }
 
-/// Where each set's support search starts: its skeleton (climbed from `start`) or a scan.
-struct SupportSearch {
+/// A point set given as vectors: support points by a scan, or by climbing its skeleton from
+/// where the last support was found.
+struct VectorSet {
+  const std::vector<Vector3d>* points = nullptr;
   const HullSkeleton* skeleton = nullptr;
   int start = 0;
 
+  const Vector3d& point(int i) const { return (*points)[static_cast<std::size_t>(i)]; }
   // Always inlined: GJK calls this twice per iteration on the thesis's 8-16-vertex hulls.
-  [[gnu::always_inline]] int index(const std::vector<Vector3d>& points, const Vector3d& d) const {
-    return skeleton ? climb_support_index(points, *skeleton, start, d) : support_index(points, d);
+  [[gnu::always_inline]] int support(const Vector3d& d) const {
+    return skeleton ? climb_support_index(*points, *skeleton, start, d) : support_index(*points, d);
+  }
+};
+
+/// A link-frame hull under its placement: the support of the placed set in direction d is the
+/// placed support of the template in direction R^T d, so only the points GJK visits are placed.
+struct PlacedSet {
+  const PlacedHull* hull = nullptr;
+  int start = 0;
+
+  Vector3d point(int i) const { return hull->point_W(i); }
+  int support(const Vector3d& d_W) const {
+    const Vector3d d_L = hull->X_WL.linear().transpose() * d_W;
+    return climb_support_index(*hull->vertices_L, *hull->skeleton, start, d_L);
   }
 };
 
 /// The support point of A - B in direction d.
-[[gnu::always_inline]] inline SimplexVertex support(const std::vector<Vector3d>& a, const std::vector<Vector3d>& b,
-                      const Vector3d& d, const SupportSearch& a_search,
-                      const SupportSearch& b_search) {
-  const int ia = a_search.index(a, d);
-  const int ib = b_search.index(b, -d);
-  return {a[ia] - b[ib], ia, ib};
+template <class SetA, class SetB>
+[[gnu::always_inline]] inline SimplexVertex support(const SetA& a, const SetB& b, const Vector3d& d) {
+  const int ia = a.support(d);
+  const int ib = b.support(-d);
+  return {a.point(ia) - b.point(ib), ia, ib};
 }
 
-SupportSearch checked_search(const std::vector<Vector3d>& points, const HullSkeleton* skeleton,
-                             int start) {
+VectorSet checked_set(const std::vector<Vector3d>& points, const HullSkeleton* skeleton, int start) {
   if (skeleton && skeleton->point_count() != static_cast<int>(points.size())) {
     throw std::invalid_argument("gjk: the skeleton does not fit the point set");
   }
   if (start < 0 || start >= static_cast<int>(points.size())) start = 0;
-  return {skeleton, start};
+  return {&points, skeleton, start};
 }
 
-void fill_result(const Simplex& s, const std::vector<Vector3d>& a,
-                 const std::vector<Vector3d>& b, GjkResult& result) {
+PlacedSet checked_set(const PlacedHull& hull, int start) {
+  if (hull.vertices_L == nullptr || hull.skeleton == nullptr || hull.vertices_L->empty() ||
+      hull.skeleton->point_count() != static_cast<int>(hull.vertices_L->size())) {
+    throw std::invalid_argument("gjk: a placed hull needs its vertices and their skeleton");
+  }
+  if (start < 0 || start >= static_cast<int>(hull.vertices_L->size())) start = 0;
+  return {&hull, start};
+}
+
+template <class SetA, class SetB>
+void fill_result(const Simplex& s, const SetA& a, const SetB& b, GjkResult& result) {
   result.simplex_size = s.size;
   result.closest_a.setZero();
   result.closest_b.setZero();
   for (int k = 0; k < s.size; ++k) {
     result.simplex_a[k] = s.v[k].ia;
     result.simplex_b[k] = s.v[k].ib;
-    result.closest_a += s.weight[k] * a[s.v[k].ia];
-    result.closest_b += s.weight[k] * b[s.v[k].ib];
+    result.closest_a += s.weight[k] * a.point(s.v[k].ia);
+    result.closest_b += s.weight[k] * b.point(s.v[k].ib);
   }
   result.closest_vector = point_of(s);
 }
@@ -201,25 +224,23 @@ int support_index(const std::vector<Vector3d>& points, const Vector3d& d) {
   return best;
 }
 
-GjkResult gjk(const std::vector<Vector3d>& a, const std::vector<Vector3d>& b,
-              const Vector3d* warm_start_normal, const HullSkeleton* a_skeleton,
-              int a_climb_start, const HullSkeleton* b_skeleton, int b_climb_start) {
-  if (a.empty() || b.empty()) throw std::invalid_argument("gjk: empty point set");
-  SupportSearch a_search = checked_search(a, a_skeleton, a_climb_start);
-  SupportSearch b_search = checked_search(b, b_skeleton, b_climb_start);
+namespace {
+
+template <class SetA, class SetB>
+GjkResult run_gjk(SetA& a, SetB& b, const Vector3d* warm_start_normal) {
   GjkResult result;
   // n separates A (below) from B (above), so the first useful support direction of A - B is
   // -v = n; without a warm start use the direction from a[0] to b[0].
   // Exact zero tests: Eigen's isZero() is fuzzy (|x| <= 1e-12) and tiny vectors matter here.
   const bool warm = warm_start_normal != nullptr && !(warm_start_normal->array() == 0.0).all();
-  Vector3d direction = warm ? *warm_start_normal : Vector3d(b[0] - a[0]);
+  Vector3d direction = warm ? *warm_start_normal : Vector3d(b.point(0) - a.point(0));
   if ((direction.array() == 0.0).all()) direction = Vector3d::UnitX();
   Simplex simplex;
-  simplex.v[0] = support(a, b, direction, a_search, b_search);
+  simplex.v[0] = support(a, b, direction);
   simplex.weight[0] = 1.0;
   simplex.size = 1;
-  result.last_support_a = a_search.start = simplex.v[0].ia;
-  result.last_support_b = b_search.start = simplex.v[0].ib;
+  result.last_support_a = a.start = simplex.v[0].ia;
+  result.last_support_b = b.start = simplex.v[0].ib;
   double scale2 = simplex.v[0].w.squaredNorm();
   Vector3d v = simplex.v[0].w;
 
@@ -232,9 +253,9 @@ GjkResult gjk(const std::vector<Vector3d>& a, const std::vector<Vector3d>& b,
       return result;
     }
     // The supports move little between iterations: climb from the last ones.
-    const SimplexVertex w = support(a, b, -v, a_search, b_search);
-    result.last_support_a = a_search.start = w.ia;
-    result.last_support_b = b_search.start = w.ib;
+    const SimplexVertex w = support(a, b, -v);
+    result.last_support_a = a.start = w.ia;
+    result.last_support_b = b.start = w.ib;
     scale2 = std::max(scale2, w.w.squaredNorm());
     const bool repeated = std::any_of(simplex.v.begin(), simplex.v.begin() + simplex.size,
                                       [&](const SimplexVertex& s) {
@@ -271,6 +292,32 @@ GjkResult gjk(const std::vector<Vector3d>& a, const std::vector<Vector3d>& b,
   result.distance = v.norm();
   result.status = GjkStatus::kSeparated;
   return result;
+}
+
+}  // namespace
+
+GjkResult gjk(const std::vector<Vector3d>& a, const std::vector<Vector3d>& b,
+              const Vector3d* warm_start_normal, const HullSkeleton* a_skeleton,
+              int a_climb_start, const HullSkeleton* b_skeleton, int b_climb_start) {
+  if (a.empty() || b.empty()) throw std::invalid_argument("gjk: empty point set");
+  VectorSet a_set = checked_set(a, a_skeleton, a_climb_start);
+  VectorSet b_set = checked_set(b, b_skeleton, b_climb_start);
+  return run_gjk(a_set, b_set, warm_start_normal);
+}
+
+GjkResult gjk(const PlacedHull& a, const PlacedHull& b, const Vector3d* warm_start_normal,
+              int a_climb_start, int b_climb_start) {
+  PlacedSet a_set = checked_set(a, a_climb_start);
+  PlacedSet b_set = checked_set(b, b_climb_start);
+  return run_gjk(a_set, b_set, warm_start_normal);
+}
+
+GjkResult gjk(const PlacedHull& a, const std::vector<Vector3d>& b, const Vector3d* warm_start_normal,
+              int a_climb_start) {
+  if (b.empty()) throw std::invalid_argument("gjk: empty point set");
+  PlacedSet a_set = checked_set(a, a_climb_start);
+  VectorSet b_set = checked_set(b, nullptr, 0);
+  return run_gjk(a_set, b_set, warm_start_normal);
 }
 
 }  // namespace grpvss::geometry

@@ -59,7 +59,19 @@ TEST(Gjk, OverlappingCubesEndWithTetrahedronAroundOrigin) {
 }
 
 TEST(Gjk, EmptyInputIsRejected) {
-  EXPECT_THROW(gjk({}, test::cube(Vector3d::Zero(), 1.0)), std::invalid_argument);
+  const std::vector<Vector3d> none;
+  const std::vector<Vector3d> cube = test::cube(Vector3d::Zero(), 1.0);
+  EXPECT_THROW(gjk(none, cube), std::invalid_argument);
+  // A placed hull needs its vertices and their skeleton; the obstacle side must not be empty.
+  EXPECT_THROW(gjk(PlacedHull{}, cube), std::invalid_argument);
+  const HullSkeleton no_edges{{0, 0, 0, 0, 0, 0, 0, 0, 0}, {}};
+  PlacedHull placed;
+  placed.vertices_L = &cube;
+  placed.skeleton = &no_edges;
+  EXPECT_THROW(gjk(placed, none), std::invalid_argument);
+  const HullSkeleton too_short{{0, 0}, {}};
+  placed.skeleton = &too_short;
+  EXPECT_THROW(gjk(placed, cube), std::invalid_argument);
 }
 
 TEST(Gjk, RandomSeparatedPairsConvergeToDualityGap) {

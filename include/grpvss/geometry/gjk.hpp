@@ -13,6 +13,7 @@
 #include <Eigen/Core>
 
 #include "grpvss/geometry/hull_skeleton.hpp"
+#include "grpvss/geometry/placed_hull.hpp"
 
 namespace grpvss::geometry {
 
@@ -53,6 +54,19 @@ GjkResult gjk(const std::vector<Eigen::Vector3d>& a, const std::vector<Eigen::Ve
               const Eigen::Vector3d* warm_start_normal = nullptr,
               const HullSkeleton* a_skeleton = nullptr, int a_climb_start = 0,
               const HullSkeleton* b_skeleton = nullptr, int b_climb_start = 0);
+
+/// \brief GJK on two placed link-frame hulls: each support point is climbed to on the
+/// template's skeleton in direction \f$\hat R^T d\f$ and placed alone (PlacedHull::point_W),
+/// so a query visits a few vertices instead of placing all. Indices refer to vertices_L.
+/// Proposes like the overload above (the climb may end a rounding error short of the placed
+/// set's maximum). \throws std::invalid_argument if a hull lacks its vertices or skeleton.
+GjkResult gjk(const PlacedHull& a, const PlacedHull& b,
+              const Eigen::Vector3d* warm_start_normal = nullptr, int a_climb_start = 0,
+              int b_climb_start = 0);
+
+/// \brief GJK on a placed link-frame hull and a set of world points (an obstacle).
+GjkResult gjk(const PlacedHull& a, const std::vector<Eigen::Vector3d>& b,
+              const Eigen::Vector3d* warm_start_normal = nullptr, int a_climb_start = 0);
 
 /// \brief Index of the point of \p points maximising \f$d \cdot p\f$ (first on ties).
 int support_index(const std::vector<Eigen::Vector3d>& points, const Eigen::Vector3d& d);
