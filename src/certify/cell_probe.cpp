@@ -7,8 +7,10 @@
 #include <tuple>
 
 #include "grpvss/exact/certified_query.hpp"
+#include "grpvss/exact/placed_separation.hpp"
 #include "grpvss/geometry/directed_rounding.hpp"
 #include "grpvss/geometry/placed_box.hpp"
+#include "grpvss/geometry/placed_hull.hpp"
 #include "grpvss/exact/exact_contact.hpp"
 #include "sphere_slab.hpp"
 
@@ -51,7 +53,15 @@ CellProbe::CellProbe(const RobotCell& cell)
       warm_normals_(cell.hulls().size() * static_cast<std::size_t>(cell.obstacles().size())),
       has_warm_normal_(cell.hulls().size() * static_cast<std::size_t>(cell.obstacles().size()), 0),
       climb_hints_(cell.hulls().size() * static_cast<std::size_t>(cell.obstacles().size()), 0),
-      unmoved_hulls_(cell.hulls().size()) {}
+      unmoved_hulls_(cell.hulls().size()) {
+  expanded_max_abs_L_.reserve(cell.hulls().size());
+  for (std::size_t i = 0; i < cell.hulls().size(); ++i) {
+    const std::vector<Eigen::Vector3d>& expanded_L = cell.hulls()[i].expanded_L;
+    const bool vertex_list = cell.expanded_polytope_L(i).vertices().size() == expanded_L.size();
+    const bool big = expanded_L.size() >= geometry::kTemplateClimbMinVertices;
+    expanded_max_abs_L_.push_back(vertex_list && big ? geometry::max_abs_coordinate(expanded_L) : -1.0);
+  }
+}
 
 bool CellProbe::reuse_unmoved_hull(int hull_index, const Eigen::Isometry3d& X_WL,
                                    ProbeResult& out) const {
@@ -244,23 +254,49 @@ void CellProbe::decide_expanded(HullProbe& hull, int o, double gap_estimate,
     evidence.separated = true;
     return;
   }
+  const int obstacle_count = cell.obstacles().size();
+  const std::size_t warm_slot = static_cast<std::size_t>(hull.index) * obstacle_count + o;
+  if (separate_by_template(hull, o, warm_slot, evidence)) return;
   if (!hull.expanded_placed) {
     kinematics::place_points(hull.X_WL, hull.hull.expanded_L, placed_expanded_);
     hull.expanded_placed = true;
   }
-  const int obstacle_count = cell.obstacles().size();
-  const std::size_t warm_slot = static_cast<std::size_t>(hull.index) * obstacle_count + o;
   const geometry::CertifiedPairResult result = geometry::certified_pair_query(
       placed_expanded_, cell.obstacles().vertices_W(o),
       has_warm_normal_[warm_slot] ? &warm_normals_[warm_slot] : nullptr,
       &cell.expanded_skeleton(static_cast<std::size_t>(hull.index)), &climb_hints_[warm_slot]);
   if (result.contact == geometry::Contact::kSeparated && result.witness) {
-    evidence.separated = true;
-    evidence.witness = *result.witness;
-    evidence.lower_bound = result.clearance_lower_bound;
-    warm_normals_[warm_slot] = result.witness->normal;
-    has_warm_normal_[warm_slot] = 1;
+    keep_separation(result, warm_slot, evidence);
   }
+}
+
+// The witness proven is the one a scan of the placed offset would prove
+// (proofs/fast-path.md#placed-separation); the checker re-checks it on every placed vertex.
+bool CellProbe::separate_by_template(const HullProbe& hull, int o, std::size_t warm_slot,
+                                     PairEvidence& evidence) {
+  const RobotCell& cell = *cell_;
+  const auto h = static_cast<std::size_t>(hull.index);
+  if (!(expanded_max_abs_L_[h] >= 0.0)) return false;
+  geometry::PlacedHull offset;
+  offset.vertices_L = &hull.hull.expanded_L;
+  offset.skeleton = &cell.expanded_skeleton(h);
+  offset.X_WL = hull.X_WL;
+  offset.max_abs_L = expanded_max_abs_L_[h];
+  const auto result = geometry::certified_placed_separation_query(
+      offset, cell.obstacles().vertices_W(o),
+      has_warm_normal_[warm_slot] ? &warm_normals_[warm_slot] : nullptr, &climb_hints_[warm_slot]);
+  if (!result) return false;
+  keep_separation(*result, warm_slot, evidence);
+  return true;
+}
+
+void CellProbe::keep_separation(const geometry::CertifiedPairResult& result, std::size_t warm_slot,
+                                PairEvidence& evidence) {
+  evidence.separated = true;
+  evidence.witness = *result.witness;
+  evidence.lower_bound = result.clearance_lower_bound;
+  warm_normals_[warm_slot] = result.witness->normal;
+  has_warm_normal_[warm_slot] = 1;
 }
 
 void CellProbe::record_clearance(HullProbe& hull, HullState& state, const PairEvidence& evidence,

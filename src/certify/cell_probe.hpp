@@ -105,6 +105,13 @@ class CellProbe {
   void collect_candidates(HullProbe& hull, HullState& state);
   void order_candidates(HullProbe& hull);
   void decide_expanded(HullProbe& hull, int obstacle, double gap_estimate, PairEvidence& evidence);
+  /// decide_expanded's first try: the offset's template under X_WL against the obstacle,
+  /// placing only the vertices visited. False when that proves nothing.
+  bool separate_by_template(const HullProbe& hull, int obstacle, std::size_t warm_slot,
+                            PairEvidence& evidence);
+  /// Keeps a proven separation of the offset and an obstacle as evidence and warm start.
+  void keep_separation(const geometry::CertifiedPairResult& result, std::size_t warm_slot,
+                       PairEvidence& evidence);
   void record_clearance(HullProbe& hull, HullState& state, const PairEvidence& evidence,
                         ProbeResult& out);
   void decide_raw(HullProbe& hull, int obstacle, HullState& state, ProbeResult& out);
@@ -144,6 +151,11 @@ class CellProbe {
   std::vector<char> has_warm_normal_;
   std::vector<int> climb_hints_;  ///< [hull * obstacles + obstacle]: GJK's last support of A
   std::vector<UnmovedHull> unmoved_hulls_;  ///< [hull]
+  /// [hull]: largest |coordinate| of expanded_L, or -1 when the offset is always placed: when
+  /// expanded_L is not exactly the vertex list of its exact hull (its template cannot be
+  /// climbed to a proven support, proofs/fast-path.md#placed-separation) or is small
+  /// (geometry::kTemplateClimbMinVertices).
+  std::vector<double> expanded_max_abs_L_;
 };
 
 }  // namespace grpvss::certify

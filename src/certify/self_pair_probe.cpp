@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "grpvss/exact/certified_query.hpp"
+#include "grpvss/exact/placed_separation.hpp"
 #include "grpvss/geometry/directed_rounding.hpp"
 #include "grpvss/kinematics/forward_kinematics.hpp"
 #include "sphere_slab.hpp"
@@ -26,7 +28,48 @@ SelfPairProbe::SelfPairProbe(const RobotCell& cell)
       warm_normals_(cell.self_pairs().size()),
       has_warm_normal_(cell.self_pairs().size(), 0),
       climb_hints_a_(cell.self_pairs().size(), 0),
-      climb_hints_b_(cell.self_pairs().size(), 0) {}
+      climb_hints_b_(cell.self_pairs().size(), 0) {
+  raw_max_abs_L_.reserve(cell.hulls().size());
+  for (const LinkHull& hull : cell.hulls()) raw_max_abs_L_.push_back(geometry::max_abs_coordinate(hull.raw_L));
+}
+
+geometry::PlacedHull SelfPairProbe::template_placed(int hull,
+                                                    const std::vector<Eigen::Isometry3d>& X_WL) const {
+  const auto h = static_cast<std::size_t>(hull);
+  const LinkHull& link_hull = cell_->hulls()[h];
+  geometry::PlacedHull placed;
+  placed.vertices_L = &link_hull.raw_L;
+  placed.skeleton = &cell_->raw_skeleton(h);
+  placed.X_WL = X_WL[static_cast<std::size_t>(link_hull.link)];
+  placed.max_abs_L = raw_max_abs_L_[h];
+  return placed;
+}
+
+// Only the vertices around each support are placed, and the witness proven is the one a scan
+// of the placed points would prove (proofs/fast-path.md#placed-separation).
+bool SelfPairProbe::settle_by_templates(std::size_t p, const std::vector<Eigen::Isometry3d>& X_WL,
+                                        SelfPairEvidence& evidence) {
+  const SelfPairHulls& pair = cell_->self_pairs()[p];
+  const auto size = [&](int hull) { return cell_->hulls()[static_cast<std::size_t>(hull)].raw_L.size(); };
+  if (std::max(size(pair.a), size(pair.b)) < geometry::kTemplateClimbMinVertices) return false;
+  const auto result = geometry::certified_placed_separation_query(
+      template_placed(pair.a, X_WL), template_placed(pair.b, X_WL),
+      has_warm_normal_[p] ? &warm_normals_[p] : nullptr, &climb_hints_a_[p], &climb_hints_b_[p]);
+  if (!result) return false;
+  keep(p, *result, evidence);
+  return true;
+}
+
+void SelfPairProbe::keep(std::size_t p, const geometry::CertifiedPairResult& result,
+                         SelfPairEvidence& evidence) {
+  evidence.separated = true;
+  evidence.witness = *result.witness;
+  evidence.lower_bound = result.clearance_lower_bound;
+  evidence.distance = exact_distance_lower_bound(result.clearance_lower_bound,
+                                                 cell_->placement_error());
+  warm_normals_[p] = result.witness->normal;
+  has_warm_normal_[p] = 1;
+}
 
 const std::vector<Eigen::Vector3d>& SelfPairProbe::placed(
     int hull, const std::vector<Eigen::Isometry3d>& X_WL) {
@@ -82,6 +125,7 @@ bool SelfPairProbe::probe(const std::vector<Eigen::Isometry3d>& X_WL,
                         out[p])) {
       continue;
     }
+    if (settle_by_templates(p, X_WL, out[p])) continue;
     const std::vector<Eigen::Vector3d>& a = placed(pairs[p].a, X_WL);
     const std::vector<Eigen::Vector3d>& b = placed(pairs[p].b, X_WL);
     // GJK climbs both hulls' skeletons (it only proposes: the witness is certified over
@@ -99,13 +143,7 @@ bool SelfPairProbe::probe(const std::vector<Eigen::Isometry3d>& X_WL,
     // A gap too small for a double slab (~1e-16) proves no usable distance: neither separated
     // nor a contact (the step rule cannot pass it; it is no collision either).
     if (!result.witness) continue;
-    evidence.separated = true;
-    evidence.witness = *result.witness;
-    evidence.lower_bound = result.clearance_lower_bound;
-    evidence.distance = exact_distance_lower_bound(result.clearance_lower_bound,
-                                                   cell_->placement_error());
-    warm_normals_[p] = result.witness->normal;
-    has_warm_normal_[p] = 1;
+    keep(p, result, evidence);
   }
   return any_contact;
 }

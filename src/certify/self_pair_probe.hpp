@@ -8,6 +8,8 @@
 #include <Eigen/Geometry>
 
 #include "grpvss/certify/robot_cell.hpp"
+#include "grpvss/exact/certified_query.hpp"
+#include "grpvss/geometry/placed_hull.hpp"
 #include "grpvss/geometry/separation_witness.hpp"
 
 namespace grpvss::certify {
@@ -48,6 +50,14 @@ class SelfPairProbe {
 
  private:
   const std::vector<Eigen::Vector3d>& placed(int hull, const std::vector<Eigen::Isometry3d>& X_WL);
+  /// Hull `hull`'s raw template under its link's pose, for queries that place only what they visit.
+  geometry::PlacedHull template_placed(int hull, const std::vector<Eigen::Isometry3d>& X_WL) const;
+  /// Pair p decided on the two raw templates under X_WL when one hull is big enough to be
+  /// worth it (geometry::kTemplateClimbMinVertices); false when that proves nothing.
+  bool settle_by_templates(std::size_t p, const std::vector<Eigen::Isometry3d>& X_WL,
+                           SelfPairEvidence& evidence);
+  /// Keeps a proven separation of pair p as its evidence and its normal as the next warm start.
+  void keep(std::size_t p, const geometry::CertifiedPairResult& result, SelfPairEvidence& evidence);
   /// The slab of the two hulls' placed balls, kept in `evidence` when it proves at least
   /// `ample` (false otherwise).
   bool settle_by_balls(const SelfPairHulls& pair, const std::vector<Eigen::Isometry3d>& X_WL,
@@ -56,6 +66,7 @@ class SelfPairProbe {
   const RobotCell* cell_;
   std::vector<std::vector<Eigen::Vector3d>> placed_raw_;  ///< [hull], this probe's
   std::vector<char> is_placed_;
+  std::vector<double> raw_max_abs_L_;  ///< [hull]: largest |coordinate| of raw_L
   std::vector<Eigen::Vector3d> warm_normals_;  ///< [pair]
   std::vector<char> has_warm_normal_;
   std::vector<int> climb_hints_a_;  ///< [pair]: where GJK's climb on hull a starts
