@@ -118,6 +118,34 @@ TEST(PlacedSeparation, EveryWitnessHoldsExactlyOnThePlacedPointsAndMatchesTheSca
   EXPECT_EQ(scanned_only, 0);
 }
 
+// A normal square to a face ties its four vertices up to the rounding of R^T n: the plateau
+// is settled as one (every outside neighbour is provably lower) and the bound is the face's,
+// from every start, under 50 random rotations. (Testing the climb's end alone against its
+// neighbours fails on most of these.)
+TEST(PlacedSeparation, AFaceSeenHeadOnIsSettledAsATiedPlateau) {
+  const ConvexPolytope box = ConvexPolytope::from_points(test::cube(Vector3d(-0.1, -0.1, -0.1), 0.2));
+  const LinkTemplate link{box.vertices(), vertex_skeleton(box)};
+  std::mt19937_64 rng(545);
+  for (int trial = 0; trial < 50; ++trial) {
+    Eigen::Isometry3d X_a = Eigen::Isometry3d::Identity();
+    X_a.linear() = test::random_rotation(rng);
+    Eigen::Isometry3d X_b = X_a;
+    X_b.translation() = X_a.linear() * Vector3d(0.05, 0.0, 0.201);  // 1 mm above A's top face
+    const Vector3d normal = X_a.linear() * Vector3d(0, 0, 1);
+    for (int start = 0; start < 8; ++start) {
+      int a_start = start;
+      int b_start = start;
+      const auto s = certify_placed_separation(placed(link, X_a), a_start, placed(link, X_b), b_start, normal);
+      ASSERT_TRUE(s) << "trial " << trial << " start " << start;
+      EXPECT_NEAR(s->lower_bound, 0.001, 1e-14);
+      EXPECT_TRUE(check_witness_exactly(placed_points(link, X_a), placed_points(link, X_b), s->witness,
+                                        s->lower_bound));
+      EXPECT_DOUBLE_EQ(link.vertices_L[static_cast<std::size_t>(a_start)].z(), 0.1);   // A's top face
+      EXPECT_DOUBLE_EQ(link.vertices_L[static_cast<std::size_t>(b_start)].z(), -0.1);  // B's bottom face
+    }
+  }
+}
+
 // A normal that does not separate is refused, and so is a zero or non-finite one.
 TEST(PlacedSeparation, RefusesNormalsThatDoNotSeparate) {
   std::mt19937_64 rng(4341);
