@@ -38,6 +38,11 @@ def build_base(commit, jobs):
         modules = os.path.join(HERE, "src", "viewer", "node_modules")
         if os.path.exists(modules):  # the configure step requires the viewer bundle's modules
             os.symlink(os.path.realpath(modules), os.path.join(source, "src", "viewer", "node_modules"))
+    # A's robot benchmarks read ../shared/robots beside A's source, as B's do beside ours.
+    shared = os.path.join(os.path.dirname(source), "shared")
+    ours = os.path.join(os.path.dirname(HERE), "shared")
+    if not os.path.exists(shared) and os.path.isdir(ours):
+        os.symlink(os.path.realpath(ours), shared)
     configure = ["cmake", "-S", source, "-B", os.path.join(source, "build"), "-DCMAKE_BUILD_TYPE=Release"]
     if subprocess.run(["sh", "-c", "command -v ccache"], capture_output=True).returncode == 0:
         configure.append("-DCMAKE_CXX_COMPILER_LAUNCHER=ccache")
