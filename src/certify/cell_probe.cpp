@@ -53,6 +53,7 @@ CellProbe::CellProbe(const RobotCell& cell)
       warm_normals_(cell.hulls().size() * static_cast<std::size_t>(cell.obstacles().size())),
       has_warm_normal_(cell.hulls().size() * static_cast<std::size_t>(cell.obstacles().size()), 0),
       climb_hints_(cell.hulls().size() * static_cast<std::size_t>(cell.obstacles().size()), 0),
+      simplex_hints_(cell.hulls().size() * static_cast<std::size_t>(cell.obstacles().size())),
       unmoved_hulls_(cell.hulls().size()) {
   expanded_max_abs_L_.reserve(cell.hulls().size());
   for (std::size_t i = 0; i < cell.hulls().size(); ++i) {
@@ -284,7 +285,8 @@ bool CellProbe::separate_by_template(const HullProbe& hull, int o, std::size_t w
   offset.max_abs_L = expanded_max_abs_L_[h];
   const auto result = geometry::certified_placed_separation_query(
       offset, cell.obstacles().vertices_W(o),
-      has_warm_normal_[warm_slot] ? &warm_normals_[warm_slot] : nullptr, &climb_hints_[warm_slot]);
+      has_warm_normal_[warm_slot] ? &warm_normals_[warm_slot] : nullptr, &climb_hints_[warm_slot],
+      &simplex_hints_[warm_slot]);
   if (!result) return false;
   keep_separation(*result, warm_slot, evidence);
   return true;

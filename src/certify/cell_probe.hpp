@@ -12,6 +12,7 @@
 #include <Eigen/Core>
 
 #include "grpvss/certify/robot_cell.hpp"
+#include "grpvss/geometry/gjk.hpp"
 #include "grpvss/exact/convex_polytope.hpp"
 #include "grpvss/evidence/certificate.hpp"
 #include "grpvss/evidence/verification_result.hpp"
@@ -150,6 +151,8 @@ class CellProbe {
   std::vector<Eigen::Vector3d> warm_normals_;  ///< [hull * obstacles + obstacle]
   std::vector<char> has_warm_normal_;
   std::vector<int> climb_hints_;  ///< [hull * obstacles + obstacle]: GJK's last support of A
+  /// [hull * obstacles + obstacle]: GJK's last simplex on the offset's template
+  std::vector<geometry::GjkSimplexHint> simplex_hints_;
   std::vector<UnmovedHull> unmoved_hulls_;  ///< [hull]
   /// [hull]: largest |coordinate| of expanded_L, or -1 when the offset is always placed: when
   /// expanded_L is not exactly the vertex list of its exact hull (its template cannot be

@@ -28,7 +28,8 @@ SelfPairProbe::SelfPairProbe(const RobotCell& cell)
       warm_normals_(cell.self_pairs().size()),
       has_warm_normal_(cell.self_pairs().size(), 0),
       climb_hints_a_(cell.self_pairs().size(), 0),
-      climb_hints_b_(cell.self_pairs().size(), 0) {
+      climb_hints_b_(cell.self_pairs().size(), 0),
+      simplex_hints_(cell.self_pairs().size()) {
   raw_max_abs_L_.reserve(cell.hulls().size());
   for (const LinkHull& hull : cell.hulls()) raw_max_abs_L_.push_back(geometry::max_abs_coordinate(hull.raw_L));
 }
@@ -54,7 +55,8 @@ bool SelfPairProbe::settle_by_templates(std::size_t p, const std::vector<Eigen::
   if (std::max(size(pair.a), size(pair.b)) < geometry::kTemplateClimbMinVertices) return false;
   const auto result = geometry::certified_placed_separation_query(
       template_placed(pair.a, X_WL), template_placed(pair.b, X_WL),
-      has_warm_normal_[p] ? &warm_normals_[p] : nullptr, &climb_hints_a_[p], &climb_hints_b_[p]);
+      has_warm_normal_[p] ? &warm_normals_[p] : nullptr, &climb_hints_a_[p], &climb_hints_b_[p],
+      &simplex_hints_[p]);
   if (!result) return false;
   keep(p, *result, evidence);
   return true;

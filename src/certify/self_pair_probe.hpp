@@ -9,6 +9,7 @@
 
 #include "grpvss/certify/robot_cell.hpp"
 #include "grpvss/exact/certified_query.hpp"
+#include "grpvss/geometry/gjk.hpp"
 #include "grpvss/geometry/placed_hull.hpp"
 #include "grpvss/geometry/separation_witness.hpp"
 
@@ -71,6 +72,7 @@ class SelfPairProbe {
   std::vector<char> has_warm_normal_;
   std::vector<int> climb_hints_a_;  ///< [pair]: where GJK's climb on hull a starts
   std::vector<int> climb_hints_b_;  ///< [pair]: the same on hull b
+  std::vector<geometry::GjkSimplexHint> simplex_hints_;  ///< [pair]: GJK's last simplex on the templates
 };
 
 }  // namespace grpvss::certify

@@ -200,9 +200,9 @@ std::optional<CertifiedSeparation> certify_placed_separation(const PlacedHull& a
 
 std::optional<CertifiedPairResult> certified_placed_separation_query(
     const PlacedHull& a, const PlacedHull& b, const Vector3d* warm_start_direction,
-    int* a_climb_hint, int* b_climb_hint) {
+    int* a_climb_hint, int* b_climb_hint, GjkSimplexHint* simplex_hint) {
   const GjkResult g = gjk(a, b, warm_start_direction, a_climb_hint ? *a_climb_hint : 0,
-                          b_climb_hint ? *b_climb_hint : 0);
+                          b_climb_hint ? *b_climb_hint : 0, simplex_hint);
   if (a_climb_hint) *a_climb_hint = g.last_support_a;
   if (b_climb_hint) *b_climb_hint = g.last_support_b;
   return query(a, b, g, warm_start_direction);
@@ -210,9 +210,9 @@ std::optional<CertifiedPairResult> certified_placed_separation_query(
 
 std::optional<CertifiedPairResult> certified_placed_separation_query(
     const PlacedHull& a, const std::vector<Vector3d>& b, const Vector3d* warm_start_direction,
-    int* a_climb_hint) {
+    int* a_climb_hint, GjkSimplexHint* simplex_hint) {
   if (b.empty()) throw std::invalid_argument("certified_placed_separation_query: empty point set");
-  const GjkResult g = gjk(a, b, warm_start_direction, a_climb_hint ? *a_climb_hint : 0);
+  const GjkResult g = gjk(a, b, warm_start_direction, a_climb_hint ? *a_climb_hint : 0, simplex_hint);
   if (a_climb_hint) *a_climb_hint = g.last_support_a;
   return query(a, b, g, warm_start_direction);
 }

@@ -145,6 +145,7 @@ struct VectorSet {
   int start = 0;
 
   const Vector3d& point(int i) const { return (*points)[static_cast<std::size_t>(i)]; }
+  int size() const { return static_cast<int>(points->size()); }
   // Always inlined: GJK calls this twice per iteration on the thesis's 8-16-vertex hulls.
   [[gnu::always_inline]] int support(const Vector3d& d) const {
     return skeleton ? climb_support_index(*points, *skeleton, start, d) : support_index(*points, d);
@@ -158,6 +159,7 @@ struct PlacedSet {
   int start = 0;
 
   Vector3d point(int i) const { return hull->point_W(i); }
+  int size() const { return static_cast<int>(hull->vertices_L->size()); }
   int support(const Vector3d& d_W) const {
     const Vector3d d_L = hull->X_WL.linear().transpose() * d_W;
     return climb_support_index(*hull->vertices_L, *hull->skeleton, start, d_L);
@@ -226,8 +228,28 @@ int support_index(const std::vector<Vector3d>& points, const Vector3d& d) {
 
 namespace {
 
+/// The previous query's simplex at the sets' new places, reduced to its closest feature; false
+/// when there is none (or an index is out of range).
 template <class SetA, class SetB>
-GjkResult run_gjk(SetA& a, SetB& b, const Vector3d* warm_start_normal) {
+bool start_from_simplex(const SetA& a, const SetB& b, const GjkSimplexHint* hint, Simplex& simplex) {
+  if (hint == nullptr || hint->size < 1 || hint->size > 3) return false;
+  Simplex previous;
+  for (int k = 0; k < hint->size; ++k) {
+    const int ia = hint->a[static_cast<std::size_t>(k)];
+    const int ib = hint->b[static_cast<std::size_t>(k)];
+    if (ia < 0 || ia >= a.size() || ib < 0 || ib >= b.size()) return false;
+    previous.v[static_cast<std::size_t>(k)] = {a.point(ia) - b.point(ib), ia, ib};
+    previous.weight[static_cast<std::size_t>(k)] = 0.0;
+  }
+  previous.size = hint->size;
+  if (previous.size == 1) previous.weight[0] = 1.0;
+  simplex = closest(previous);
+  return true;
+}
+
+template <class SetA, class SetB>
+GjkResult run_gjk(SetA& a, SetB& b, const Vector3d* warm_start_normal,
+                  const GjkSimplexHint* simplex_hint = nullptr) {
   GjkResult result;
   // n separates A (below) from B (above), so the first useful support direction of A - B is
   // -v = n; without a warm start use the direction from a[0] to b[0].
@@ -236,13 +258,20 @@ GjkResult run_gjk(SetA& a, SetB& b, const Vector3d* warm_start_normal) {
   Vector3d direction = warm ? *warm_start_normal : Vector3d(b.point(0) - a.point(0));
   if ((direction.array() == 0.0).all()) direction = Vector3d::UnitX();
   Simplex simplex;
-  simplex.v[0] = support(a, b, direction);
-  simplex.weight[0] = 1.0;
-  simplex.size = 1;
-  result.last_support_a = a.start = simplex.v[0].ia;
-  result.last_support_b = b.start = simplex.v[0].ib;
-  double scale2 = simplex.v[0].w.squaredNorm();
-  Vector3d v = simplex.v[0].w;
+  double scale2 = 0.0;
+  if (start_from_simplex(a, b, simplex_hint, simplex)) {
+    for (int k = 0; k < simplex.size; ++k) scale2 = std::max(scale2, simplex.v[static_cast<std::size_t>(k)].w.squaredNorm());
+    result.last_support_a = a.start = simplex.v[0].ia;
+    result.last_support_b = b.start = simplex.v[0].ib;
+  } else {
+    simplex.v[0] = support(a, b, direction);
+    simplex.weight[0] = 1.0;
+    simplex.size = 1;
+    result.last_support_a = a.start = simplex.v[0].ia;
+    result.last_support_b = b.start = simplex.v[0].ib;
+    scale2 = simplex.v[0].w.squaredNorm();
+  }
+  Vector3d v = point_of(simplex);
 
   for (int iteration = 1; iteration <= kMaxIterations; ++iteration) {
     result.iterations = iteration;
@@ -294,6 +323,14 @@ GjkResult run_gjk(SetA& a, SetB& b, const Vector3d* warm_start_normal) {
   return result;
 }
 
+// A separated pair's final simplex is where its next query starts; anything else starts afresh.
+void keep_simplex(const GjkResult& result, GjkSimplexHint* hint) {
+  if (hint == nullptr) return;
+  hint->size = result.status == GjkStatus::kSeparated ? result.simplex_size : 0;
+  hint->a = result.simplex_a;
+  hint->b = result.simplex_b;
+}
+
 }  // namespace
 
 GjkResult gjk(const std::vector<Vector3d>& a, const std::vector<Vector3d>& b,
@@ -306,18 +343,22 @@ GjkResult gjk(const std::vector<Vector3d>& a, const std::vector<Vector3d>& b,
 }
 
 GjkResult gjk(const PlacedHull& a, const PlacedHull& b, const Vector3d* warm_start_normal,
-              int a_climb_start, int b_climb_start) {
+              int a_climb_start, int b_climb_start, GjkSimplexHint* simplex_hint) {
   PlacedSet a_set = checked_set(a, a_climb_start);
   PlacedSet b_set = checked_set(b, b_climb_start);
-  return run_gjk(a_set, b_set, warm_start_normal);
+  const GjkResult result = run_gjk(a_set, b_set, warm_start_normal, simplex_hint);
+  keep_simplex(result, simplex_hint);
+  return result;
 }
 
 GjkResult gjk(const PlacedHull& a, const std::vector<Vector3d>& b, const Vector3d* warm_start_normal,
-              int a_climb_start) {
+              int a_climb_start, GjkSimplexHint* simplex_hint) {
   if (b.empty()) throw std::invalid_argument("gjk: empty point set");
   PlacedSet a_set = checked_set(a, a_climb_start);
   VectorSet b_set = checked_set(b, nullptr, 0);
-  return run_gjk(a_set, b_set, warm_start_normal);
+  const GjkResult result = run_gjk(a_set, b_set, warm_start_normal, simplex_hint);
+  keep_simplex(result, simplex_hint);
+  return result;
 }
 
 }  // namespace grpvss::geometry

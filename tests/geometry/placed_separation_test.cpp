@@ -187,5 +187,50 @@ TEST(PlacedSeparation, GjkOnTemplatesProposesWhatGjkOnThePlacedPointsProposes) {
   EXPECT_GE(separated, 100);
 }
 
+// GJK started from the pair's last simplex (the vertices at their new places) after a small
+// motion finds what a fresh start finds, in fewer iterations over 300 random pairs; a hint
+// out of range is ignored.
+TEST(PlacedSeparation, GjkFromTheLastSimplexFindsWhatAFreshStartFinds) {
+  std::mt19937_64 rng(2026);
+  std::uniform_int_distribution<int> size(20, 300);
+  std::normal_distribution<double> nudge(0.0, 0.002);
+  int separated = 0;
+  int fresh_iterations = 0;
+  int hinted_iterations = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    const LinkTemplate link_a = random_link(rng, size(rng));
+    const LinkTemplate link_b = random_link(rng, size(rng));
+    const Eigen::Isometry3d X_a = random_pose(rng, 0.4);
+    Eigen::Isometry3d X_b = random_pose(rng, 0.4);
+    GjkSimplexHint hint;
+    const GjkResult before = gjk(placed(link_a, X_a), placed(link_b, X_b), nullptr, 0, 0, &hint);
+    if (before.status != GjkStatus::kSeparated) {
+      EXPECT_EQ(hint.size, 0);
+      continue;
+    }
+    EXPECT_EQ(hint.size, before.simplex_size);
+    X_b.translation() += Vector3d(nudge(rng), nudge(rng), nudge(rng));
+    X_b.rotate(Eigen::AngleAxisd(0.01, Vector3d::UnitZ()));
+    const GjkResult fresh = gjk(placed(link_a, X_a), placed(link_b, X_b));
+    const GjkResult hinted = gjk(placed(link_a, X_a), placed(link_b, X_b), nullptr, 0, 0, &hint);
+    ASSERT_EQ(fresh.status, hinted.status) << "trial " << trial;
+    if (fresh.status != GjkStatus::kSeparated) continue;
+    ++separated;
+    EXPECT_NEAR(fresh.distance, hinted.distance, 1e-12) << "trial " << trial;
+    fresh_iterations += fresh.iterations;
+    hinted_iterations += hinted.iterations;
+  }
+  EXPECT_GE(separated, 100);
+  EXPECT_LT(hinted_iterations, fresh_iterations);
+  const LinkTemplate link = random_link(rng, 50);
+  GjkSimplexHint out_of_range{3, {0, 1, 100000, 0}, {0, 1, 2, 0}};
+  Eigen::Isometry3d X_far = Eigen::Isometry3d::Identity();
+  X_far.translation() = Vector3d(2, 0, 0);
+  const GjkResult g = gjk(placed(link, Eigen::Isometry3d::Identity()), placed(link, X_far), nullptr, 0,
+                          0, &out_of_range);
+  EXPECT_EQ(g.status, GjkStatus::kSeparated);
+  EXPECT_NEAR(g.distance, gjk(placed(link, Eigen::Isometry3d::Identity()), placed(link, X_far)).distance, 1e-12);
+}
+
 }  // namespace
 }  // namespace grpvss::geometry

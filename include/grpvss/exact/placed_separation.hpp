@@ -10,6 +10,7 @@
 #include <Eigen/Core>
 
 #include "grpvss/exact/certified_query.hpp"
+#include "grpvss/geometry/gjk.hpp"
 #include "grpvss/geometry/placed_hull.hpp"
 
 namespace grpvss::geometry {
@@ -35,14 +36,16 @@ std::optional<CertifiedSeparation> certify_placed_separation(const PlacedHull& a
 /// when the pair is proven separated; nullopt when the filter proves nothing (overlap, near
 /// contact, a rounding tie): the caller places the points and asks certified_pair_query().
 /// \param warm_start_direction, a_climb_hint, b_climb_hint as for certified_pair_query().
+/// \param simplex_hint optional: the pair's last GJK simplex, in and out (gjk.hpp).
 std::optional<CertifiedPairResult> certified_placed_separation_query(
     const PlacedHull& a, const PlacedHull& b, const Eigen::Vector3d* warm_start_direction,
-    int* a_climb_hint, int* b_climb_hint);
+    int* a_climb_hint, int* b_climb_hint, GjkSimplexHint* simplex_hint = nullptr);
 
 /// \brief The same with B a non-empty set of world points (an obstacle).
 /// \throws std::invalid_argument if b is empty.
 std::optional<CertifiedPairResult> certified_placed_separation_query(
     const PlacedHull& a, const std::vector<Eigen::Vector3d>& b,
-    const Eigen::Vector3d* warm_start_direction, int* a_climb_hint);
+    const Eigen::Vector3d* warm_start_direction, int* a_climb_hint,
+    GjkSimplexHint* simplex_hint = nullptr);
 
 }  // namespace grpvss::geometry

@@ -55,18 +55,30 @@ GjkResult gjk(const std::vector<Eigen::Vector3d>& a, const std::vector<Eigen::Ve
               const HullSkeleton* a_skeleton = nullptr, int a_climb_start = 0,
               const HullSkeleton* b_skeleton = nullptr, int b_climb_start = 0);
 
+/// \brief A separated pair's final GJK simplex (vertex indices), kept for the pair's next
+/// query: consecutive steps move a pair little, so starting from those vertices at their new
+/// places takes GJK fewer iterations than starting from one support point. size 0: none.
+struct GjkSimplexHint {
+  int size = 0;
+  std::array<int, 4> a{};
+  std::array<int, 4> b{};
+};
+
 /// \brief GJK on two placed link-frame hulls: each support point is climbed to on the
 /// template's skeleton in direction \f$\hat R^T d\f$ and placed alone (PlacedHull::point_W),
 /// so a query visits a few vertices instead of placing all. Indices refer to vertices_L.
 /// Proposes like the overload above (the climb may end a rounding error short of the placed
 /// set's maximum). \throws std::invalid_argument if a hull lacks its vertices or skeleton.
+/// \param simplex_hint optional, in: where the query starts (ignored when empty or out of
+///        range), out: this query's final simplex if separated, else empty.
 GjkResult gjk(const PlacedHull& a, const PlacedHull& b,
               const Eigen::Vector3d* warm_start_normal = nullptr, int a_climb_start = 0,
-              int b_climb_start = 0);
+              int b_climb_start = 0, GjkSimplexHint* simplex_hint = nullptr);
 
 /// \brief GJK on a placed link-frame hull and a set of world points (an obstacle).
 GjkResult gjk(const PlacedHull& a, const std::vector<Eigen::Vector3d>& b,
-              const Eigen::Vector3d* warm_start_normal = nullptr, int a_climb_start = 0);
+              const Eigen::Vector3d* warm_start_normal = nullptr, int a_climb_start = 0,
+              GjkSimplexHint* simplex_hint = nullptr);
 
 /// \brief Index of the point of \p points maximising \f$d \cdot p\f$ (first on ties).
 int support_index(const std::vector<Eigen::Vector3d>& points, const Eigen::Vector3d& d);
