@@ -126,16 +126,6 @@ CertifiedPairResult from_exact(const std::vector<Vector3d>& a, const std::vector
   return result;
 }
 
-CertifiedPairResult from_separation(const CertifiedSeparation& separation, double distance) {
-  CertifiedPairResult result;
-  result.contact = Contact::kSeparated;
-  result.witness = separation.witness;
-  result.clearance_lower_bound = separation.lower_bound;
-  result.distance_estimate = distance;
-  result.decided_by = DecidedBy::kIntervalFilter;
-  return result;
-}
-
 }  // namespace
 
 const char* to_string(DecidedBy decided_by) {
@@ -157,9 +147,15 @@ std::optional<CertifiedSeparation> certify_separation(const std::vector<Vector3d
   for (const auto& p : a) offset_a = std::max(offset_a, dot_up(n, p.data()));
   double offset_b = std::numeric_limits<double>::infinity();
   for (const auto& p : b) offset_b = std::min(offset_b, dot_down(n, p.data()));
+  return slab_between(normal_AB, offset_a, offset_b);
+}
+
+std::optional<CertifiedSeparation> slab_between(const Vector3d& normal_AB, double offset_a,
+                                                double offset_b) {
   if (!(offset_b > offset_a) || !std::isfinite(offset_a) || !std::isfinite(offset_b)) {
     return std::nullopt;
   }
+  const double* n = normal_AB.data();
   const double norm_up =
       sqrt_up(add_up(add_up(mul_up(n[0], n[0]), mul_up(n[1], n[1])), mul_up(n[2], n[2])));
   CertifiedSeparation out;
@@ -168,6 +164,16 @@ std::optional<CertifiedSeparation> certify_separation(const std::vector<Vector3d
   out.witness.offset_b = offset_b;
   out.lower_bound = std::max(0.0, div_down(sub_down(offset_b, offset_a), norm_up));
   return out;
+}
+
+CertifiedPairResult filter_separation(const CertifiedSeparation& separation, double distance_estimate) {
+  CertifiedPairResult result;
+  result.contact = Contact::kSeparated;
+  result.witness = separation.witness;
+  result.clearance_lower_bound = separation.lower_bound;
+  result.distance_estimate = distance_estimate;
+  result.decided_by = DecidedBy::kIntervalFilter;
+  return result;
 }
 
 bool certify_overlap(const std::vector<Vector3d>& a, const std::vector<Vector3d>& b,
@@ -210,7 +216,7 @@ CertifiedPairResult certified_pair_query(const std::vector<Vector3d>& a,
     // First the closest-point direction, then (near contact, where rounding of v hurts) the
     // normal of the final simplex triangle, which is a facet normal of A - B.
     if (auto s = certify_separation(a, b, -g.closest_vector)) {
-      return from_separation(*s, g.distance);
+      return filter_separation(*s, g.distance);
     }
     if (g.simplex_size == 3) {
       const Vector3d w0 = a[g.simplex_a[0]] - b[g.simplex_b[0]];
@@ -218,7 +224,7 @@ CertifiedPairResult certified_pair_query(const std::vector<Vector3d>& a,
       const Vector3d w2 = a[g.simplex_a[2]] - b[g.simplex_b[2]];
       Vector3d n = (w1 - w0).cross(w2 - w0);
       if (n.dot(g.closest_vector) > 0.0) n = -n;
-      if (auto s = certify_separation(a, b, n)) return from_separation(*s, g.distance);
+      if (auto s = certify_separation(a, b, n)) return filter_separation(*s, g.distance);
     }
   }
   // Double GJK misjudges near-degenerate simplices (CAD hulls have many coplanar vertices) and
@@ -228,7 +234,7 @@ CertifiedPairResult certified_pair_query(const std::vector<Vector3d>& a,
   // as any other. proof: proofs/fast-path.md#certified-separation
   if (warm_start_direction != nullptr && g.status != GjkStatus::kSeparated) {
     if (auto s = certify_separation(a, b, *warm_start_direction)) {
-      return from_separation(*s, g.distance);
+      return filter_separation(*s, g.distance);
     }
   }
   return from_exact(a, b, g);

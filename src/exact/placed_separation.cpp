@@ -107,16 +107,6 @@ std::optional<double> placed_max_upper(const PlacedHull& hull, const Vector3d& n
   return bound;
 }
 
-CertifiedPairResult separated_by(const CertifiedSeparation& separation, double distance) {
-  CertifiedPairResult result;
-  result.contact = Contact::kSeparated;
-  result.witness = separation.witness;
-  result.clearance_lower_bound = separation.lower_bound;
-  result.distance_estimate = distance;
-  result.decided_by = DecidedBy::kIntervalFilter;
-  return result;
-}
-
 /// Upper bound of \f$\max n\cdot p\f$ over a set of world points: the scan of
 /// [certified-separation](proofs/fast-path.md#certified-separation). Needs an active
 /// UpwardRoundingScope.
@@ -144,17 +134,7 @@ std::optional<CertifiedSeparation> certify(const PlacedHull& a, int& a_climb_sta
   if (!offset_a) return std::nullopt;
   const std::optional<double> minus_offset_b = max_upper(b, -normal_AB, b_climb_start);
   if (!minus_offset_b) return std::nullopt;
-  const double offset_b = -*minus_offset_b;
-  if (!(offset_b > *offset_a)) return std::nullopt;
-  const double* n = normal_AB.data();
-  const double norm_up =
-      sqrt_up(add_up(add_up(mul_up(n[0], n[0]), mul_up(n[1], n[1])), mul_up(n[2], n[2])));
-  CertifiedSeparation out;
-  out.witness.normal = normal_AB;
-  out.witness.offset_a = *offset_a;
-  out.witness.offset_b = offset_b;
-  out.lower_bound = std::max(0.0, div_down(sub_down(offset_b, *offset_a), norm_up));
-  return out;
+  return slab_between(normal_AB, *offset_a, -*minus_offset_b);
 }
 
 /// The proposals of certified_pair_query() in its order (proofs/fast-path.md#certified-query),
@@ -165,19 +145,19 @@ std::optional<CertifiedPairResult> query(const PlacedHull& a, const SetB& b, con
   int a_start = g.last_support_a;
   int b_start = g.last_support_b;
   if (g.status == GjkStatus::kSeparated) {
-    if (auto s = certify(a, a_start, b, b_start, -g.closest_vector)) return separated_by(*s, g.distance);
+    if (auto s = certify(a, a_start, b, b_start, -g.closest_vector)) return filter_separation(*s, g.distance);
     if (g.simplex_size == 3) {
       const Vector3d w0 = a.point_W(g.simplex_a[0]) - point_W(b, g.simplex_b[0]);
       const Vector3d w1 = a.point_W(g.simplex_a[1]) - point_W(b, g.simplex_b[1]);
       const Vector3d w2 = a.point_W(g.simplex_a[2]) - point_W(b, g.simplex_b[2]);
       Vector3d n = (w1 - w0).cross(w2 - w0);
       if (n.dot(g.closest_vector) > 0.0) n = -n;
-      if (auto s = certify(a, a_start, b, b_start, n)) return separated_by(*s, g.distance);
+      if (auto s = certify(a, a_start, b, b_start, n)) return filter_separation(*s, g.distance);
     }
   }
   if (warm_start_direction != nullptr && g.status != GjkStatus::kSeparated) {
     if (auto s = certify(a, a_start, b, b_start, *warm_start_direction)) {
-      return separated_by(*s, g.distance);
+      return filter_separation(*s, g.distance);
     }
   }
   return std::nullopt;

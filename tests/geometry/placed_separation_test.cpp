@@ -59,6 +59,24 @@ PlacedHull placed(const LinkTemplate& link, const Eigen::Isometry3d& X_WL) {
   return hull;
 }
 
+/// Two random 20-300-point links at random poses within `reach` of the origin.
+struct RandomPair {
+  LinkTemplate link_a;
+  LinkTemplate link_b;
+  Eigen::Isometry3d X_a;
+  Eigen::Isometry3d X_b;
+};
+
+RandomPair random_pair(std::mt19937_64& rng, double reach) {
+  std::uniform_int_distribution<int> size(20, 300);
+  RandomPair pair;
+  pair.link_a = random_link(rng, size(rng));
+  pair.link_b = random_link(rng, size(rng));
+  pair.X_a = random_pose(rng, reach);
+  pair.X_b = random_pose(rng, reach);
+  return pair;
+}
+
 std::vector<Vector3d> placed_points(const LinkTemplate& link, const Eigen::Isometry3d& X_WL) {
   std::vector<Vector3d> points;
   kinematics::place_points(X_WL, link.vertices_L, points);
@@ -71,16 +89,12 @@ std::vector<Vector3d> placed_points(const LinkTemplate& link, const Eigen::Isome
 // bound must be within 1e-14 m of what a scan of those points certifies.
 TEST(PlacedSeparation, EveryWitnessHoldsExactlyOnThePlacedPointsAndMatchesTheScan) {
   std::mt19937_64 rng(7545);
-  std::uniform_int_distribution<int> size(20, 300);
   std::uniform_real_distribution<double> exponent(-13.0, -6.0);
   int proven = 0;
   int tight = 0;
   int scanned_only = 0;
   for (int trial = 0; trial < 600; ++trial) {
-    const LinkTemplate link_a = random_link(rng, size(rng));
-    const LinkTemplate link_b = random_link(rng, size(rng));
-    const Eigen::Isometry3d X_a = random_pose(rng, 1.0);
-    Eigen::Isometry3d X_b = random_pose(rng, 1.0);
+    auto [link_a, link_b, X_a, X_b] = random_pair(rng, 1.0);
     std::vector<Vector3d> a = placed_points(link_a, X_a);
     std::vector<Vector3d> b = placed_points(link_b, X_b);
     GjkResult g = gjk(a, b);
@@ -169,13 +183,9 @@ TEST(PlacedSeparation, RefusesNormalsThatDoNotSeparate) {
 // points: same status, distances within 1e-12 m, on 300 random pairs.
 TEST(PlacedSeparation, GjkOnTemplatesProposesWhatGjkOnThePlacedPointsProposes) {
   std::mt19937_64 rng(1988);
-  std::uniform_int_distribution<int> size(20, 300);
   int separated = 0;
   for (int trial = 0; trial < 300; ++trial) {
-    const LinkTemplate link_a = random_link(rng, size(rng));
-    const LinkTemplate link_b = random_link(rng, size(rng));
-    const Eigen::Isometry3d X_a = random_pose(rng, 0.4);
-    const Eigen::Isometry3d X_b = random_pose(rng, 0.4);
+    const auto [link_a, link_b, X_a, X_b] = random_pair(rng, 0.4);
     const GjkResult on_points = gjk(placed_points(link_a, X_a), placed_points(link_b, X_b), nullptr,
                                     &link_a.skeleton, 0, &link_b.skeleton, 0);
     const GjkResult on_templates = gjk(placed(link_a, X_a), placed(link_b, X_b));
@@ -192,16 +202,12 @@ TEST(PlacedSeparation, GjkOnTemplatesProposesWhatGjkOnThePlacedPointsProposes) {
 // out of range is ignored.
 TEST(PlacedSeparation, GjkFromTheLastSimplexFindsWhatAFreshStartFinds) {
   std::mt19937_64 rng(2026);
-  std::uniform_int_distribution<int> size(20, 300);
   std::normal_distribution<double> nudge(0.0, 0.002);
   int separated = 0;
   int fresh_iterations = 0;
   int hinted_iterations = 0;
   for (int trial = 0; trial < 300; ++trial) {
-    const LinkTemplate link_a = random_link(rng, size(rng));
-    const LinkTemplate link_b = random_link(rng, size(rng));
-    const Eigen::Isometry3d X_a = random_pose(rng, 0.4);
-    Eigen::Isometry3d X_b = random_pose(rng, 0.4);
+    auto [link_a, link_b, X_a, X_b] = random_pair(rng, 0.4);
     GjkSimplexHint hint;
     const GjkResult before = gjk(placed(link_a, X_a), placed(link_b, X_b), nullptr, 0, 0, &hint);
     if (before.status != GjkStatus::kSeparated) {

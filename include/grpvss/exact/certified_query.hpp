@@ -75,6 +75,15 @@ struct CertifiedSeparation {
   double lower_bound = 0.0;  ///< \f$\ge 0\f$ and \f$\le (o_b - o_a)/|n|\f$
 };
 
+/// \brief The slab {n, o_a, o_b} with its bound RD(RD(o_b - o_a) / RU|n|) when o_b > o_a, for
+/// offsets already proven (every a has n.a <= o_a, every b has n.b >= o_b); nullopt otherwise.
+/// Needs an active rounding::UpwardRoundingScope. proof: proofs/fast-path.md#certified-separation
+std::optional<CertifiedSeparation> slab_between(const Eigen::Vector3d& normal_AB, double offset_a,
+                                                double offset_b);
+
+/// \brief The filter's answer for a proven separation (decided_by kIntervalFilter).
+CertifiedPairResult filter_separation(const CertifiedSeparation& separation, double distance_estimate);
+
 /// \brief Tries to prove that the plane family with normal \p normal_AB (from A to B)
 /// separates conv(a) and conv(b) strictly. nullopt if the rounded offsets leave no gap.
 std::optional<CertifiedSeparation> certify_separation(const std::vector<Eigen::Vector3d>& a,
