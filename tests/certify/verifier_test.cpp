@@ -109,7 +109,7 @@ TEST(Verifier, ObstacleOnTheSweepIsACollisionWithTheCollidingConfiguration) {
 TEST(Verifier, ThesisRuleStepsOverAThinPlateThatCertifiedModeCatches) {
   // A plate 0.2 thick at 60 degrees, radius 25..35: only the tool (radius 20..30) reaches it.
   // The link-frame origin (radius 10) is far from it, so the thesis rule's Dmin term allows
-  // a step that jumps across it (proofs/thesis-rule.md#counterexample).
+  // a step that jumps across it (proofs/thesis-rule.md#ce1-ibm7545-tool: an off-axis tool).
   const Cell cell = make_cell(kSweepingArm, radial_box_environment(60, 25, 35, 0.1, 0.2),
                               kTurn120Degrees);
   const VerificationRun thesis = run(cell, 0.1, ResolutionMode::kThesis);
