@@ -47,7 +47,7 @@ StepCertificate CertificateRecorder::certificate_step(const ProbeResult& probe, 
                                                         evidence.lower_bound});
   }
   for (const SelfPairEvidence& pair : probe.self_pairs) {
-    step.self_pairs.push_back({pair.separated, pair.witness, pair.lower_bound});
+    step.self_pairs.push_back({pair.separated, pair.witness, pair.lower_bound, pair.revolution_lower_bound});
   }
   return step;
 }

@@ -77,12 +77,29 @@ RobotCell::RobotCell(const RobotModel& robot, const Environment& environment,
     expansion_radius_ = r::add_up(settings.tolerance, r::mul_up(2.0, placement_error_));
   }
   build_offsets(raw_polytopes, coordinate_bound, offsets);
+  enclose_round_hulls(coordinate_bound);
   if (largest_link_coordinate(hulls_) > coordinate_bound) {
     throw std::logic_error("RobotCell: offset vertices exceed the coordinate bound of the FK error");
   }
   obstacles_ = ObstacleSet(environment.obstacles);
   allowed_contacts_ = environment.allowed_contacts;
   self_pairs_ = self_pair_hulls(robot, hulls_);
+}
+
+// proof: proofs/two-ball-cover.md#revolution-solid (the solid's points are placed
+// within the placement error only inside the FK bound's coordinate box)
+void RobotCell::enclose_round_hulls(double coordinate_bound) {
+  for (LinkHull& hull : hulls_) {
+    if (hull.link >= chain_.joint_count()) continue;
+    const kinematics::ChainJoint& next = chain_.joints[static_cast<std::size_t>(hull.link)];
+    if (next.type != JointType::kRevolute) continue;
+    const geometry::JointAxisLine_L axis =
+        geometry::joint_axis_line(next.X_PJ, next.X_PJ_error.rotation, next.X_PJ_error.translation);
+    hull.revolution_L = geometry::enclosing_revolution_solid(hull.raw_L, axis, robot_->hull_point_error);
+    if (hull.revolution_L && !(geometry::revolution_solid_extent(*hull.revolution_L) <= coordinate_bound)) {
+      hull.revolution_L.reset();
+    }
+  }
 }
 
 std::vector<SelfPairHulls> self_pair_hulls(const RobotModel& robot,

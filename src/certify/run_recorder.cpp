@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "motion_clearance.hpp"
+#include "transition_judge.hpp"
 #include "grpvss/kinematics/forward_kinematics.hpp"
 
 namespace grpvss::certify {
@@ -132,8 +133,9 @@ void RunRecorder::note_self_pair_shortfall(const AcceptedStep& accepted, int ste
   const std::vector<SelfPairHulls>& pairs = cell_.self_pairs();
   const TransitionRecord& transition = accepted.transition;
   for (std::size_t p = 0; p < pairs.size() && p < transition.self_pair_motion_bounds.size(); ++p) {
-    const double kept = motion_clearance_lower_bound(accepted.from.self_pairs[p].distance,
-                                                     accepted.to.self_pairs[p].distance,
+    const bool revolution = by_revolution(transition, p);
+    const double kept = motion_clearance_lower_bound(route_distance(accepted.from.self_pairs[p], revolution),
+                                                     route_distance(accepted.to.self_pairs[p], revolution),
                                                      transition.self_pair_motion_bounds[p]);
     if (kept >= cell_.tolerance()) continue;
     ToleranceShortfall shortfall;

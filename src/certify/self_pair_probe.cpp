@@ -112,6 +112,21 @@ bool SelfPairProbe::settle_by_balls(const SelfPairHulls& pair,
   return true;
 }
 
+// proof: proofs/two-ball-cover.md#revolution-route
+void SelfPairProbe::add_revolution_bound(const SelfPairHulls& pair,
+                                         const std::vector<Eigen::Isometry3d>& X_WL,
+                                         SelfPairEvidence& evidence) const {
+  const LinkHull& a = cell_->hulls()[static_cast<std::size_t>(pair.a)];
+  if (!a.revolution_L || !evidence.separated) return;
+  geometry::SeparationWitness solid_side = evidence.witness;
+  solid_side.offset_a = geometry::placed_solid_support_upper(
+      *a.revolution_L, X_WL[static_cast<std::size_t>(a.link)], evidence.witness.normal);
+  if (!(solid_side.offset_a < solid_side.offset_b)) return;
+  evidence.revolution_lower_bound = geometry::certified_lower_bound(solid_side);
+  evidence.revolution_distance =
+      exact_distance_lower_bound(evidence.revolution_lower_bound, cell_->placement_error());
+}
+
 bool SelfPairProbe::probe(const std::vector<Eigen::Isometry3d>& X_WL,
                           const std::vector<double>& hull_radius,
                           std::vector<SelfPairEvidence>& out) {
@@ -125,9 +140,13 @@ bool SelfPairProbe::probe(const std::vector<Eigen::Isometry3d>& X_WL,
                         hull_radius[static_cast<std::size_t>(pairs[p].a)] +
                             hull_radius[static_cast<std::size_t>(pairs[p].b)],
                         out[p])) {
+      add_revolution_bound(pairs[p], X_WL, out[p]);
       continue;
     }
-    if (settle_by_templates(p, X_WL, out[p])) continue;
+    if (settle_by_templates(p, X_WL, out[p])) {
+      add_revolution_bound(pairs[p], X_WL, out[p]);
+      continue;
+    }
     const std::vector<Eigen::Vector3d>& a = placed(pairs[p].a, X_WL);
     const std::vector<Eigen::Vector3d>& b = placed(pairs[p].b, X_WL);
     // GJK climbs both hulls' skeletons (it only proposes: the witness is certified over
@@ -146,6 +165,7 @@ bool SelfPairProbe::probe(const std::vector<Eigen::Isometry3d>& X_WL,
     // nor a contact (the step rule cannot pass it; it is no collision either).
     if (!result.witness) continue;
     keep(p, result, evidence);
+    add_revolution_bound(pairs[p], X_WL, evidence);
   }
   return any_contact;
 }

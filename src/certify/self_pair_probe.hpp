@@ -25,6 +25,12 @@ struct SelfPairEvidence {
   /// Certified lower bound of the exactly placed hulls' distance: lower_bound minus twice the
   /// placement error, at least 0. proof: proofs/cell-geometry.md#lemma-geometry-error
   double distance = 0.0;
+  /// When hull a has a solid of revolution about joint a+1 (LinkHull::revolution_L): a certified lower
+  /// bound of the distance from the placed solid to placed hull b on the witness's normal
+  /// (0: none), and the same less twice the placement error (the route's d).
+  /// proof: proofs/two-ball-cover.md#revolution-route
+  double revolution_lower_bound = 0.0;
+  double revolution_distance = 0.0;
 };
 
 /// \brief d = lower_bound - 2 placement_error rounded down, at least 0: each placed hull is
@@ -59,6 +65,10 @@ class SelfPairProbe {
                            SelfPairEvidence& evidence);
   /// Keeps a proven separation of pair p as its evidence and its normal as the next warm start.
   void keep(std::size_t p, const geometry::CertifiedPairResult& result, SelfPairEvidence& evidence);
+  /// The revolution route's distances of a separated pair whose hull a has a solid of revolution: the
+  /// witness's normal, its side at hull b, and the placed solid's support on the other.
+  void add_revolution_bound(const SelfPairHulls& pair, const std::vector<Eigen::Isometry3d>& X_WL,
+                            SelfPairEvidence& evidence) const;
   /// The slab of the two hulls' placed balls, kept in `evidence` when it proves at least
   /// `ample` (false otherwise).
   bool settle_by_balls(const SelfPairHulls& pair, const std::vector<Eigen::Isometry3d>& X_WL,

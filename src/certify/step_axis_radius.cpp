@@ -149,6 +149,12 @@ void StepAxisRadii::proposal_axis_distances(const ProbeResult& probe,
     const std::size_t b_row = static_cast<std::size_t>(pair.b) * joints;
     for (std::size_t j = 0; j < joints; ++j) distances.push_back(distances[b_row + j]);
   }
+  // The revolution routes' rows (step_march.cpp): hull b's distances again.
+  for (const SelfPairHulls& pair : cell_->self_pairs()) {
+    if (!cell_->hulls()[static_cast<std::size_t>(pair.a)].revolution_L) continue;
+    const std::size_t b_row = static_cast<std::size_t>(pair.b) * joints;
+    for (std::size_t j = 0; j < joints; ++j) distances.push_back(distances[b_row + j]);
+  }
 }
 
 Eigen::VectorXd increments_up(const Eigen::VectorXd& q_from, const Eigen::VectorXd& q_to,

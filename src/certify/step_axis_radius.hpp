@@ -36,7 +36,8 @@ class StepAxisRadii {
                       const std::vector<double>& distances_to) const;
 
   /// axis_distances() with one more row per self pair (hull b's, in RobotCell::self_pairs()
-  /// order): the proposal's D rows beside its weights (step_march.cpp).
+  /// order), then one per self pair with a revolution route: the proposal's D rows beside
+  /// its weights (step_march.cpp).
   void proposal_axis_distances(const ProbeResult& probe, std::vector<double>& distances) const;
 
   int joint_count() const { return joints_; }

@@ -72,6 +72,19 @@ CertifiedMarch::CertifiedMarch(const RobotCell& cell, const RunSettings& setting
           moves_b_in_a ? proposal_weights_[static_cast<std::size_t>(pair.b) * joints + j] : 0.0);
     }
   }
+  // The revolution route of a pair: hull b with joints 1..a+1 frozen (transition_judge.cpp).
+  for (std::size_t p = 0; p < cell.self_pairs().size(); ++p) {
+    const SelfPairHulls& pair = cell.self_pairs()[p];
+    const LinkHull& a = cell.hulls()[static_cast<std::size_t>(pair.a)];
+    if (!a.revolution_L) continue;
+    revolution_pairs_.push_back(p);
+    for (std::size_t j = 0; j < joints; ++j) {
+      const bool moves_b_about_the_solid = static_cast<int>(j) > a.link;  // joint j + 1 > a + 1
+      proposal_weights_.push_back(moves_b_about_the_solid
+                                      ? proposal_weights_[static_cast<std::size_t>(pair.b) * joints + j]
+                                      : 0.0);
+    }
+  }
 }
 
 void CertifiedMarch::begin_segment(const SegmentPath& path) {
@@ -172,16 +185,24 @@ double CertifiedMarch::proposed_ptp_step(const SegmentPath& path, double max_ste
 double CertifiedMarch::predicted_ptp_step(const SegmentPath& path, double max_step,
                                           bool held) const {
   const std::size_t hull_count = cell_.hulls().size();
-  const bool has_trend = previous_radii_.size() == hull_count + current_.self_pairs.size();
-  std::vector<ProposalHull> hulls(hull_count + current_.self_pairs.size());
+  const std::size_t pair_count = current_.self_pairs.size();
+  const bool has_trend = previous_radii_.size() == hull_count + pair_count + revolution_pairs_.size();
+  std::vector<ProposalHull> hulls(hull_count + pair_count + revolution_pairs_.size());
   for (std::size_t i = 0; i < hull_count; ++i) {
     hulls[i].radius = current_.hulls[i].radius;
     hulls[i].expanded_interferes = current_.hulls[i].expanded_interferes;
     hulls[i].held_margin = held ? 2.0 * cell_.tolerance() : 0.0;
   }
-  for (std::size_t p = 0; p < current_.self_pairs.size(); ++p) {
+  for (std::size_t p = 0; p < pair_count; ++p) {
     hulls[hull_count + p].radius = current_.self_pairs[p].distance;
     hulls[hull_count + p].held_margin = held ? 2.0 * cell_.tolerance() : 0.0;
+  }
+  for (std::size_t r = 0; r < revolution_pairs_.size(); ++r) {
+    const std::size_t route = hull_count + pair_count + r;
+    hulls[route].radius = current_.self_pairs[revolution_pairs_[r]].revolution_distance;
+    hulls[route].held_margin = held ? 2.0 * cell_.tolerance() : 0.0;
+    hulls[route].alternative_only = true;
+    hulls[hull_count + revolution_pairs_[r]].alternative = static_cast<int>(route);
   }
   for (std::size_t i = 0; has_trend && i < hulls.size(); ++i) {
     hulls[i].previous_radius = previous_radii_[i];
@@ -330,6 +351,9 @@ void CertifiedMarch::keep_trend(double taken) {
   previous_radii_.clear();
   for (const HullState& hull : current_.hulls) previous_radii_.push_back(hull.radius);
   for (const SelfPairEvidence& pair : current_.self_pairs) previous_radii_.push_back(pair.distance);
+  for (const std::size_t p : revolution_pairs_) {
+    previous_radii_.push_back(current_.self_pairs[p].revolution_distance);
+  }
   previous_step_ = taken;
 }
 

@@ -111,6 +111,9 @@ class CertifiedMarch : public StepMarch {
 
   CpModelCheck cp_check_;
   std::vector<double> proposal_weights_;  ///< [hull * joints + joint - 1]: M_h's coefficients
+  /// The self pairs with a revolution route (hull a has a solid of revolution), in pair order: their
+  /// proposal rows follow the pairs' (proofs/two-ball-cover.md#revolution-route).
+  std::vector<std::size_t> revolution_pairs_;
   /// The configuration-dependent bound M'_h (proofs/motion-bound.md#lemma-axis-distance-along-step).
   StepAxisRadii step_radii_;
   // Per segment.

@@ -45,26 +45,33 @@ double predicted_ptp_step(const std::function<Eigen::VectorXd(double)>& joints_a
                           const std::vector<ProposalHull>& hulls, bool has_trend,
                           double previous_step, const std::vector<double>& axis_distances) {
   const std::size_t joints = static_cast<std::size_t>(q_now.size());
+  Eigen::VectorXd dq;
+  const auto entry_fits = [&](std::size_t i, double candidate) {
+    const double radius = hulls[i].radius;
+    // In contact or refining next to one (raw clearances): the trials and the basic
+    // resolution size the step there; extrapolating a shrinking raw clearance would creep.
+    if (!(radius > 0.0) || hulls[i].expanded_interferes) return !hulls[i].alternative_only;
+    // A proposal needs no rounding care: M_h in plain double (judge_transition decides).
+    double bound = 0.0;
+    double tail = 0.0;  // what the joints after j may move the hull during the step
+    for (std::size_t j = joints; j-- > 0;) {
+      const double weight = weights[i * joints + j];
+      const double near = axis_distances.empty() ? weight : axis_distances[i * joints + j] + tail;
+      bound += std::min(weight, near) * dq[static_cast<Eigen::Index>(j)];
+      tail += weight * dq[static_cast<Eigen::Index>(j)];
+    }
+    const double trend = has_trend ? radius - hulls[i].previous_radius : 0.0;
+    const double expected_far_radius =
+        std::max(radius - bound, radius + trend * candidate / previous_step);
+    return !(bound > 0.95 * (radius + expected_far_radius - hulls[i].held_margin));
+  };
   const auto fits = [&](double candidate) {
-    const Eigen::VectorXd dq = (joints_at(candidate) - q_now).cwiseAbs();
+    dq = (joints_at(candidate) - q_now).cwiseAbs();
     for (std::size_t i = 0; i < hulls.size(); ++i) {
-      const double radius = hulls[i].radius;
-      // In contact or refining next to one (raw clearances): the trials and the basic
-      // resolution size the step there; extrapolating a shrinking raw clearance would creep.
-      if (!(radius > 0.0) || hulls[i].expanded_interferes) continue;
-      // A proposal needs no rounding care: M_h in plain double (judge_transition decides).
-      double bound = 0.0;
-      double tail = 0.0;  // what the joints after j may move the hull during the step
-      for (std::size_t j = joints; j-- > 0;) {
-        const double weight = weights[i * joints + j];
-        const double near = axis_distances.empty() ? weight : axis_distances[i * joints + j] + tail;
-        bound += std::min(weight, near) * dq[j];
-        tail += weight * dq[j];
-      }
-      const double trend = has_trend ? radius - hulls[i].previous_radius : 0.0;
-      const double expected_far_radius =
-          std::max(radius - bound, radius + trend * candidate / previous_step);
-      if (bound > 0.95 * (radius + expected_far_radius - hulls[i].held_margin)) return false;
+      if (hulls[i].alternative_only || entry_fits(i, candidate)) continue;
+      const int alternative = hulls[i].alternative;
+      if (alternative >= 0 && entry_fits(static_cast<std::size_t>(alternative), candidate)) continue;
+      return false;
     }
     return true;
   };

@@ -30,6 +30,11 @@ struct ProposalHull {
   /// Subtracted from r_k + r_far: 2 Delta for a hull the march holds to the claim `motion`
   /// (proofs/two-ball-cover.md#lemma-tolerance-along-motion), else 0.
   double held_margin = 0.0;
+  /// Index of another entry that may stand in for this one (a self pair's revolution route,
+  /// proofs/two-ball-cover.md#revolution-route): this entry passes when either fits. -1: none.
+  int alternative = -1;
+  /// Only a stand-in for another entry, never a limit of its own; it fits only with r_k > 0.
+  bool alternative_only = false;
 };
 
 /// \brief A PTP proposal from the motion bounds alone (no probe): the largest step in

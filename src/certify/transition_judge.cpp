@@ -61,15 +61,66 @@ double self_pair_motion_bound(const RobotCell& cell, const SelfPairHulls& pair,
   return bound;
 }
 
+// The revolution route: hull a lies in a solid of revolution about joint a+1's axis, which that joint turns
+// into itself, so in the frame of joint a+1 only joints a+2..b move hull b relative to it.
+// proof: proofs/two-ball-cover.md#revolution-route
+double revolution_motion_bound(const RobotCell& cell, const SelfPairHulls& pair,
+                               const Eigen::VectorXd& dq, const StepAxisDistances* axis) {
+  const LinkHull& a = cell.hulls()[static_cast<std::size_t>(pair.a)];
+  const LinkHull& b = cell.hulls()[static_cast<std::size_t>(pair.b)];
+  const Eigen::Index frozen = std::min<Eigen::Index>(a.link + 1, dq.size());
+  Eigen::VectorXd relative = dq;
+  relative.head(frozen).setZero();
+  double bound = cell.radii().hull_motion_bound(b.link, b.hull, relative);
+  if (axis != nullptr && bound > 0.0) {
+    Eigen::VectorXd relative_up = axis->increments_up;
+    relative_up.head(frozen).setZero();
+    bound = std::min(bound, axis->radii->motion_bound(pair.b, relative_up, axis->from, axis->to));
+  }
+  return bound;
+}
+
+namespace {
+
+// allowance / bound, +inf for a bound of 0 with a positive allowance.
+double route_ratio(double bound, double allowance) {
+  if (!(allowance > 0.0)) return 0.0;
+  return bound > 0.0 ? allowance / bound : std::numeric_limits<double>::infinity();
+}
+
+}  // namespace
+
+bool by_revolution(const TransitionRecord& record, std::size_t pair) {
+  return pair < record.self_pair_by_revolution.size() && record.self_pair_by_revolution[pair] != 0;
+}
+
+double route_distance(const SelfPairEvidence& evidence, bool revolution) {
+  return revolution ? evidence.revolution_distance : evidence.distance;
+}
+
 void judge_self_pairs(const RobotCell& cell, const ProbeResult& from, const ProbeResult& to,
                       TransitionRecord& record, const StepAxisDistances* axis) {
   const std::vector<SelfPairHulls>& pairs = cell.self_pairs();
   const Eigen::VectorXd dq = to.q - from.q;
+  std::vector<int> routes(pairs.size(), 0);
+  bool any_route = false;
   for (std::size_t p = 0; p < pairs.size(); ++p) {
     const auto a = static_cast<std::size_t>(pairs[p].a);
     const auto b = static_cast<std::size_t>(pairs[p].b);
-    const double bound = self_pair_motion_bound(cell, pairs[p], record, dq, axis);
-    const double allowance = allowance_down(from.self_pairs[p].distance, to.self_pairs[p].distance);
+    double bound = self_pair_motion_bound(cell, pairs[p], record, dq, axis);
+    double allowance = allowance_down(from.self_pairs[p].distance, to.self_pairs[p].distance);
+    if (cell.hulls()[a].revolution_L) {
+      // Either route proves the pair; the step keeps the one with more room.
+      any_route = true;
+      const double revolution_bound = revolution_motion_bound(cell, pairs[p], dq, axis);
+      const double revolution_allowance = allowance_down(from.self_pairs[p].revolution_distance,
+                                                         to.self_pairs[p].revolution_distance);
+      if (route_ratio(revolution_bound, revolution_allowance) > route_ratio(bound, allowance)) {
+        bound = revolution_bound;
+        allowance = revolution_allowance;
+        routes[p] = 1;
+      }
+    }
     if (!(bound < allowance)) {
       record.certified = false;
       record.governing[a] = record.governing[b] = GoverningTerm::kUncertified;
@@ -77,6 +128,7 @@ void judge_self_pairs(const RobotCell& cell, const ProbeResult& from, const Prob
     record.self_pair_motion_bounds.push_back(bound);
     record.self_pair_allowances.push_back(allowance);
   }
+  if (any_route) record.self_pair_by_revolution = std::move(routes);
 }
 
 double allowance_down(double radius_k, double radius_k1) {
@@ -149,8 +201,10 @@ TransitionRecord held_to_tolerance(const TransitionRecord& nominal, const ProbeR
     if (!(held.hull_motion_bounds[i] <= held.hull_allowances[i])) held.certified = false;
   }
   for (std::size_t p = 0; p < held.self_pair_allowances.size(); ++p) {
-    held.self_pair_allowances[p] = held_allowance_down(from.self_pairs[p].distance,
-                                                       to.self_pairs[p].distance, tolerance);
+    const bool revolution = by_revolution(held, p);
+    held.self_pair_allowances[p] = held_allowance_down(route_distance(from.self_pairs[p], revolution),
+                                                       route_distance(to.self_pairs[p], revolution),
+                                                       tolerance);
     if (!(held.self_pair_motion_bounds[p] <= held.self_pair_allowances[p])) held.certified = false;
   }
   return held;

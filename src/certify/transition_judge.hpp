@@ -36,6 +36,15 @@ TransitionRecord judge_transition(const RobotCell& cell, const ProbeResult& from
 void judge_self_pairs(const RobotCell& cell, const ProbeResult& from, const ProbeResult& to,
                       TransitionRecord& record, const StepAxisDistances* axis = nullptr);
 
+/// \brief The revolution route's bound of pair `pair` (hull a with a solid of revolution about joint a+1):
+/// hull b's motion with joints 1..a+1 frozen, rounded up.
+/// proof: proofs/two-ball-cover.md#revolution-route
+double revolution_motion_bound(const RobotCell& cell, const SelfPairHulls& pair,
+                               const Eigen::VectorXd& dq, const StepAxisDistances* axis);
+/// Whether the record's bound and allowance of self pair `pair` are the revolution route's.
+bool by_revolution(const TransitionRecord& record, std::size_t pair);
+/// The pair's distance lower bound the route rests on: d, or the solid's d.
+double route_distance(const SelfPairEvidence& evidence, bool revolution);
 /// max(r_k + r_{k+1} - 2 Delta, max(r_k, r_{k+1}) - Delta), each side rounded down: a motion
 /// bound at most this keeps g >= Delta. proof: proofs/two-ball-cover.md#lemma-tolerance-along-motion
 double held_allowance_down(double radius_k, double radius_k1, double tolerance);

@@ -239,7 +239,8 @@ void Checker::check_segment(const SegmentCertificate& segment,
       segment.steps.front().parameter != 0.0) {
     facts_.coverage_complete = false;  // fine for a path stopped by an error; not for a safety claim
   }
-  std::vector<Rational> previous_radius, previous_distance;
+  std::vector<Rational> previous_radius;
+  SelfPairDistances previous_distance;
   std::vector<std::vector<Eigen::Vector3d>> previous_placed, placed;
   const StepCertificate* previous = nullptr;
   for (std::size_t k = 0; k < segment.steps.size(); ++k) {
@@ -260,8 +261,8 @@ void Checker::check_segment(const SegmentCertificate& segment,
       ledger_.fail(where + ": the configuration is not the trajectory's at this parameter");
     }
     std::vector<Rational> radius = steps_->check(step, where, placed);
-    std::vector<Rational> distance =
-        check_self_pair_evidence(*cell_, certificate_, step, placed, ledger_, where);
+    SelfPairDistances distance = check_self_pair_evidence(*cell_, certificate_, step, placed,
+                                                          steps_->link_poses(), ledger_, where);
     if (previous != nullptr) {
       const std::string where_transition = where_segment + " steps " +
                                            std::to_string(previous->step) + "-" +
@@ -270,7 +271,8 @@ void Checker::check_segment(const SegmentCertificate& segment,
                           where_transition, piece_variation(planned, *previous, step));
       check_self_pair_transition(*cell_, certificate_, *previous, step, previous->to_next,
                                  transitions_->hull_bounds(), transitions_->self_pair_relative_bounds(),
-                                 previous_distance, distance, ledger_, facts_, where_transition);
+                                 transitions_->self_pair_revolution_bounds(), previous_distance,
+                                 distance, ledger_, facts_, where_transition);
     }
     previous_radius = std::move(radius);
     previous_distance = std::move(distance);

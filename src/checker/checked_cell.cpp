@@ -6,6 +6,7 @@
 #include <string>
 
 #include "exact_axis_radius.hpp"
+#include "revolution_check.hpp"
 #include "grpvss/exact/convex_polytope.hpp"
 #include "grpvss/exact/minkowski_offset.hpp"
 #include "grpvss/geometry/directed_rounding.hpp"
@@ -98,6 +99,7 @@ std::optional<CheckedCell> CheckedCell::build(const RobotModel& robot,
         "geometry's point errors");
     return std::nullopt;
   }
+  cell.keep_covered_solids(header, environment, largest_coordinate);
   // The pairs the verifier skipped are the inputs' allowed contacts, no more and no fewer.
   ledger.decided();
   if (header.allowed_contacts != environment.allowed_contacts) {
@@ -157,6 +159,7 @@ bool CheckedCell::build_hulls(const Certificate& header, CheckLedger& ledger,
         checked.axis_radius.push_back(exact_axis_radius(robot, link, points, joint));
       }
       enclose_in_ball(checked);
+      enclose_if_round(checked);
       hull_coordinate_limit_ = std::max(hull_coordinate_limit_, largest_abs_coordinate(checked.raw_L));
       largest_coordinate = std::max({largest_coordinate, largest_abs_coordinate(checked.raw_L),
                                      largest_abs_coordinate(checked.expanded_L)});
@@ -164,6 +167,38 @@ bool CheckedCell::build_hulls(const Certificate& header, CheckLedger& ledger,
     }
   }
   return true;
+}
+
+// The verifier's solid-of-revolution rule (deterministic), its containment decided exactly; the FK bound
+// must then cover the solid's points too. proof: proofs/two-ball-cover.md#revolution-solid
+void CheckedCell::enclose_if_round(CheckedHull& hull) const {
+  if (hull.link >= chain_.joint_count()) return;
+  const kinematics::ChainJoint& next = chain_.joints[static_cast<std::size_t>(hull.link)];
+  if (next.type != JointType::kRevolute) return;
+  const geometry::JointAxisLine_L axis =
+      geometry::joint_axis_line(next.X_PJ, next.X_PJ_error.rotation, next.X_PJ_error.translation);
+  const auto solid =
+      geometry::enclosing_revolution_solid(hull.raw_L, axis, robot_->hull_point_error);
+  if (!solid || !solid_encloses_exactly(*solid, hull.raw_L, axis, robot_->hull_point_error)) {
+    return;
+  }
+  hull.revolution_L = solid;
+}
+
+// A solid whose points the header's placement error does not cover (beyond the FK bound's
+// coordinate box) is dropped: its route proves nothing here.
+void CheckedCell::keep_covered_solids(const Certificate& header, const Environment& environment,
+                                         double largest_coordinate) {
+  for (CheckedHull& hull : hulls_) {
+    if (!hull.revolution_L) continue;
+    const double extent =
+        std::max(largest_coordinate, geometry::revolution_solid_extent(*hull.revolution_L));
+    const double bound = kinematics::forward_kinematics_error_bound(chain_, extent);
+    if (!(exact(header.placement_error) >= 2 * (exact(bound) + exact(robot_->hull_point_error) +
+                                                 exact(environment.point_error)))) {
+      hull.revolution_L.reset();
+    }
+  }
 }
 
 bool CheckedCell::index_self_pairs(CheckLedger& ledger) {

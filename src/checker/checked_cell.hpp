@@ -13,6 +13,7 @@
 
 #include "check_ledger.hpp"
 #include "grpvss/evidence/certificate.hpp"
+#include "grpvss/geometry/revolution_solid.hpp"
 #include "grpvss/kinematics/kinematic_chain.hpp"
 #include "grpvss/model/environment.hpp"
 #include "grpvss/model/robot_model.hpp"
@@ -34,6 +35,10 @@ struct CheckedHull {
   /// (proofs/motion-bound.md#lemma-axis-distance-along-step).
   Eigen::Vector3d ball_center_L = Eigen::Vector3d::Zero();
   Rational ball_radius = 0;
+  /// The hull's solid of revolution about the axis of joint link + 1 when the verifier's rule proposes one
+  /// and it contains the hull exactly with its margin (revolution_check.hpp); the revolution
+  /// route of its self pairs is accepted only then. proof: proofs/two-ball-cover.md#revolution-route
+  std::optional<geometry::RevolutionSolid> revolution_L;
 };
 
 /// The smallest double whose square is at least `square` (>= 0), exactly: an upper bound on
@@ -77,6 +82,12 @@ class CheckedCell {
   double hull_coordinate_limit_ = 0.0;
   explicit CheckedCell(const RobotModel& robot);
   bool build_hulls(const Certificate& header, CheckLedger& ledger, double& largest_coordinate);
+  /// Sets hull.revolution_L when the hull is round about the next joint's axis and its
+  /// solid contains it exactly.
+  void enclose_if_round(CheckedHull& hull) const;
+  /// Drops every solid whose points the header's placement error does not cover.
+  void keep_covered_solids(const Certificate& header, const Environment& environment,
+                              double largest_coordinate);
   void build_obstacles(const Environment& environment);
   bool index_self_pairs(CheckLedger& ledger);
 

@@ -5,6 +5,7 @@
 #include <fmt/core.h>
 
 #include "grpvss/exact/exact_contact.hpp"
+#include "revolution_check.hpp"
 
 namespace grpvss::certify {
 namespace {
@@ -39,19 +40,25 @@ void hold_gap_to_tolerance(const CheckedCell& cell, const Certificate& header, s
 
 }  // namespace
 
-std::vector<Rational> check_self_pair_evidence(
+SelfPairDistances check_self_pair_evidence(
     const CheckedCell& cell, const Certificate& header, const StepCertificate& step,
-    const std::vector<std::vector<Eigen::Vector3d>>& placed_raw, CheckLedger& ledger,
-    const std::string& where) {
+    const std::vector<std::vector<Eigen::Vector3d>>& placed_raw,
+    const std::vector<Eigen::Isometry3d>& X_WL, CheckLedger& ledger, const std::string& where) {
   const auto& pairs = cell.self_pairs();
-  std::vector<Rational> distance(pairs.size(), Rational(0));
-  if (pairs.empty()) return distance;
+  SelfPairDistances distances{std::vector<Rational>(pairs.size(), Rational(0)),
+                              std::vector<Rational>(pairs.size(), Rational(0))};
+  if (pairs.empty()) return distances;
   if (step.self_pairs.size() != pairs.size()) {
     ledger.fail(where + ": expected a self-pair record for each of the " +
                 std::to_string(pairs.size()) + " self-collision pairs");
-    return distance;
+    return distances;
   }
   const Rational twice_error = 2 * exact(header.placement_error);
+  // proof: proofs/cell-geometry.md#lemma-geometry-error (each hull within eps of its exact place)
+  const auto less_placement = [&](double lower_bound) {
+    const Rational d = exact(lower_bound) - twice_error;
+    return d > 0 ? d : Rational(0);
+  };
   for (std::size_t p = 0; p < pairs.size(); ++p) {
     const SelfPairRecord& record = step.self_pairs[p];
     const auto& a = placed_raw[static_cast<std::size_t>(pairs[p].first)];
@@ -63,11 +70,22 @@ std::vector<Rational> check_self_pair_evidence(
       ledger.fail(pair_where(cell, p, where) + ": the separation witness does not hold");
       continue;
     }
-    // proof: proofs/cell-geometry.md#lemma-geometry-error (each hull within eps of its exact place)
-    const Rational d = exact(record.lower_bound) - twice_error;
-    distance[p] = d > 0 ? d : Rational(0);
+    distances.relative[p] = less_placement(record.lower_bound);
+    if (record.revolution_lower_bound == 0.0) continue;
+    // The slab's side at hull b holds (above); the solid must lie on the other side.
+    // proof: proofs/two-ball-cover.md#revolution-route
+    ledger.decided();
+    const CheckedHull& hull_a = cell.hulls()[static_cast<std::size_t>(pairs[p].first)];
+    if (!hull_a.revolution_L || static_cast<std::size_t>(hull_a.link) >= X_WL.size() ||
+        !solid_side_holds_exactly(*hull_a.revolution_L, X_WL[static_cast<std::size_t>(hull_a.link)],
+                                     record.witness, record.revolution_lower_bound)) {
+      ledger.fail(pair_where(cell, p, where) +
+                  ": the distance from the solid of revolution does not hold");
+      continue;
+    }
+    distances.revolution[p] = less_placement(record.revolution_lower_bound);
   }
-  return distance;
+  return distances;
 }
 
 // proof: proofs/two-ball-cover.md#lemma-relative-motion
@@ -76,8 +94,9 @@ void check_self_pair_transition(const CheckedCell& cell, const Certificate& head
                                 const TransitionRecord& claimed,
                                 const std::vector<std::optional<Rational>>& hull_bounds,
                                 const std::vector<Rational>& relative_bounds,
-                                const std::vector<Rational>& distance_from,
-                                const std::vector<Rational>& distance_to, CheckLedger& ledger,
+                                const std::vector<std::optional<Rational>>& revolution_bounds,
+                                const SelfPairDistances& distance_from,
+                                const SelfPairDistances& distance_to, CheckLedger& ledger,
                                 ClaimFacts& facts, const std::string& where) {
   const auto& pairs = cell.self_pairs();
   const int joints = cell.robot().joint_count();
@@ -87,16 +106,25 @@ void check_self_pair_transition(const CheckedCell& cell, const Certificate& head
     const auto b = static_cast<std::size_t>(pairs[p].second);
     ledger.decided();
     bool proven = false;
-    if (configurations_usable && p < distance_from.size() && p < distance_to.size() &&
-        p < relative_bounds.size()) {
+    if (configurations_usable && p < distance_from.relative.size() &&
+        p < distance_to.relative.size() && p < relative_bounds.size()) {
       Rational bound = relative_bounds[p];
       if (a < hull_bounds.size() && b < hull_bounds.size() && hull_bounds[a] && hull_bounds[b] &&
           *hull_bounds[a] + *hull_bounds[b] < bound) {
         bound = *hull_bounds[a] + *hull_bounds[b];
       }
-      proven = bound < distance_from[p] + distance_to[p];
-      hold_gap_to_tolerance(cell, header, p, kept_gap(distance_from[p], distance_to[p], bound),
-                            ledger, facts, where);
+      const Rational& d_from = distance_from.relative[p];
+      const Rational& d_to = distance_to.relative[p];
+      proven = bound < d_from + d_to;
+      Rational kept = kept_gap(d_from, d_to, bound);
+      // proof: proofs/two-ball-cover.md#revolution-route (either route proves the pair)
+      if (p < revolution_bounds.size() && revolution_bounds[p]) {
+        const Rational& c_from = distance_from.revolution[p];
+        const Rational& c_to = distance_to.revolution[p];
+        proven = proven || *revolution_bounds[p] < c_from + c_to;
+        kept = std::max(kept, kept_gap(c_from, c_to, *revolution_bounds[p]));
+      }
+      hold_gap_to_tolerance(cell, header, p, kept, ledger, facts, where);
     }
     if (proven) continue;
     if (claimed.certified) {

@@ -16,15 +16,23 @@
 
 namespace grpvss::certify {
 
-/// \brief The exactly verified distance lower bound of every self pair at `step` (0 where
-/// nothing is proven), in CheckedCell::self_pairs() order. `placed_raw[i]`: hull i's raw
-/// vertices placed at the step (empty when the step check could not place it).
-std::vector<Rational> check_self_pair_evidence(
-    const CheckedCell& cell, const Certificate& header, const StepCertificate& step,
-    const std::vector<std::vector<Eigen::Vector3d>>& placed_raw, CheckLedger& ledger,
-    const std::string& where);
+/// Every self pair's exactly verified distance lower bounds at one step (0 where nothing is
+/// proven), in CheckedCell::self_pairs() order.
+struct SelfPairDistances {
+  std::vector<Rational> relative;    ///< d: between the two hulls
+  std::vector<Rational> revolution;  ///< from hull a's solid of revolution to hull b (the revolution route)
+};
 
-/// \brief Decides min(M_a + M_b, M_b|a) < d_k + d_{k+1} for every self pair, M_a and M_b the
+/// \brief The self pairs' verified distances at `step`. `placed_raw[i]`: hull i's raw
+/// vertices placed at the step (empty when the step check could not place it); `X_WL`: the
+/// checker's link poses at the step (the revolution route's cylinder is placed by them).
+SelfPairDistances check_self_pair_evidence(
+    const CheckedCell& cell, const Certificate& header, const StepCertificate& step,
+    const std::vector<std::vector<Eigen::Vector3d>>& placed_raw,
+    const std::vector<Eigen::Isometry3d>& X_WL, CheckLedger& ledger, const std::string& where);
+
+/// \brief Decides min(M_a + M_b, M_b|a) < d_k + d_{k+1}, or for a pair with a revolution
+/// route M_b|a+1 < c_k + c_{k+1} (`revolution_bounds`, c the solid's distances), for every self pair, M_a and M_b the
 /// hulls' verified motion bounds (`hull_bounds`, nullopt where none is proven), M_b|a the exact
 /// joint-sum bound of hull b over joints a+1..b (its motion in link a's frame). A failing pair
 /// fails the ledger when the transition claims to be certified; either way it makes it
@@ -37,8 +45,9 @@ void check_self_pair_transition(const CheckedCell& cell, const Certificate& head
                                 const TransitionRecord& claimed,
                                 const std::vector<std::optional<Rational>>& hull_bounds,
                                 const std::vector<Rational>& relative_bounds,
-                                const std::vector<Rational>& distance_from,
-                                const std::vector<Rational>& distance_to, CheckLedger& ledger,
+                                const std::vector<std::optional<Rational>>& revolution_bounds,
+                                const SelfPairDistances& distance_from,
+                                const SelfPairDistances& distance_to, CheckLedger& ledger,
                                 ClaimFacts& facts, const std::string& where);
 
 }  // namespace grpvss::certify

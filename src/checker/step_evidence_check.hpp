@@ -25,6 +25,8 @@ class StepEvidenceCheck {
   /// `placed_raw` receives each hull's raw vertices placed at the step.
   std::vector<Rational> check(const StepCertificate& step, const std::string& where,
                               std::vector<std::vector<Eigen::Vector3d>>& placed_raw);
+  /// The link poses the last check() placed the hulls by (stale where it placed none).
+  const std::vector<Eigen::Isometry3d>& link_poses() const { return workspace_.X_WL; }
 
  private:
   /// Per obstacle, what one hull's evidence proves.

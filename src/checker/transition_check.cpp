@@ -29,6 +29,7 @@ void TransitionCheck::check(const StepCertificate& from, const StepCertificate& 
   const std::vector<CheckedHull>& hulls = cell_.hulls();
   hull_bounds_.clear();
   self_pair_relative_bounds_.clear();
+  self_pair_revolution_bounds_.clear();
   // A step with the wrong joint count was already rejected by the step check; reading its q
   // here would run past the vector (found reviewing for the checker fuzz target).
   const int joints = cell_.robot().joint_count();
@@ -108,7 +109,27 @@ void TransitionCheck::check(const StepCertificate& from, const StepCertificate& 
     }
     const Rational step_axis = step_axis_bound(hull_b, relative);
     self_pair_relative_bounds_.push_back(std::min(joint_sum, step_axis));
+    self_pair_revolution_bounds_.push_back(revolution_bound(hull_a, hull_b, increments));
   }
+}
+
+// Hull b with joints 1..a+1 frozen: its motion about hull a's solid of revolution, which joint a+1 turns
+// into itself. proof: proofs/two-ball-cover.md#revolution-route
+std::optional<Rational> TransitionCheck::revolution_bound(const CheckedHull& hull_a,
+                                                          const CheckedHull& hull_b,
+                                                          const std::vector<Rational>& increments) const {
+  if (!hull_a.revolution_L) return std::nullopt;
+  const int joints = cell_.robot().joint_count();
+  std::vector<Rational> relative = increments;
+  for (int j = 0; j < std::min(hull_a.link + 1, joints); ++j) relative[static_cast<std::size_t>(j)] = 0;
+  Rational joint_sum = 0;
+  for (int joint = hull_a.link + 2; joint <= std::min(hull_b.link, joints); ++joint) {
+    const Rational& increment = relative[static_cast<std::size_t>(joint - 1)];
+    joint_sum += cell_.robot().joints[joint - 1].type == JointType::kRevolute
+                     ? increment * hull_b.axis_radius[static_cast<std::size_t>(joint - 1)]
+                     : increment;
+  }
+  return std::min(joint_sum, step_axis_bound(hull_b, relative));
 }
 
 // proof: proofs/motion-bound.md#lemma-motion-bound

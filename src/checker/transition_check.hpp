@@ -42,8 +42,16 @@ class TransitionCheck {
   /// when the record was unusable. proof: proofs/two-ball-cover.md#relative-frame,
   /// proofs/motion-bound.md#lemma-axis-distance-along-step
   const std::vector<Rational>& self_pair_relative_bounds() const { return self_pair_relative_bounds_; }
+  /// Per self pair of the last check(): for a pair whose hull a has a verified solid of revolution, hull
+  /// b's bound with joints 1..a+1 frozen (the same two forms); nullopt without one.
+  /// proof: proofs/two-ball-cover.md#revolution-route
+  const std::vector<std::optional<Rational>>& self_pair_revolution_bounds() const {
+    return self_pair_revolution_bounds_;
+  }
 
  private:
+  std::optional<Rational> revolution_bound(const CheckedHull& hull_a, const CheckedHull& hull_b,
+                                           const std::vector<Rational>& increments) const;
   /// The exact joint-sum bound M_h of the hull over the transition; with `joint_variation`
   /// (a joint trajectory's piece: the exact variation bound per joint) in place of |dq|.
   /// proof: proofs/joint-variation.md#theorem-variation-motion-bound
@@ -78,6 +86,7 @@ class TransitionCheck {
   MotionClearances& clearances_;
   std::vector<std::optional<Rational>> hull_bounds_;
   std::vector<Rational> self_pair_relative_bounds_;
+  std::vector<std::optional<Rational>> self_pair_revolution_bounds_;
   kinematics::Workspace from_frames_, to_frames_;  ///< this checker's own FK at both ends
 };
 

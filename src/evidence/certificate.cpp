@@ -121,6 +121,7 @@ void read_separation(const json& item, const std::string& where, const std::stri
 json self_pair_to_json(const SelfPairRecord& record) {
   json item = {{"separated", record.separated}};
   if (record.separated) add_separation(item, record.witness, record.lower_bound);
+  if (record.revolution_lower_bound > 0.0) item["revolution_lower_bound"] = record.revolution_lower_bound;
   return item;
 }
 
@@ -129,6 +130,9 @@ SelfPairRecord self_pair_from_json(const json& item, const std::string& where,
   SelfPairRecord record;
   record.separated = field<bool>(item, "separated", where, file);
   if (record.separated) read_separation(item, where, file, record.witness, record.lower_bound);
+  if (item.contains("revolution_lower_bound")) {
+    record.revolution_lower_bound = field<double>(item, "revolution_lower_bound", where, file);
+  }
   return record;
 }
 
@@ -170,6 +174,9 @@ json certificate_step_to_json(const StepCertificate& step) {
     if (!step.to_next.self_pair_motion_bounds.empty()) {
       item["to_next"]["self_pair_motion_bounds"] = step.to_next.self_pair_motion_bounds;
       item["to_next"]["self_pair_allowances"] = step.to_next.self_pair_allowances;
+    }
+    if (!step.to_next.self_pair_by_revolution.empty()) {
+      item["to_next"]["self_pair_by_revolution"] = step.to_next.self_pair_by_revolution;
     }
   }
   return item;
@@ -363,6 +370,10 @@ SegmentCertificate segment_certificate_from_json(const json& segment_json, const
             field<std::vector<double>>(next, "self_pair_motion_bounds", step_where, file);
         step.to_next.self_pair_allowances =
             field<std::vector<double>>(next, "self_pair_allowances", step_where, file);
+      }
+      if (next.contains("self_pair_by_revolution")) {
+        step.to_next.self_pair_by_revolution =
+            field<std::vector<int>>(next, "self_pair_by_revolution", step_where, file);
       }
     }
     segment.steps.push_back(std::move(step));

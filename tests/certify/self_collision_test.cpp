@@ -385,14 +385,29 @@ TEST(SelfCollision, TheStepRuleHoldsEachPairToItsRelativeBound) {
     const LinkHull& b = cell.hulls()[static_cast<std::size_t>(cell.self_pairs()[p].b)];
     if (a.link >= 1) {
       EXPECT_LT(record.self_pair_motion_bounds[p], 1e-300);  // 0, rounded upward
+      EXPECT_FALSE(by_revolution(record, p));
+      EXPECT_EQ(record.self_pair_allowances[p],
+                allowance_down(from.self_pairs[p].distance, to.self_pairs[p].distance));
     } else {
-      // The base stands still: b's bound in the base frame is its world bound M_b.
-      EXPECT_EQ(record.self_pair_motion_bounds[p],
-                record.hull_motion_bounds[static_cast<std::size_t>(cell.self_pairs()[p].b)]);
-      EXPECT_GT(record.self_pair_motion_bounds[p], 0.0);
+      // The base is round about joint 1: its solid of revolution is turned into itself, so
+      // joint 1 alone moves no hull relative to it (the revolution route's bound is 0), while
+      // b's bound in the base frame is its world bound M_b > 0.
+      ASSERT_TRUE(a.revolution_L.has_value());
+      EXPECT_TRUE(by_revolution(record, p));
+      EXPECT_LT(record.self_pair_motion_bounds[p], 1e-300);
+      EXPECT_GT(record.hull_motion_bounds[static_cast<std::size_t>(cell.self_pairs()[p].b)], 0.0);
+      EXPECT_EQ(record.self_pair_allowances[p],
+                allowance_down(from.self_pairs[p].revolution_distance,
+                               to.self_pairs[p].revolution_distance));
+      // Below the exact distance of the placed hulls (it may exceed d: a pair settled by its
+      // balls' slab gets the solid's tighter support on that normal).
+      EXPECT_GT(from.self_pairs[p].revolution_distance, 0.0);
+      const std::vector<Points> placed = placed_hulls(cell, from.q);
+      const double exact_distance = std::sqrt(geometry::exact_distance_squared_lower(
+          placed[static_cast<std::size_t>(cell.self_pairs()[p].a)],
+          placed[static_cast<std::size_t>(cell.self_pairs()[p].b)]));
+      EXPECT_LE(from.self_pairs[p].revolution_distance, exact_distance + 1e-12);
     }
-    EXPECT_EQ(record.self_pair_allowances[p],
-              allowance_down(from.self_pairs[p].distance, to.self_pairs[p].distance));
     EXPECT_GE(b.link - a.link, 2);
   }
 }

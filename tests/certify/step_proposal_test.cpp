@@ -99,6 +99,25 @@ TEST(StepProposal, TheTightestHullGovernsAndContactOrRefiningHullsAreIgnored) {
   EXPECT_EQ(propose({{100.0, false, 0.0}}, false, 1.0, 4.0), 4.0);
 }
 
+// A self pair with a revolution route (proofs/two-ball-cover.md#revolution-route): the pair
+// passes when its own entry or its stand-in fits; the stand-in never limits the step by itself.
+TEST(StepProposal, ARouteStandsInForItsPairAndNeverLimitsTheStepAlone) {
+  ProposalHull pair{1.0, false, 0.0};   // alone: t <= 0.95
+  ProposalHull route{3.0, false, 0.0};  // t <= 2.85
+  route.alternative_only = true;
+  pair.alternative = 1;
+  expect_from_below(propose({pair, route}, false, 1.0, 4.0), 2.85, 4.0);
+  // The tighter of the two stands: the route at radius 0.5 (t <= 0.475) does not shorten it.
+  route.radius = 0.5;
+  expect_from_below(propose({pair, route}, false, 1.0, 4.0), 0.95, 4.0);
+  // A route with no distance (radius 0) stands in for nothing, and limits nothing.
+  route.radius = 0.0;
+  expect_from_below(propose({pair, route}, false, 1.0, 4.0), 0.95, 4.0);
+  pair.alternative = -1;
+  route.radius = 0.1;
+  expect_from_below(propose({pair, route}, false, 1.0, 4.0), 0.95, 4.0);
+}
+
 }  // namespace
 }  // namespace grpvss::certify
 

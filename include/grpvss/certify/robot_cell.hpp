@@ -17,6 +17,7 @@
 #include "grpvss/geometry/centroid_cull.hpp"
 #include "grpvss/exact/convex_polytope.hpp"
 #include "grpvss/geometry/hull_skeleton.hpp"
+#include "grpvss/geometry/revolution_solid.hpp"
 #include "grpvss/exact/minkowski_offset.hpp"
 #include "grpvss/kinematics/kinematic_chain.hpp"
 #include "grpvss/model/environment.hpp"
@@ -33,6 +34,10 @@ struct LinkHull {
   geometry::CertifiedSphere raw_sphere_L;
   geometry::CertifiedSphere expanded_sphere_L;
   geometry::Aabb expanded_box_L;  ///< box of expanded_L (the broadphase places it, O(1))
+  /// A solid of revolution about the axis of joint link + 1 containing this hull when it is round
+  /// about it (geometry::enclosing_revolution_solid): the self pairs with this hull as
+  /// their lower hull may then freeze that joint (proofs/two-ball-cover.md#revolution-route).
+  std::optional<geometry::RevolutionSolid> revolution_L;
 };
 
 /// \brief A self-collision pair as indices into RobotCell::hulls().
@@ -122,6 +127,8 @@ class RobotCell {
  private:
   void build_offsets(const std::vector<geometry::ConvexPolytope>& raw_polytopes,
                      double coordinate_bound, LinkOffsetSource* offsets);
+  /// Each hull's revolution_L, kept only within the FK bound's coordinate bound.
+  void enclose_round_hulls(double coordinate_bound);
   const RobotModel* robot_;
   const Environment* environment_;
   CellSettings settings_;

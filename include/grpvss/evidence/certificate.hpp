@@ -45,6 +45,10 @@ struct SelfPairRecord {
   bool separated = false;  ///< false: no distance proven (the hulls meet, or the gap is ~0)
   geometry::SeparationWitness witness;  ///< about the two placed raw hulls, from a to b
   double lower_bound = 0.0;
+  /// > 0 when hull a has a solid of revolution about joint a+1: the distance the same normal proves from
+  /// the placed solid to placed hull b (witness.offset_b on b's side).
+  /// proof: proofs/two-ball-cover.md#revolution-route
+  double revolution_lower_bound = 0.0;
 };
 
 struct TransitionRecord {
@@ -59,6 +63,10 @@ struct TransitionRecord {
   /// self pairs.
   std::vector<double> self_pair_motion_bounds;
   std::vector<double> self_pair_allowances;
+  /// Per self pair, 1 when the bound and allowance above are the revolution route's (joint
+  /// a+1 frozen, distances from hull a's solid of revolution: proofs/two-ball-cover.md#revolution-route),
+  /// 0 for the relative bound's. Empty when no pair has the route.
+  std::vector<int> self_pair_by_revolution;
 };
 
 struct StepCertificate {
