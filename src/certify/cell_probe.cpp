@@ -54,15 +54,7 @@ CellProbe::CellProbe(const RobotCell& cell)
       has_warm_normal_(cell.hulls().size() * static_cast<std::size_t>(cell.obstacles().size()), 0),
       climb_hints_(cell.hulls().size() * static_cast<std::size_t>(cell.obstacles().size()), 0),
       simplex_hints_(cell.hulls().size() * static_cast<std::size_t>(cell.obstacles().size())),
-      unmoved_hulls_(cell.hulls().size()) {
-  expanded_max_abs_L_.reserve(cell.hulls().size());
-  for (std::size_t i = 0; i < cell.hulls().size(); ++i) {
-    const std::vector<Eigen::Vector3d>& expanded_L = cell.hulls()[i].expanded_L;
-    const bool vertex_list = cell.expanded_polytope_L(i).vertices().size() == expanded_L.size();
-    const bool big = expanded_L.size() >= geometry::kTemplateClimbMinVertices;
-    expanded_max_abs_L_.push_back(vertex_list && big ? geometry::max_abs_coordinate(expanded_L) : -1.0);
-  }
-}
+      unmoved_hulls_(cell.hulls().size()) {}
 
 bool CellProbe::reuse_unmoved_hull(int hull_index, const Eigen::Isometry3d& X_WL,
                                    ProbeResult& out) const {
@@ -277,12 +269,13 @@ bool CellProbe::separate_by_template(const HullProbe& hull, int o, std::size_t w
                                      PairEvidence& evidence) {
   const RobotCell& cell = *cell_;
   const auto h = static_cast<std::size_t>(hull.index);
-  if (!(expanded_max_abs_L_[h] >= 0.0)) return false;
+  const double max_abs_L = hull.hull.expanded_template_max_abs_L;
+  if (!(max_abs_L >= 0.0)) return false;
   geometry::PlacedHull offset;
   offset.vertices_L = &hull.hull.expanded_L;
   offset.skeleton = &cell.expanded_skeleton(h);
   offset.X_WL = hull.X_WL;
-  offset.max_abs_L = expanded_max_abs_L_[h];
+  offset.max_abs_L = max_abs_L;
   const auto result = geometry::certified_placed_separation_query(
       offset, cell.obstacles().vertices_W(o),
       has_warm_normal_[warm_slot] ? &warm_normals_[warm_slot] : nullptr, &climb_hints_[warm_slot],

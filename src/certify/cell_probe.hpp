@@ -154,11 +154,6 @@ class CellProbe {
   /// [hull * obstacles + obstacle]: GJK's last simplex on the offset's template
   std::vector<geometry::GjkSimplexHint> simplex_hints_;
   std::vector<UnmovedHull> unmoved_hulls_;  ///< [hull]
-  /// [hull]: largest |coordinate| of expanded_L, or -1 when the offset is always placed: when
-  /// expanded_L is not exactly the vertex list of its exact hull (its template cannot be
-  /// climbed to a proven support, proofs/fast-path.md#placed-separation) or is small
-  /// (geometry::kTemplateClimbMinVertices).
-  std::vector<double> expanded_max_abs_L_;
 };
 
 }  // namespace grpvss::certify

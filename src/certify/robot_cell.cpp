@@ -78,12 +78,27 @@ RobotCell::RobotCell(const RobotModel& robot, const Environment& environment,
   }
   build_offsets(raw_polytopes, coordinate_bound, offsets);
   enclose_round_hulls(coordinate_bound);
+  choose_templates();
   if (largest_link_coordinate(hulls_) > coordinate_bound) {
     throw std::logic_error("RobotCell: offset vertices exceed the coordinate bound of the FK error");
   }
   obstacles_ = ObstacleSet(environment.obstacles);
   allowed_contacts_ = environment.allowed_contacts;
   self_pairs_ = self_pair_hulls(robot, hulls_);
+}
+
+// Below kTemplateClimbMinVertices placing every vertex is cheaper than climbing the template
+// (docs/performance.md#placed-templates); an offset whose points are not exactly its exact
+// hull's vertex list has no template (its skeleton numbers another list).
+void RobotCell::choose_templates() {
+  for (std::size_t i = 0; i < hulls_.size(); ++i) {
+    LinkHull& hull = hulls_[i];
+    hull.raw_max_abs_L = max_abs_coordinate(hull.raw_L);
+    hull.raw_on_template = hull.raw_L.size() >= geometry::kTemplateClimbMinVertices;
+    const bool vertex_list = expanded_polytopes_L_[i].vertices().size() == hull.expanded_L.size();
+    const bool big = hull.expanded_L.size() >= geometry::kTemplateClimbMinVertices;
+    hull.expanded_template_max_abs_L = vertex_list && big ? max_abs_coordinate(hull.expanded_L) : -1.0;
+  }
 }
 
 // proof: proofs/two-ball-cover.md#revolution-solid (the solid's points are placed

@@ -29,10 +29,7 @@ SelfPairProbe::SelfPairProbe(const RobotCell& cell)
       has_warm_normal_(cell.self_pairs().size(), 0),
       climb_hints_a_(cell.self_pairs().size(), 0),
       climb_hints_b_(cell.self_pairs().size(), 0),
-      simplex_hints_(cell.self_pairs().size()) {
-  raw_max_abs_L_.reserve(cell.hulls().size());
-  for (const LinkHull& hull : cell.hulls()) raw_max_abs_L_.push_back(geometry::max_abs_coordinate(hull.raw_L));
-}
+      simplex_hints_(cell.self_pairs().size()) {}
 
 geometry::PlacedHull SelfPairProbe::template_placed(int hull,
                                                     const std::vector<Eigen::Isometry3d>& X_WL) const {
@@ -42,7 +39,7 @@ geometry::PlacedHull SelfPairProbe::template_placed(int hull,
   placed.vertices_L = &link_hull.raw_L;
   placed.skeleton = &cell_->raw_skeleton(h);
   placed.X_WL = X_WL[static_cast<std::size_t>(link_hull.link)];
-  placed.max_abs_L = raw_max_abs_L_[h];
+  placed.max_abs_L = link_hull.raw_max_abs_L;
   return placed;
 }
 
@@ -51,8 +48,8 @@ geometry::PlacedHull SelfPairProbe::template_placed(int hull,
 bool SelfPairProbe::settle_by_templates(std::size_t p, const std::vector<Eigen::Isometry3d>& X_WL,
                                         SelfPairEvidence& evidence) {
   const SelfPairHulls& pair = cell_->self_pairs()[p];
-  const auto size = [&](int hull) { return cell_->hulls()[static_cast<std::size_t>(hull)].raw_L.size(); };
-  if (std::max(size(pair.a), size(pair.b)) < geometry::kTemplateClimbMinVertices) return false;
+  const auto on_template = [&](int hull) { return cell_->hulls()[static_cast<std::size_t>(hull)].raw_on_template; };
+  if (!on_template(pair.a) && !on_template(pair.b)) return false;
   const auto result = geometry::certified_placed_separation_query(
       template_placed(pair.a, X_WL), template_placed(pair.b, X_WL),
       has_warm_normal_[p] ? &warm_normals_[p] : nullptr, &climb_hints_a_[p], &climb_hints_b_[p],

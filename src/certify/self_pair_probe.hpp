@@ -77,7 +77,6 @@ class SelfPairProbe {
   const RobotCell* cell_;
   std::vector<std::vector<Eigen::Vector3d>> placed_raw_;  ///< [hull], this probe's
   std::vector<char> is_placed_;
-  std::vector<double> raw_max_abs_L_;  ///< [hull]: largest |coordinate| of raw_L
   std::vector<Eigen::Vector3d> warm_normals_;  ///< [pair]
   std::vector<char> has_warm_normal_;
   std::vector<int> climb_hints_a_;  ///< [pair]: where GJK's climb on hull a starts

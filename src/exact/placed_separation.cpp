@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <stdexcept>
+#include <vector>
 
 #include "grpvss/geometry/directed_rounding.hpp"
 #include "grpvss/geometry/gjk.hpp"
@@ -26,6 +28,26 @@ double gamma4_up() {
 /// head on) is left to the scan.
 constexpr int kMaxTied = 96;
 
+/// Which vertices are in the tied set, in O(1): vertex i is marked when its stamp is the current
+/// generation (one array per thread, grown to the largest template seen; a new generation
+/// clears every mark at once).
+class TiedMarks {
+ public:
+  void begin(std::size_t vertices) {
+    if (stamps_.size() < vertices) stamps_.resize(vertices, 0);
+    if (++generation_ == 0) {  // wrapped: old stamps could equal the new generation
+      std::fill(stamps_.begin(), stamps_.end(), 0);
+      generation_ = 1;
+    }
+  }
+  void mark(int i) { stamps_[static_cast<std::size_t>(i)] = generation_; }
+  bool marked(int i) const { return stamps_[static_cast<std::size_t>(i)] == generation_; }
+
+ private:
+  std::vector<std::uint32_t> stamps_;
+  std::uint32_t generation_ = 0;
+};
+
 /// Upper bound of \f$\max_i m\cdot v_i\f$ over the template (coordinates at most max_abs),
 /// or nullopt. The climb's end x and the vertices connected to it whose values are within
 /// `tie` of its value form T; if every
@@ -46,16 +68,20 @@ std::optional<double> tied_support_upper(const std::vector<Vector3d>& v, const H
   // Which vertices count as tied only decides how much is checked, never what is claimed.
   const double top_estimate = m.dot(at(x));
   const double tie = 1e-12 * (std::fabs(m[0]) + std::fabs(m[1]) + std::fabs(m[2])) * max_abs;
+  thread_local TiedMarks marks;
+  marks.begin(v.size());
   std::array<int, kMaxTied> tied{};
   int tied_count = 0;
   tied[tied_count++] = x;
-  const auto is_tied = [&](int i) { return std::find(tied.begin(), tied.begin() + tied_count, i) != tied.begin() + tied_count; };
+  marks.mark(x);
+  const auto is_tied = [&](int i) { return marks.marked(i); };
   for (int k = 0; k < tied_count; ++k) {
     const auto [first, last] = neighbours(tied[static_cast<std::size_t>(k)]);
     for (const int* y = first; y != last; ++y) {
       if (is_tied(*y) || !(m.dot(at(*y)) >= top_estimate - tie)) continue;
       if (tied_count == kMaxTied) return std::nullopt;
       tied[static_cast<std::size_t>(tied_count++)] = *y;
+      marks.mark(*y);
     }
   }
   double lowest = std::numeric_limits<double>::infinity();

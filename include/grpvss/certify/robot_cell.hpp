@@ -34,6 +34,14 @@ struct LinkHull {
   geometry::CertifiedSphere raw_sphere_L;
   geometry::CertifiedSphere expanded_sphere_L;
   geometry::Aabb expanded_box_L;  ///< box of expanded_L (the broadphase places it, O(1))
+  /// Whether raw_L is decided on its link-frame template rather than placed (128+ vertices,
+  /// geometry::kTemplateClimbMinVertices), and its largest |coordinate| for that.
+  /// proof: proofs/fast-path.md#placed-separation
+  bool raw_on_template = false;
+  double raw_max_abs_L = 0.0;
+  /// The offset's largest |coordinate| when the offset is decided on its template (128+
+  /// vertices, and expanded_L exactly its exact hull's vertex list); -1: it is placed.
+  double expanded_template_max_abs_L = -1.0;
   /// A solid of revolution about the axis of joint link + 1 containing this hull when it is round
   /// about it (geometry::enclosing_revolution_solid): the self pairs with this hull as
   /// their lower hull may then freeze that joint (proofs/two-ball-cover.md#revolution-route).
@@ -129,6 +137,8 @@ class RobotCell {
                      double coordinate_bound, LinkOffsetSource* offsets);
   /// Each hull's revolution_L, kept only within the FK bound's coordinate bound.
   void enclose_round_hulls(double coordinate_bound);
+  /// Each hull's raw_on_template, raw_max_abs_L and expanded_template_max_abs_L.
+  void choose_templates();
   const RobotModel* robot_;
   const Environment* environment_;
   CellSettings settings_;
