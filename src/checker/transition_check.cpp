@@ -98,32 +98,24 @@ void TransitionCheck::check(const StepCertificate& from, const StepCertificate& 
   for (const auto& [a, b] : cell_.self_pairs()) {
     const CheckedHull& hull_a = hulls[static_cast<std::size_t>(a)];
     const CheckedHull& hull_b = hulls[static_cast<std::size_t>(b)];
-    std::vector<Rational> relative = increments;  // joints 1..a move link a's frame, not b in it
-    for (int j = 0; j < std::min(hull_a.link, joints); ++j) relative[static_cast<std::size_t>(j)] = 0;
-    Rational joint_sum = 0;
-    for (int joint = hull_a.link + 1; joint <= std::min(hull_b.link, joints); ++joint) {
-      const Rational& increment = relative[static_cast<std::size_t>(joint - 1)];
-      joint_sum += cell_.robot().joints[joint - 1].type == JointType::kRevolute
-                       ? increment * hull_b.axis_radius[static_cast<std::size_t>(joint - 1)]
-                       : increment;
-    }
-    const Rational step_axis = step_axis_bound(hull_b, relative);
-    self_pair_relative_bounds_.push_back(std::min(joint_sum, step_axis));
-    self_pair_revolution_bounds_.push_back(revolution_bound(hull_a, hull_b, increments));
+    // Joints 1..a move link a's frame, not b in it. proof: proofs/two-ball-cover.md#relative-frame
+    self_pair_relative_bounds_.push_back(frozen_bound(hull_b, increments, hull_a.link));
+    // Hull a's solid of revolution is turned into itself by joint a+1 as well.
+    // proof: proofs/two-ball-cover.md#revolution-route
+    self_pair_revolution_bounds_.push_back(
+        hull_a.revolution_L ? std::optional<Rational>(frozen_bound(hull_b, increments, hull_a.link + 1))
+                            : std::nullopt);
   }
 }
 
-// Hull b with joints 1..a+1 frozen: its motion about hull a's solid of revolution, which joint a+1 turns
-// into itself. proof: proofs/two-ball-cover.md#revolution-route
-std::optional<Rational> TransitionCheck::revolution_bound(const CheckedHull& hull_a,
-                                                          const CheckedHull& hull_b,
-                                                          const std::vector<Rational>& increments) const {
-  if (!hull_a.revolution_L) return std::nullopt;
+// The smaller of the joint-sum bound and M'_h of hull b with joints 1..frozen held still.
+Rational TransitionCheck::frozen_bound(const CheckedHull& hull_b,
+                                       const std::vector<Rational>& increments, int frozen) const {
   const int joints = cell_.robot().joint_count();
   std::vector<Rational> relative = increments;
-  for (int j = 0; j < std::min(hull_a.link + 1, joints); ++j) relative[static_cast<std::size_t>(j)] = 0;
+  for (int j = 0; j < std::min(frozen, joints); ++j) relative[static_cast<std::size_t>(j)] = 0;
   Rational joint_sum = 0;
-  for (int joint = hull_a.link + 2; joint <= std::min(hull_b.link, joints); ++joint) {
+  for (int joint = frozen + 1; joint <= std::min(hull_b.link, joints); ++joint) {
     const Rational& increment = relative[static_cast<std::size_t>(joint - 1)];
     joint_sum += cell_.robot().joints[joint - 1].type == JointType::kRevolute
                      ? increment * hull_b.axis_radius[static_cast<std::size_t>(joint - 1)]

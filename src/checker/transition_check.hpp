@@ -50,8 +50,11 @@ class TransitionCheck {
   }
 
  private:
-  std::optional<Rational> revolution_bound(const CheckedHull& hull_a, const CheckedHull& hull_b,
-                                           const std::vector<Rational>& increments) const;
+  /// Hull b's exact bound with joints 1..frozen held still: the smaller of the joint sum over
+  /// joints frozen+1..b and M'_b over the same joints (proofs/two-ball-cover.md#relative-frame,
+  /// proofs/motion-bound.md#lemma-axis-distance-along-step).
+  Rational frozen_bound(const CheckedHull& hull_b, const std::vector<Rational>& increments,
+                        int frozen) const;
   /// The exact joint-sum bound M_h of the hull over the transition; with `joint_variation`
   /// (a joint trajectory's piece: the exact variation bound per joint) in place of |dq|.
   /// proof: proofs/joint-variation.md#theorem-variation-motion-bound

@@ -105,14 +105,10 @@ std::optional<double> tied_support_upper(const std::vector<Vector3d>& v, const H
 /// proof: proofs/fast-path.md#placed-separation
 std::optional<double> placed_max_upper(const PlacedHull& hull, const Vector3d& n, int& climb_start) {
   const auto& X = hull.X_WL.matrix();
-  // m = R^T n in real arithmetic lies in [m_lo, m_hi] componentwise (step 1).
-  Vector3d m_lo;
-  double spread = 0.0;
-  for (int k = 0; k < 3; ++k) {
-    const double column[3] = {X(0, k), X(1, k), X(2, k)};
-    m_lo[k] = dot_down(column, n.data());
-    spread = add_up(spread, sub_up(dot_up(column, n.data()), m_lo[k]));
-  }
+  // m = R^T n in real arithmetic lies in [m_lo, m_lo + spread] componentwise (step 1).
+  const RotatedNormal rotated = rotated_normal(hull.X_WL, n);
+  const Vector3d& m_lo = rotated.lower;
+  const double spread = rotated.spread;
   // The template's support vertices for m_lo: the climb's end and the vertices tied with it
   // (a face or edge facing n), proven to bound every vertex (step 2).
   const std::optional<double> top = tied_support_upper(*hull.vertices_L, *hull.skeleton, m_lo, hull.max_abs_L, climb_start);

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "grpvss/geometry/directed_rounding.hpp"
+#include "grpvss/geometry/placed_hull.hpp"
 
 namespace grpvss::geometry {
 namespace {
@@ -149,13 +150,9 @@ double placed_solid_support_upper(const RevolutionSolid& solid, const Eigen::Iso
   UpwardRoundingScope upward;
   const auto& X = X_WL.matrix();
   // m = R^T n lies in [m_lo, m_lo + spread] componentwise; |m - m_lo|_2 <= spread.
-  Vector3d m_lo;
-  double spread = 0.0;
-  for (int k = 0; k < 3; ++k) {
-    const double column[3] = {X(0, k), X(1, k), X(2, k)};
-    m_lo[k] = dot_down(column, n.data());
-    spread = add_up(spread, sub_up(dot_up(column, n.data()), m_lo[k]));
-  }
+  const RotatedNormal rotated = rotated_normal(X_WL, n);
+  const Vector3d& m_lo = rotated.lower;
+  const double spread = rotated.spread;
   const Vector3d& p = solid.axis_point_L;
   const Vector3d& u = solid.axis_L;
   const double translation[3] = {X(0, 3), X(1, 3), X(2, 3)};

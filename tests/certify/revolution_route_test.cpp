@@ -22,9 +22,8 @@
 #include "grpvss/checker/certificate_checker.hpp"
 #include "grpvss/geometry/revolution_solid.hpp"
 #include "grpvss/geometry/separation_witness.hpp"
-#include "grpvss/io/path_file.hpp"
 #include "grpvss/kinematics/forward_kinematics.hpp"
-#include "grpvss/motion/kinematics_adapter.hpp"
+#include "support/ur5e_self_run.hpp"
 
 namespace grpvss::certify {
 namespace {
@@ -231,36 +230,11 @@ TEST(RevolutionRouteLemma, TheExactDistanceKeepsHalfTheSlackAlongStepsTheRoutePr
   EXPECT_EQ(proven_only_by_the_route, 28);  // the relative bound alone could not hold these
 }
 
-struct Ur5eRun {
-  cell::LoadedCell cell;
-  PathProgram program;
-  motion::KinematicsAccess kinematics;
-};
-
-Ur5eRun load_run(const std::string& path_file) {
-  Ur5eRun run{cell::load_cell(kCells + "ur5e-self.yaml"), {}, {}};
-  run.program = io::read_path_file(kCells + path_file, run.cell.robot);
-  run.kinematics =
-      motion::make_kinematics_access(run.cell.robot, motion::select_ik({}, run.cell.robot, "ur5e"));
-  return run;
-}
-
-CheckReport check(const Ur5eRun& run, const Certificate& certificate) {
-  return check_certificate(run.cell.robot, run.cell.environment, run.program, run.kinematics,
-                           certificate);
-}
-
-bool has_failure(const CheckReport& report, const std::string& text) {
-  return std::any_of(report.failures.begin(), report.failures.end(),
-                     [&](const std::string& f) { return f.find(text) != std::string::npos; });
-}
+using test::has_failure;
 
 TEST(RevolutionRoute, TheCheckerAcceptsTheRouteAndRejectsAnInflatedOrMissingDistance) {
-  const Ur5eRun run = load_run("ur5e-clear.txt");
-  SetupRequest request;
-  request.tolerance = run.cell.tolerance;
-  const VerificationRun verified =
-      verify(run.cell.robot, run.cell.environment, run.program, run.kinematics, resolve_setup(request));
+  const test::Ur5eSelfInputs run = test::load_ur5e_self("ur5e-self.yaml", "ur5e-clear.txt");
+  const VerificationRun verified = test::verify_ur5e_self(run);
   ASSERT_EQ(verified.result.verdict, Verdict::kClear);
   const Certificate& certificate = verified.certificate;
   int by_route = 0;
@@ -270,7 +244,7 @@ TEST(RevolutionRoute, TheCheckerAcceptsTheRouteAndRejectsAnInflatedOrMissingDist
     }
   }
   EXPECT_GT(by_route, 0);
-  const CheckReport accepted = check(run, certificate);
+  const CheckReport accepted = test::check_ur5e_self(run, certificate);
   EXPECT_TRUE(accepted.accepted) << (accepted.failures.empty() ? "" : accepted.failures.front());
 
   // A distance from the solid beyond what the slab proves.
@@ -287,7 +261,7 @@ TEST(RevolutionRoute, TheCheckerAcceptsTheRouteAndRejectsAnInflatedOrMissingDist
     }
   }
   ASSERT_TRUE(found);
-  const CheckReport false_distance = check(run, inflated);
+  const CheckReport false_distance = test::check_ur5e_self(run, inflated);
   EXPECT_FALSE(false_distance.accepted);
   EXPECT_TRUE(has_failure(false_distance, "the distance from the solid of revolution does not hold"));
 
@@ -298,7 +272,7 @@ TEST(RevolutionRoute, TheCheckerAcceptsTheRouteAndRejectsAnInflatedOrMissingDist
       for (SelfPairRecord& pair : step.self_pairs) pair.revolution_lower_bound = 0.0;
     }
   }
-  const CheckReport missing = check(run, stripped);
+  const CheckReport missing = test::check_ur5e_self(run, stripped);
   EXPECT_FALSE(missing.accepted);
   EXPECT_TRUE(has_failure(missing, "the relative motion bound is not below d_k + d_k+1"));
 }

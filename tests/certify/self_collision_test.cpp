@@ -34,6 +34,7 @@
 #include "grpvss/motion/kinematics_adapter.hpp"
 #include "grpvss/motion/trajectory.hpp"
 #include "support/geometry_reference.hpp"
+#include "support/ur5e_self_run.hpp"
 
 namespace grpvss::certify {
 namespace {
@@ -146,35 +147,17 @@ TEST(RelativeMotionLemma, TheExactDistanceBoundSubtractsTwicePlacementErrorRound
 
 const std::string kCells = std::string(GRPVSS_SOURCE_DIR) + "/tests/data/cells/";
 
-struct Ur5e {
-  cell::LoadedCell cell;
-  PathProgram program;
-  motion::KinematicsAccess kinematics;
-};
+using test::has_failure;
+using test::Ur5eSelfInputs;
 
-Ur5e load(const std::string& cell_file, const std::string& path_file) {
-  Ur5e run{cell::load_cell(cell_file), {}, {}};
-  run.program = io::read_path_file(path_file, run.cell.robot);
-  run.kinematics =
-      motion::make_kinematics_access(run.cell.robot, motion::select_ik({}, run.cell.robot, "ur5e"));
-  return run;
+Ur5eSelfInputs load(const std::string& cell_file, const std::string& path_file) {
+  return test::load_ur5e_self(cell_file, path_file);
 }
 
-VerificationRun verify_ur5e(const Ur5e& run) {
-  SetupRequest request;
-  request.tolerance = run.cell.tolerance;
-  return verify(run.cell.robot, run.cell.environment, run.program, run.kinematics,
-                resolve_setup(request));
-}
+VerificationRun verify_ur5e(const Ur5eSelfInputs& run) { return test::verify_ur5e_self(run); }
 
-CheckReport check(const Ur5e& run, const Certificate& certificate) {
-  return check_certificate(run.cell.robot, run.cell.environment, run.program, run.kinematics,
-                           certificate);
-}
-
-bool has_failure(const CheckReport& report, const std::string& text) {
-  return std::any_of(report.failures.begin(), report.failures.end(),
-                     [&](const std::string& f) { return f.find(text) != std::string::npos; });
+CheckReport check(const Ur5eSelfInputs& run, const Certificate& certificate) {
+  return test::check_ur5e_self(run, certificate);
 }
 
 int hull_count(const RobotModel& robot, int link) {
@@ -226,7 +209,7 @@ TEST(SelfCollision, TheSrdfAndAllowedContactsRemoveTheirPairsAndListThem) {
 }
 
 TEST(SelfCollision, FoldingTheWristIntoTheUpperArmIsACollisionNamingBothLinks) {
-  const Ur5e run = load(kCells + "ur5e-self.yaml", kCells + "ur5e-fold.txt");
+  const Ur5eSelfInputs run = load("ur5e-self.yaml", "ur5e-fold.txt");
   const VerificationRun verified = verify_ur5e(run);
   EXPECT_EQ(verified.result.verdict, Verdict::kCollision);
   ASSERT_TRUE(verified.result.collision_step.has_value());
@@ -241,7 +224,7 @@ TEST(SelfCollision, FoldingTheWristIntoTheUpperArmIsACollisionNamingBothLinks) {
 }
 
 TEST(SelfCollision, AClearPathIsCertifiedAgainstItselfAndTheCheckerAcceptsIt) {
-  const Ur5e run = load(kCells + "ur5e-self.yaml", kCells + "ur5e-clear.txt");
+  const Ur5eSelfInputs run = load("ur5e-self.yaml", "ur5e-clear.txt");
   const VerificationRun verified = verify_ur5e(run);
   EXPECT_EQ(verified.result.verdict, Verdict::kClear);
   const Certificate& certificate = verified.certificate;
@@ -257,7 +240,7 @@ TEST(SelfCollision, AClearPathIsCertifiedAgainstItselfAndTheCheckerAcceptsIt) {
 }
 
 TEST(SelfCollision, ACertificateWithAnotherPairListOrAFalseSlabIsRejected) {
-  const Ur5e run = load(kCells + "ur5e-self.yaml", kCells + "ur5e-clear.txt");
+  const Ur5eSelfInputs run = load("ur5e-self.yaml", "ur5e-clear.txt");
   const Certificate certificate = verify_ur5e(run).certificate;
   ASSERT_TRUE(check(run, certificate).accepted);
 
@@ -284,7 +267,7 @@ TEST(SelfCollision, ACertificateWithAnotherPairListOrAFalseSlabIsRejected) {
 }
 
 TEST(SelfCollision, DisablingTheCollidingPairInTheSrdfMakesTheFoldClear) {
-  const Ur5e run = load(kCells + "ur5e-self-srdf.yaml", kCells + "ur5e-fold.txt");
+  const Ur5eSelfInputs run = load("ur5e-self-srdf.yaml", "ur5e-fold.txt");
   const VerificationRun verified = verify_ur5e(run);
   EXPECT_EQ(verified.result.verdict, Verdict::kClear);
   EXPECT_TRUE(verified.result.self_collision_episodes.empty());
@@ -527,7 +510,7 @@ TEST(SelfCollision, AnExactReferenceAgreesOnRandomUr5ePaths) {
       out << "1\n1\n";
       for (int j = 0; j < 6; ++j) out << angle(rng) << ",30.\n";
     }
-    Ur5e run{loaded, io::read_path_file(path, loaded.robot), {}};
+    Ur5eSelfInputs run{loaded, io::read_path_file(path, loaded.robot), {}};
     run.kinematics =
         motion::make_kinematics_access(run.cell.robot, motion::select_ik({}, run.cell.robot, "ur5e"));
     const VerificationRun verified = verify_ur5e(run);
