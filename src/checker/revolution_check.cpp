@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 
 #include "checked_cell.hpp"
 
@@ -88,7 +89,10 @@ bool solid_encloses_exactly(const geometry::RevolutionSolid& solid,
 // proof: proofs/two-ball-cover.md#revolution-solid-support
 bool solid_side_holds_exactly(const geometry::RevolutionSolid& solid, const Eigen::Isometry3d& X_WL,
                               const geometry::SeparationWitness& witness, double lambda) {
-  if (!(lambda >= 0.0) || solid.rings.empty()) return false;
+  // Non-finite numbers have no rational value (a certificate may carry 1e999).
+  const bool finite = std::isfinite(lambda) && std::isfinite(witness.offset_b) &&
+                      witness.normal.allFinite() && X_WL.matrix().allFinite();
+  if (!finite || !(lambda >= 0.0) || solid.rings.empty()) return false;
   const Vector3q n = exact3(witness.normal);
   const auto& X = X_WL.matrix();
   Vector3q m;

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 #include <string>
 #include <vector>
@@ -169,6 +170,10 @@ TEST(RevolutionSolid, TheSupportBoundHoldsOnSampledPointsAndTheCheckerAgrees) {
     EXPECT_TRUE(solid_side_holds_exactly(solid, X, witness, 0.0)) << "trial " << trial;
     witness.offset_b = static_cast<double>(largest) - 1e-9 * n.norm();
     EXPECT_FALSE(solid_side_holds_exactly(solid, X, witness, 0.0)) << "trial " << trial;
+    // A certificate's non-finite numbers are refused, never converted.
+    EXPECT_FALSE(solid_side_holds_exactly(solid, X, witness, std::numeric_limits<double>::infinity()));
+    geometry::SeparationWitness unbounded{n, bound, std::numeric_limits<double>::infinity()};
+    EXPECT_FALSE(solid_side_holds_exactly(solid, X, unbounded, 0.0));
     // lambda |n| more room is needed for a claimed distance lambda.
     witness.offset_b = bound + 0.01 * n.norm();
     EXPECT_TRUE(solid_side_holds_exactly(solid, X, witness, 0.0099)) << "trial " << trial;
