@@ -99,9 +99,9 @@ double route_distance(const SelfPairEvidence& evidence, bool revolution) {
 }
 
 void judge_self_pairs(const RobotCell& cell, const ProbeResult& from, const ProbeResult& to,
-                      TransitionRecord& record, const StepAxisDistances* axis) {
+                      const Eigen::VectorXd& dq, TransitionRecord& record,
+                      const StepAxisDistances* axis) {
   const std::vector<SelfPairHulls>& pairs = cell.self_pairs();
-  const Eigen::VectorXd dq = to.q - from.q;
   std::vector<int> routes(pairs.size(), 0);
   bool any_route = false;
   for (std::size_t p = 0; p < pairs.size(); ++p) {
@@ -173,7 +173,8 @@ TransitionRecord judge_transition(const RobotCell& cell, const ProbeResult& from
     record.hull_allowances.push_back(allowance);
     record.governing.push_back(governing);
   }
-  judge_self_pairs(cell, from, to, record, step_radii != nullptr ? &axis : nullptr);
+  // The pairs' relative bounds take the same increments (or variations) as the hulls'.
+  judge_self_pairs(cell, from, to, dq, record, step_radii != nullptr ? &axis : nullptr);
   return record;
 }
 

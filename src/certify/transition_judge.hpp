@@ -33,8 +33,11 @@ TransitionRecord judge_transition(const RobotCell& cell, const ProbeResult& from
 /// proof: proofs/two-ball-cover.md#lemma-relative-motion
 /// With `axis` (the step's axis distances at both ends), the relative bound may be M'_{b|a}
 /// (proofs/motion-bound.md#lemma-axis-distance-along-step, joints 1..a frozen).
+/// `dq`: per joint the step's increment, or on a trajectory piece a bound of its variation
+/// (proofs/joint-variation.md#theorem-variation-motion-bound), as for the hulls' bounds.
 void judge_self_pairs(const RobotCell& cell, const ProbeResult& from, const ProbeResult& to,
-                      TransitionRecord& record, const StepAxisDistances* axis = nullptr);
+                      const Eigen::VectorXd& dq, TransitionRecord& record,
+                      const StepAxisDistances* axis = nullptr);
 
 /// \brief The revolution route's bound of pair `pair` (hull a with a solid of revolution about joint a+1):
 /// hull b's motion with joints 1..a+1 frozen, rounded up.

@@ -395,6 +395,37 @@ TEST(SelfCollision, TheStepRuleHoldsEachPairToItsRelativeBound) {
   }
 }
 
+// On a trajectory piece the joints may go out and back within one step: the pairs' relative
+// bounds take the joints' variation, as the hulls' do, never the ends' difference (which is 0
+// here). proof: proofs/joint-variation.md#theorem-variation-motion-bound
+TEST(SelfCollision, TheRelativeBoundTakesTheJointVariationOfATrajectoryPiece) {
+  const cell::LoadedCell loaded = cell::load_cell(kCells + "ur5e-self.yaml");
+  CellSettings settings;
+  settings.tolerance = loaded.tolerance;
+  const RobotCell cell(loaded.robot, loaded.environment, settings);
+  CellProbe probe(cell);
+  ProbeResult at;
+  Eigen::VectorXd q(6);
+  q << 0, -1.5708, 1.5708, 0, 0, 0;
+  probe.probe(q, false, at);
+  const Eigen::VectorXd variation = Eigen::VectorXd::Constant(6, 0.1);
+  const TransitionRecord record = judge_transition(cell, at, at, false, false, variation);
+  ASSERT_EQ(record.self_pair_motion_bounds.size(), cell.self_pairs().size());
+  for (std::size_t p = 0; p < cell.self_pairs().size(); ++p) {
+    const SelfPairHulls& pair = cell.self_pairs()[p];
+    const LinkHull& a = cell.hulls()[static_cast<std::size_t>(pair.a)];
+    const LinkHull& b = cell.hulls()[static_cast<std::size_t>(pair.b)];
+    // Joints a+2..b move hull b even about a's solid of revolution: a positive bound either way.
+    Eigen::VectorXd beyond = variation;
+    beyond.head(a.link + 1).setZero();
+    const double least = cell.radii().hull_motion_bound(b.link, b.hull, beyond);
+    EXPECT_GT(least, 0.0) << "pair " << p;
+    EXPECT_GE(record.self_pair_motion_bounds[p], std::min(least, record.hull_motion_bounds[static_cast<std::size_t>(pair.a)] +
+                                                                     record.hull_motion_bounds[static_cast<std::size_t>(pair.b)]))
+        << "pair " << p;
+  }
+}
+
 // A pair whose placed balls are far enough apart is settled by their slab, without GJK or a
 // vertex scan (self_pair_probe.hpp): the slab holds exactly on the placed hulls, its distance
 // never exceeds the closest witness's nor the reference distance, and it is kept only at or
