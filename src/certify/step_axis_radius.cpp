@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "grpvss/geometry/directed_rounding.hpp"
+#include "vertex_route.hpp"
 
 namespace grpvss::certify {
 namespace r = geometry::rounding;
@@ -35,7 +36,8 @@ double largest_distance_up(const std::vector<Eigen::Vector3d>& points_L, const E
   return r::sqrt_up(largest_square);
 }
 
-// |c - o - s z| rounded up: each coordinate bracketed by directed rounding.
+}  // namespace
+
 // proof: proofs/motion-bound.md#axis-distance-evaluation
 double axis_point_distance_up(const Eigen::Vector3d& c, const Eigen::Vector3d& o,
                               const Eigen::Vector3d& z, double s) {
@@ -47,8 +49,6 @@ double axis_point_distance_up(const Eigen::Vector3d& c, const Eigen::Vector3d& o
   }
   return r::sqrt_up(square);
 }
-
-}  // namespace
 
 StepAxisRadii::StepAxisRadii(const RobotCell& cell)
     : cell_(&cell), joints_(cell.chain().joint_count()) {
@@ -149,11 +149,22 @@ void StepAxisRadii::proposal_axis_distances(const ProbeResult& probe,
     const std::size_t b_row = static_cast<std::size_t>(pair.b) * joints;
     for (std::size_t j = 0; j < joints; ++j) distances.push_back(distances[b_row + j]);
   }
-  // The revolution routes' rows (step_march.cpp): hull b's distances again.
-  for (const SelfPairHulls& pair : cell_->self_pairs()) {
-    if (!cell_->hulls()[static_cast<std::size_t>(pair.a)].revolution_L) continue;
-    const std::size_t b_row = static_cast<std::size_t>(pair.b) * joints;
+  // The revolution routes' rows (step_march.cpp): hull b's distances again, its own joint's
+  // weighed vertex by vertex where the pair has the vertex bound
+  // (proofs/two-ball-cover.md#revolution-vertex-bound).
+  const std::vector<SelfPairHulls>& pairs = cell_->self_pairs();
+  thread_local VertexRouteTerms terms;
+  for (std::size_t p = 0; p < pairs.size(); ++p) {
+    if (!cell_->hulls()[static_cast<std::size_t>(pairs[p].a)].revolution_L) continue;
+    const std::size_t b_row = static_cast<std::size_t>(pairs[p].b) * joints;
+    const std::size_t route_row = distances.size();
     for (std::size_t j = 0; j < joints; ++j) distances.push_back(distances[b_row + j]);
+    if (has_vertex_route(*cell_, pairs[p]) &&
+        vertex_route_terms(*cell_, p, probe, coordinate_limit_, terms)) {
+      const int joint = cell_->hulls()[static_cast<std::size_t>(pairs[p].b)].link;
+      double& own = distances[route_row + static_cast<std::size_t>(joint - 1)];
+      own = std::min(own, vertex_route_proposal_radius(terms, probe.self_pairs[p].revolution_distance));
+    }
   }
 }
 

@@ -41,6 +41,8 @@ class StepAxisRadii {
   void proposal_axis_distances(const ProbeResult& probe, std::vector<double>& distances) const;
 
   int joint_count() const { return joints_; }
+  /// L, the largest |coordinate| of any hull vertex.
+  double coordinate_limit() const { return coordinate_limit_; }
 
  private:
   const RobotCell* cell_;
@@ -49,6 +51,11 @@ class StepAxisRadii {
   std::vector<Eigen::Vector3d> center_L_;  ///< c_h per hull
   std::vector<double> radius_up_;        ///< r_h per hull
 };
+
+/// |c - o - s z| rounded up, each coordinate bracketed by directed rounding (an active
+/// UpwardRoundingScope is required). proof: proofs/motion-bound.md#axis-distance-evaluation
+double axis_point_distance_up(const Eigen::Vector3d& c, const Eigen::Vector3d& o,
+                              const Eigen::Vector3d& z, double s);
 
 /// One transition's axis distances at both ends, with the increments (rounded up).
 struct StepAxisDistances {

@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "joint_linear_motion_bound.hpp"
+#include "vertex_route.hpp"
 #include "grpvss/geometry/directed_rounding.hpp"
 
 namespace grpvss::certify {
@@ -80,6 +81,20 @@ double revolution_motion_bound(const RobotCell& cell, const SelfPairHulls& pair,
   return bound;
 }
 
+// The route's M_v from both ends' vertex terms (+inf when either end proves no route distance).
+// proof: proofs/two-ball-cover.md#revolution-vertex-bound
+double vertex_route_motion_bound(const RobotCell& cell, std::size_t pair, const ProbeResult& from,
+                                 const ProbeResult& to, const StepAxisDistances& axis) {
+  thread_local VertexRouteTerms at_from, at_to;
+  const double limit = axis.radii->coordinate_limit();
+  if (!vertex_route_terms(cell, pair, from, limit, at_from) ||
+      !vertex_route_terms(cell, pair, to, limit, at_to)) {
+    return std::numeric_limits<double>::infinity();
+  }
+  const int joint = cell.hulls()[static_cast<std::size_t>(cell.self_pairs()[pair].b)].link;
+  return vertex_route_bound(at_from, at_to, axis.increments_up[joint - 1]);
+}
+
 namespace {
 
 // allowance / bound, +inf for a bound of 0 with a positive allowance.
@@ -112,7 +127,10 @@ void judge_self_pairs(const RobotCell& cell, const ProbeResult& from, const Prob
     if (cell.hulls()[a].revolution_L) {
       // Either route proves the pair; the step keeps the one with more room.
       any_route = true;
-      const double revolution_bound = revolution_motion_bound(cell, pairs[p], dq, axis);
+      double revolution_bound = revolution_motion_bound(cell, pairs[p], dq, axis);
+      if (axis != nullptr && revolution_bound > 0.0 && has_vertex_route(cell, pairs[p])) {
+        revolution_bound = std::min(revolution_bound, vertex_route_motion_bound(cell, p, from, to, *axis));
+      }
       const double revolution_allowance = allowance_down(from.self_pairs[p].revolution_distance,
                                                          to.self_pairs[p].revolution_distance);
       if (route_ratio(revolution_bound, revolution_allowance) > route_ratio(bound, allowance)) {

@@ -44,6 +44,11 @@ void judge_self_pairs(const RobotCell& cell, const ProbeResult& from, const Prob
 /// proof: proofs/two-ball-cover.md#revolution-route
 double revolution_motion_bound(const RobotCell& cell, const SelfPairHulls& pair,
                                const Eigen::VectorXd& dq, const StepAxisDistances* axis);
+/// \brief The revolution route weighed vertex by vertex (pair index `pair`, with has_vertex_route): M_v
+/// rounded up from both ends' terms, +inf when either end proves no route distance.
+/// proof: proofs/two-ball-cover.md#revolution-vertex-bound
+double vertex_route_motion_bound(const RobotCell& cell, std::size_t pair, const ProbeResult& from,
+                                 const ProbeResult& to, const StepAxisDistances& axis);
 /// Whether the record's bound and allowance of self pair `pair` are the revolution route's.
 bool by_revolution(const TransitionRecord& record, std::size_t pair);
 /// The pair's distance lower bound the route rests on: d, or the solid's d.

@@ -270,8 +270,8 @@ void Checker::check_segment(const SegmentCertificate& segment,
       transitions_->check(*previous, step, previous_radius, radius, previous_placed, placed, cp,
                           where_transition, piece_variation(planned, *previous, step));
       check_self_pair_transition(*cell_, certificate_, *previous, step, previous->to_next,
-                                 transitions_->hull_bounds(), transitions_->self_pair_relative_bounds(),
-                                 transitions_->self_pair_revolution_bounds(), previous_distance,
+                                 transitions_->hull_bounds(), transitions_->self_pair_bounds(),
+                                 previous_distance,
                                  distance, ledger_, facts_, where_transition);
     }
     previous_radius = std::move(radius);

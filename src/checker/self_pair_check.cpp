@@ -93,8 +93,7 @@ void check_self_pair_transition(const CheckedCell& cell, const Certificate& head
                                 const StepCertificate& from, const StepCertificate& to,
                                 const TransitionRecord& claimed,
                                 const std::vector<std::optional<Rational>>& hull_bounds,
-                                const std::vector<Rational>& relative_bounds,
-                                const std::vector<std::optional<Rational>>& revolution_bounds,
+                                const SelfPairBounds& bounds,
                                 const SelfPairDistances& distance_from,
                                 const SelfPairDistances& distance_to, CheckLedger& ledger,
                                 ClaimFacts& facts, const std::string& where) {
@@ -107,8 +106,8 @@ void check_self_pair_transition(const CheckedCell& cell, const Certificate& head
     ledger.decided();
     bool proven = false;
     if (configurations_usable && p < distance_from.relative.size() &&
-        p < distance_to.relative.size() && p < relative_bounds.size()) {
-      Rational bound = relative_bounds[p];
+        p < distance_to.relative.size() && p < bounds.relative.size()) {
+      Rational bound = bounds.relative[p];
       if (a < hull_bounds.size() && b < hull_bounds.size() && hull_bounds[a] && hull_bounds[b] &&
           *hull_bounds[a] + *hull_bounds[b] < bound) {
         bound = *hull_bounds[a] + *hull_bounds[b];
@@ -118,11 +117,16 @@ void check_self_pair_transition(const CheckedCell& cell, const Certificate& head
       proven = bound < d_from + d_to;
       Rational kept = kept_gap(d_from, d_to, bound);
       // proof: proofs/two-ball-cover.md#revolution-route (either route proves the pair)
-      if (p < revolution_bounds.size() && revolution_bounds[p]) {
+      if (p < bounds.revolution.size() && bounds.revolution[p]) {
         const Rational& c_from = distance_from.revolution[p];
         const Rational& c_to = distance_to.revolution[p];
-        proven = proven || *revolution_bounds[p] < c_from + c_to;
-        kept = std::max(kept, kept_gap(c_from, c_to, *revolution_bounds[p]));
+        Rational route = *bounds.revolution[p];
+        // proof: proofs/two-ball-cover.md#revolution-vertex-bound (c > 0: not clamped up to 0)
+        if (p < bounds.vertex.size() && bounds.vertex[p] && c_from > 0 && c_to > 0) {
+          route = std::min(route, *bounds.vertex[p]);
+        }
+        proven = proven || route < c_from + c_to;
+        kept = std::max(kept, kept_gap(c_from, c_to, route));
       }
       hold_gap_to_tolerance(cell, header, p, kept, ledger, facts, where);
     }

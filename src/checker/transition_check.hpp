@@ -15,6 +15,7 @@
 #include "claim_facts.hpp"
 #include "grpvss/evidence/certificate.hpp"
 #include "grpvss/kinematics/forward_kinematics.hpp"
+#include "self_pair_check.hpp"  // SelfPairBounds
 
 namespace grpvss::certify {
 
@@ -36,18 +37,16 @@ class TransitionCheck {
   /// Per hull, the motion bound the last check() proved (>= every point's path length over
   /// the transition); nullopt where none was proven, empty when the record was unusable.
   const std::vector<std::optional<Rational>>& hull_bounds() const { return hull_bounds_; }
-  /// Per self pair (CheckedCell::self_pairs() order), an exact bound on the path of hull b in
-  /// link a's frame over the last check()'s transition: the smaller of the joint-sum bound over
-  /// joints a+1..b and M'_{b|a}, both with the joints' variations on a trajectory piece; empty
-  /// when the record was unusable. proof: proofs/two-ball-cover.md#relative-frame,
-  /// proofs/motion-bound.md#lemma-axis-distance-along-step
-  const std::vector<Rational>& self_pair_relative_bounds() const { return self_pair_relative_bounds_; }
-  /// Per self pair of the last check(): for a pair whose hull a has a verified solid of revolution, hull
-  /// b's bound with joints 1..a+1 frozen (the same two forms); nullopt without one.
-  /// proof: proofs/two-ball-cover.md#revolution-route
-  const std::vector<std::optional<Rational>>& self_pair_revolution_bounds() const {
-    return self_pair_revolution_bounds_;
-  }
+  /// Per self pair (CheckedCell::self_pairs() order), exact bounds over the last check()'s
+  /// transition, by route; empty when the record was unusable:
+  /// - relative: hull b's path in link a's frame, the smaller of the joint-sum bound over joints
+  ///   a+1..b and M'_{b|a}, both with the joints' variations on a trajectory piece
+  ///   (proofs/two-ball-cover.md#relative-frame, proofs/motion-bound.md#lemma-axis-distance-along-step);
+  /// - revolution: for a pair whose hull a has a verified solid of revolution, hull b's bound
+  ///   with joints 1..a+1 frozen (the same two forms; proofs/two-ball-cover.md#revolution-route);
+  /// - vertex: M_v where hull b's own revolute joint is all that moves it relative to that solid
+  ///   (proofs/two-ball-cover.md#revolution-vertex-bound).
+  const SelfPairBounds& self_pair_bounds() const { return self_pair_bounds_; }
 
  private:
   /// Hull b's exact bound with joints 1..frozen held still: the smaller of the joint sum over
@@ -55,6 +54,19 @@ class TransitionCheck {
   /// proofs/motion-bound.md#lemma-axis-distance-along-step).
   Rational frozen_bound(const CheckedHull& hull_b, const std::vector<Rational>& increments,
                         int frozen) const;
+  /// M_v of self pair p exactly: max(0, max_v (V_b min(D_k(v), D_k+1(v)) - min(e_k(v), e_k+1(v))))
+  /// from the pair's witnesses at both ends and hull b's placed vertices; nullopt when the pair
+  /// has no vertex route or a witness is unusable. proof: proofs/two-ball-cover.md#revolution-vertex-bound
+  std::optional<Rational> vertex_route_bound(std::size_t p, const StepCertificate& from,
+                                             const StepCertificate& to,
+                                             const std::vector<Eigen::Vector3d>& placed_from,
+                                             const std::vector<Eigen::Vector3d>& placed_to,
+                                             const Rational& increment) const;
+  /// D(v) at one end: |v - o - s z| + placement_error for the placed vertex v and the axis of
+  /// `joint`, exactly (rounded up to a double only at the root).
+  /// proof: proofs/motion-bound.md#axis-distance-evaluation
+  Rational vertex_axis_distance(const kinematics::Workspace& frames, const Eigen::Vector3d& placed,
+                                int joint) const;
   /// The exact joint-sum bound M_h of the hull over the transition; with `joint_variation`
   /// (a joint trajectory's piece: the exact variation bound per joint) in place of |dq|.
   /// proof: proofs/joint-variation.md#theorem-variation-motion-bound
@@ -88,8 +100,7 @@ class TransitionCheck {
   ClaimFacts& facts_;
   MotionClearances& clearances_;
   std::vector<std::optional<Rational>> hull_bounds_;
-  std::vector<Rational> self_pair_relative_bounds_;
-  std::vector<std::optional<Rational>> self_pair_revolution_bounds_;
+  SelfPairBounds self_pair_bounds_;
   kinematics::Workspace from_frames_, to_frames_;  ///< this checker's own FK at both ends
 };
 
