@@ -33,14 +33,6 @@ using Points = std::vector<Eigen::Vector3d>;
 using geometry::RevolutionRing;
 using geometry::RevolutionSolid;
 
-const std::string kCells = std::string(GRPVSS_SOURCE_DIR) + "/tests/data/cells/";
-
-RobotCell ur5e_cell(const cell::LoadedCell& loaded) {
-  CellSettings settings;
-  settings.tolerance = loaded.tolerance;
-  return RobotCell(loaded.robot, loaded.environment, settings);
-}
-
 geometry::JointAxisLine_L next_axis(const RobotCell& cell, const LinkHull& hull) {
   const kinematics::ChainJoint& next = cell.chain().joints[static_cast<std::size_t>(hull.link)];
   return geometry::joint_axis_line(next.X_PJ, next.X_PJ_error.rotation, next.X_PJ_error.translation);
@@ -57,8 +49,8 @@ Points prism(int sides) {
 }
 
 TEST(RevolutionSolid, TheUr5eBaseIsEnclosedTightlyAndTheCheckerDecidesItExactly) {
-  const cell::LoadedCell loaded = cell::load_cell(kCells + "ur5e-self.yaml");
-  const RobotCell cell = ur5e_cell(loaded);
+  const cell::LoadedCell loaded = test::load_test_cell("ur5e-self.yaml");
+  const RobotCell cell = test::certified_cell(loaded);
   int with_solid = 0;
   for (const LinkHull& hull : cell.hulls()) {
     if (!hull.revolution_L) continue;
@@ -185,8 +177,8 @@ TEST(RevolutionSolid, TheSupportBoundHoldsOnSampledPointsAndTheCheckerAgrees) {
 // and the others a little, every base pair the route proves keeps, at every sampled
 // configuration, an exact distance of at least (c_k + c_{k+1} - M')/2 between the true hulls.
 TEST(RevolutionRouteLemma, TheExactDistanceKeepsHalfTheSlackAlongStepsTheRouteProves) {
-  const cell::LoadedCell loaded = cell::load_cell(kCells + "ur5e-self.yaml");
-  const RobotCell cell = ur5e_cell(loaded);
+  const cell::LoadedCell loaded = test::load_test_cell("ur5e-self.yaml");
+  const RobotCell cell = test::certified_cell(loaded);
   CellProbe probe(cell);
   kinematics::Workspace workspace(cell.robot());
   std::mt19937 rng(5);

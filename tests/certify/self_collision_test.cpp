@@ -303,10 +303,8 @@ bool reference_self_contact(const RobotCell& cell, const Eigen::VectorXd& q) {
 // a+1..b only, and no farther than M_b|a; turning the arm about joint 1 alone moves no pair of
 // links 1..6 relative to each other.
 TEST(RelativeMotionLemma, InLinkAsFrameHullBTravelsAtMostItsBoundOverTheJointsBetween) {
-  const cell::LoadedCell loaded = cell::load_cell(kCells + "ur5e-self.yaml");
-  CellSettings settings;
-  settings.tolerance = loaded.tolerance;
-  const RobotCell cell(loaded.robot, loaded.environment, settings);
+  const cell::LoadedCell loaded = test::load_test_cell("ur5e-self.yaml");
+  const RobotCell cell = test::certified_cell(loaded);
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   kinematics::Workspace workspace(cell.robot());
@@ -350,10 +348,8 @@ TEST(RelativeMotionLemma, InLinkAsFrameHullBTravelsAtMostItsBoundOverTheJointsBe
 }
 
 TEST(SelfCollision, TheStepRuleHoldsEachPairToItsRelativeBound) {
-  const cell::LoadedCell loaded = cell::load_cell(kCells + "ur5e-self.yaml");
-  CellSettings settings;
-  settings.tolerance = loaded.tolerance;
-  const RobotCell cell(loaded.robot, loaded.environment, settings);
+  const cell::LoadedCell loaded = test::load_test_cell("ur5e-self.yaml");
+  const RobotCell cell = test::certified_cell(loaded);
   CellProbe probe(cell);
   ProbeResult from, to;
   Eigen::VectorXd q(6);
@@ -399,10 +395,8 @@ TEST(SelfCollision, TheStepRuleHoldsEachPairToItsRelativeBound) {
 // bounds take the joints' variation, as the hulls' do, never the ends' difference (which is 0
 // here). proof: proofs/joint-variation.md#theorem-variation-motion-bound
 TEST(SelfCollision, TheRelativeBoundTakesTheJointVariationOfATrajectoryPiece) {
-  const cell::LoadedCell loaded = cell::load_cell(kCells + "ur5e-self.yaml");
-  CellSettings settings;
-  settings.tolerance = loaded.tolerance;
-  const RobotCell cell(loaded.robot, loaded.environment, settings);
+  const cell::LoadedCell loaded = test::load_test_cell("ur5e-self.yaml");
+  const RobotCell cell = test::certified_cell(loaded);
   CellProbe probe(cell);
   ProbeResult at;
   Eigen::VectorXd q(6);
@@ -432,10 +426,8 @@ TEST(SelfCollision, TheRelativeBoundTakesTheJointVariationOfATrajectoryPiece) {
 // above the sum of the two hulls' radii passed in; empty radii give every pair its closest
 // witness, bit for bit as before the shortcut.
 TEST(SelfCollision, FarPairsAreSettledByTheirBallsAndTheSlabHoldsOnThePlacedHulls) {
-  const cell::LoadedCell loaded = cell::load_cell(kCells + "ur5e-self.yaml");
-  CellSettings settings;
-  settings.tolerance = loaded.tolerance;
-  const RobotCell cell(loaded.robot, loaded.environment, settings);
+  const cell::LoadedCell loaded = test::load_test_cell("ur5e-self.yaml");
+  const RobotCell cell = test::certified_cell(loaded);
   const std::size_t hulls = cell.hulls().size();
   kinematics::Workspace workspace(cell.robot());
   Eigen::VectorXd q(6);

@@ -35,14 +35,6 @@ namespace {
 using Points = std::vector<Eigen::Vector3d>;
 using Vector3l = Eigen::Matrix<long double, 3, 1>;
 
-const std::string kCells = std::string(GRPVSS_SOURCE_DIR) + "/tests/data/cells/";
-
-RobotCell ur5e_cell(const cell::LoadedCell& loaded) {
-  CellSettings settings;
-  settings.tolerance = loaded.tolerance;
-  return RobotCell(loaded.robot, loaded.environment, settings);
-}
-
 // X p in long double (the reference's placement of a link point).
 Vector3l place_long(const Eigen::Isometry3d& X, const Vector3l& p) {
   Vector3l out = X.translation().cast<long double>();
@@ -90,8 +82,8 @@ std::vector<Step> shoulder_steps(int count, unsigned seed) {
 }
 
 TEST(VertexRouteLemma, TheExactDistanceKeepsTheGapAlongStepsTheVertexBoundProves) {
-  const cell::LoadedCell loaded = cell::load_cell(kCells + "ur5e-self.yaml");
-  const RobotCell cell = ur5e_cell(loaded);
+  const cell::LoadedCell loaded = test::load_test_cell("ur5e-self.yaml");
+  const RobotCell cell = test::certified_cell(loaded);
   const StepAxisRadii radii(cell);
   CellProbe probe(cell);
   kinematics::Workspace workspace(cell.robot());

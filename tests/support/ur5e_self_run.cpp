@@ -7,6 +7,16 @@
 
 namespace grpvss::test {
 
+cell::LoadedCell load_test_cell(const std::string& cell_file) {
+  return cell::load_cell(std::string(GRPVSS_SOURCE_DIR) + "/tests/data/cells/" + cell_file);
+}
+
+certify::RobotCell certified_cell(const cell::LoadedCell& loaded) {
+  certify::CellSettings settings;
+  settings.tolerance = loaded.tolerance;
+  return certify::RobotCell(loaded.robot, loaded.environment, settings);
+}
+
 Ur5eSelfInputs load_ur5e_self(const std::string& cell_file, const std::string& path_file) {
   const std::string cells = std::string(GRPVSS_SOURCE_DIR) + "/tests/data/cells/";
   Ur5eSelfInputs inputs{cell::load_cell(cells + cell_file), {}, {}};

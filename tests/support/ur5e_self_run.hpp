@@ -7,6 +7,7 @@
 #include <string>
 
 #include "grpvss/cell/load_cell.hpp"
+#include "grpvss/certify/robot_cell.hpp"
 #include "grpvss/certify/verifier.hpp"
 #include "grpvss/checker/certificate_checker.hpp"
 
@@ -17,6 +18,12 @@ struct Ur5eSelfInputs {
   PathProgram program;
   motion::KinematicsAccess kinematics;
 };
+
+/// tests/data/cells/<cell_file> loaded.
+cell::LoadedCell load_test_cell(const std::string& cell_file);
+
+/// The certified cell of `loaded` at the cell's own tolerance (it keeps pointers into `loaded`).
+certify::RobotCell certified_cell(const cell::LoadedCell& loaded);
 
 /// Both files name files in tests/data/cells/.
 Ur5eSelfInputs load_ur5e_self(const std::string& cell_file, const std::string& path_file);
