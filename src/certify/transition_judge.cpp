@@ -85,14 +85,11 @@ double revolution_motion_bound(const RobotCell& cell, const SelfPairHulls& pair,
 // proof: proofs/two-ball-cover.md#revolution-vertex-bound
 double vertex_route_motion_bound(const RobotCell& cell, std::size_t pair, const ProbeResult& from,
                                  const ProbeResult& to, const StepAxisDistances& axis) {
-  thread_local VertexRouteTerms at_from, at_to;
-  const double limit = axis.radii->coordinate_limit();
-  if (!vertex_route_terms(cell, pair, from, limit, at_from) ||
-      !vertex_route_terms(cell, pair, to, limit, at_to)) {
-    return std::numeric_limits<double>::infinity();
-  }
+  VertexRouteEnd* at_from = vertex_route_end(*axis.radii, pair, from);
+  VertexRouteEnd* at_to = at_from != nullptr ? vertex_route_end(*axis.radii, pair, to) : nullptr;
+  if (at_to == nullptr) return std::numeric_limits<double>::infinity();
   const int joint = cell.hulls()[static_cast<std::size_t>(cell.self_pairs()[pair].b)].link;
-  return vertex_route_bound(at_from, at_to, axis.increments_up[joint - 1]);
+  return vertex_route_bound(*axis.radii, *at_from, *at_to, axis.increments_up[joint - 1]);
 }
 
 namespace {

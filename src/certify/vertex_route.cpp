@@ -1,6 +1,7 @@
 #include "vertex_route.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "grpvss/geometry/directed_rounding.hpp"
@@ -18,68 +19,169 @@ bool has_vertex_route(const RobotCell& cell, const SelfPairHulls& pair) {
          cell.radii().joint_type(b.link) == JointType::kRevolute;
 }
 
-// e(v) = (n.v - o_b) / |n| rounded down (the witness holds n.v >= o_b exactly at every placed
-// vertex, so a negative rounded value stands for 0) and D(v) = |v - o - s z| + eps rounded up.
-// proof: proofs/two-ball-cover.md#revolution-vertex-bound, proofs/motion-bound.md#axis-distance-evaluation
-bool vertex_route_terms(const RobotCell& cell, std::size_t p, const ProbeResult& probe,
-                        double coordinate_limit, VertexRouteTerms& out) {
-  out.excess.clear();
-  out.axis_distance.clear();
+namespace {
+
+// M = 16 u S / N rounded up, S = |n|_1 V + |o_b| with V >= |x|_inf for every placed point x the
+// end evaluates, N >= |n|: (n.x - o_b) / N evaluated in round-to-nearest (any order, with or
+// without FMA), less M, is at most (n.x - o_b) / |n| where that is >= 0. Needs an active
+// UpwardRoundingScope. proof: proofs/two-ball-cover.md#vertex-excess
+double excess_margin_up(const geometry::SeparationWitness& witness, double largest_coordinate,
+                        double normal_length_up) {
+  const double unit_roundoff = std::numeric_limits<double>::epsilon() / 2.0;
+  const double normal_1 = r::add_up(r::add_up(std::fabs(witness.normal[0]), std::fabs(witness.normal[1])),
+                                    std::fabs(witness.normal[2]));
+  const double sum = r::add_up(r::mul_up(normal_1, largest_coordinate), std::fabs(witness.offset_b));
+  return r::mul_up(r::mul_up(16.0, unit_roundoff), r::div_up(sum, normal_length_up));
+}
+
+// |fl(X v)|_inf <= |t|_inf + 3.01 max|v|_inf for a rotation X (|R_ij| <= 1 + 1e-9): the placed
+// points of a hull whose link-frame coordinates are at most `largest_L`.
+double placed_coordinate_bound_up(const Eigen::Isometry3d& X, double largest_L) {
+  r::UpwardRoundingScope upward;
+  return r::add_up(X.translation().cwiseAbs().maxCoeff(), r::mul_up(3.01, largest_L));
+}
+
+}  // namespace
+
+bool VertexRouteEnd::reset(const StepAxisRadii& radii, std::size_t p, const ProbeResult& probe) {
+  const RobotCell& cell = radii.cell();
+  radii_ = &radii;
+  pair_ = p;
+  q_ = probe.q;
+  usable_ = false;
+  cluster_excess_.clear();
   if (p >= probe.self_pairs.size()) return false;
   const SelfPairEvidence& evidence = probe.self_pairs[p];
   // c_k = lambda - 2 eps unclamped: a distance clamped up to 0 would not bound dist - e.
   if (!evidence.separated || !(evidence.revolution_distance > 0.0)) return false;
-  const LinkHull& b = cell.hulls()[static_cast<std::size_t>(cell.self_pairs()[p].b)];
-  const auto joint = static_cast<std::size_t>(b.link);
-  if (probe.X_WJ.size() < joint || probe.X_WL.size() <= joint) return false;
-  thread_local std::vector<Eigen::Vector3d> placed_W;
-  thread_local std::vector<double> parameters;
-  kinematics::place_points(probe.X_WL[joint], b.raw_L, placed_W);
-  const Eigen::Isometry3d& X_WJ = probe.X_WJ[joint - 1];
-  const Eigen::Vector3d o_W = X_WJ.translation();
-  const Eigen::Vector3d z_W = X_WJ.linear().col(2);
-  parameters.resize(placed_W.size());
-  for (std::size_t i = 0; i < placed_W.size(); ++i) {
-    // Near the foot of the perpendicular, within the FK bound's reach (any |s| <= L is sound).
-    parameters[i] = std::clamp(z_W.dot(placed_W[i] - o_W), -coordinate_limit, coordinate_limit);
+  hull_ = cell.self_pairs()[p].b;
+  const LinkHull& b = cell.hulls()[static_cast<std::size_t>(hull_)];
+  const std::vector<geometry::VertexCluster>& clusters = radii.clusters(hull_);
+  if (probe.X_WL.size() <= static_cast<std::size_t>(b.link) || clusters.empty() ||
+      radii.own_axis_distances(hull_).size() != b.raw_L.size()) {
+    return false;
   }
-  const geometry::SeparationWitness& witness = evidence.witness;
-  out.excess.resize(placed_W.size());
-  out.axis_distance.resize(placed_W.size());
-  r::UpwardRoundingScope upward;
-  const double normal_length_up = r::sqrt_up(r::dot_up(witness.normal.data(), witness.normal.data()));
-  for (std::size_t i = 0; i < placed_W.size(); ++i) {
-    const double beyond = r::sub_down(r::dot_down(witness.normal.data(), placed_W[i].data()), witness.offset_b);
-    out.excess[i] = beyond > 0.0 ? r::div_down(beyond, normal_length_up) : 0.0;
-    out.axis_distance[i] = r::add_up(axis_point_distance_up(placed_W[i], o_W, z_W, parameters[i]),
-                                     cell.placement_error());
+  X_WL_ = probe.X_WL[static_cast<std::size_t>(b.link)];
+  witness_ = evidence.witness;
+  double largest_L = 0.0;  // the vertices' and the clusters' centres' (inside their box)
+  for (const Eigen::Vector3d& v : b.raw_L) largest_L = std::max(largest_L, v.cwiseAbs().maxCoeff());
+  const double largest_coordinate = placed_coordinate_bound_up(X_WL_, largest_L);
+  {
+    r::UpwardRoundingScope upward;
+    normal_length_up_ = r::sqrt_up(r::dot_up(witness_.normal.data(), witness_.normal.data()));
+    margin_ = excess_margin_up(witness_, largest_coordinate, normal_length_up_);
   }
+  thread_local std::vector<Eigen::Vector3d> centers_W;
+  kinematics::place_points(X_WL_, radii.cluster_centers(hull_), centers_W);
+  cluster_excess_.resize(clusters.size());
+  for (std::size_t i = 0; i < clusters.size(); ++i) {
+    // The ball's vertices are within its radius of the centre, placed or not
+    // (proofs/two-ball-cover.md#vertex-excess).
+    cluster_excess_[i] = excess_of(centers_W[i], clusters[i].radius_up);
+  }
+  evaluated_.assign(clusters.size(), 0);
+  vertex_excess_.resize(b.raw_L.size());
+  usable_ = true;
   return true;
 }
 
-// proof: proofs/two-ball-cover.md#revolution-vertex-bound
-double vertex_route_bound(const VertexRouteTerms& from, const VertexRouteTerms& to,
-                          double increment_up) {
-  if (from.excess.empty() || from.excess.size() != to.excess.size()) {
-    return std::numeric_limits<double>::infinity();
-  }
-  r::UpwardRoundingScope upward;
-  double bound = 0.0;
-  for (std::size_t i = 0; i < from.excess.size(); ++i) {
-    // D(v) is the same at every configuration (the arc is about b's own axis): either end bounds it.
-    const double arc = r::mul_up(increment_up, std::min(from.axis_distance[i], to.axis_distance[i]));
-    bound = std::max(bound, r::sub_up(arc, std::min(from.excess[i], to.excess[i])));
-  }
-  return bound;
+double VertexRouteEnd::excess_of(const Eigen::Vector3d& placed_W, double radius) const {
+  // Round-to-nearest: the margin covers the rounding, and the radius is taken off with room to
+  // spare (a negative result stands for 0: every vertex's exact e is >= 0).
+  const double excess = (witness_.normal.dot(placed_W) - witness_.offset_b) / normal_length_up_ - margin_ -
+                        radius * (1.0 + 4.0 * std::numeric_limits<double>::epsilon());
+  return excess > 0.0 ? excess : 0.0;
 }
 
-double vertex_route_proposal_radius(const VertexRouteTerms& at, double route_distance) {
-  const double both_ends = 2.0 * route_distance;
-  double radius = 0.0;
-  for (std::size_t i = 0; i < at.excess.size(); ++i) {
-    radius = std::max(radius, at.axis_distance[i] * both_ends / (both_ends + at.excess[i]));
+void VertexRouteEnd::evaluate(std::size_t cluster) {
+  if (evaluated_[cluster]) return;
+  evaluated_[cluster] = 1;
+  const std::vector<int>& members = radii_->clusters(hull_)[cluster].members;
+  const LinkHull& b = radii_->cell().hulls()[static_cast<std::size_t>(hull_)];
+  for (const int v : members) {
+    // One vertex as place_points places it (the FK bound covers any summation order).
+    const Eigen::Vector3d placed_W = X_WL_ * b.raw_L[static_cast<std::size_t>(v)];
+    vertex_excess_[static_cast<std::size_t>(v)] = excess_of(placed_W, 0.0);
   }
-  return radius;
+}
+
+VertexRouteEnd* vertex_route_end(const StepAxisRadii& radii, std::size_t p, const ProbeResult& probe) {
+  constexpr std::size_t kKept = 6;
+  thread_local std::vector<VertexRouteEnd> kept(kKept);
+  thread_local std::vector<unsigned long> last_use(kKept, 0);
+  thread_local unsigned long clock = 0;
+  ++clock;
+  std::size_t oldest = 0;
+  for (std::size_t i = 0; i < kKept; ++i) {
+    if (kept[i].is_for(radii, p, probe.q)) {
+      last_use[i] = clock;
+      return kept[i].usable() ? &kept[i] : nullptr;
+    }
+    if (last_use[i] < last_use[oldest]) oldest = i;
+  }
+  last_use[oldest] = clock;
+  return kept[oldest].reset(radii, p, probe) ? &kept[oldest] : nullptr;
+}
+
+namespace {
+
+// Branch and bound: the largest value(v) over the vertices (at least 0), where bound(i) >=
+// value(v) for every vertex v of cluster i; `evaluate(i)` readies cluster i's vertices.
+template <typename ClusterBound, typename Evaluate, typename Value>
+double largest_over_vertices(const std::vector<geometry::VertexCluster>& clusters, ClusterBound bound,
+                             Evaluate evaluate, Value value) {
+  thread_local std::vector<std::pair<double, std::size_t>> order;
+  order.clear();
+  for (std::size_t i = 0; i < clusters.size(); ++i) order.emplace_back(bound(i), i);
+  std::sort(order.begin(), order.end(), [](const auto& x, const auto& y) { return x.first > y.first; });
+  double best = 0.0;
+  for (const auto& [cluster_bound, i] : order) {
+    if (!(cluster_bound > best)) break;  // no vertex of this or any later cluster does better
+    evaluate(i);
+    for (const int v : clusters[i].members) best = std::max(best, value(v));
+  }
+  return best;
+}
+
+}  // namespace
+
+// proof: proofs/two-ball-cover.md#revolution-vertex-bound
+double vertex_route_bound(const StepAxisRadii& radii, VertexRouteEnd& from, VertexRouteEnd& to,
+                          double increment_up) {
+  if (from.hull() != to.hull() || from.cluster_count() == 0 || from.cluster_count() != to.cluster_count()) {
+    return std::numeric_limits<double>::infinity();
+  }
+  const std::vector<double>& axis_distance = radii.own_axis_distances(from.hull());
+  const std::vector<double>& cluster_axis_distance = radii.cluster_own_axis_distances(from.hull());
+  r::UpwardRoundingScope upward;
+  // A cluster's largest D less its least e bounds each of its vertices' charge.
+  return largest_over_vertices(
+      radii.clusters(from.hull()),
+      [&](std::size_t i) {
+        return r::sub_up(r::mul_up(increment_up, cluster_axis_distance[i]),
+                         std::min(from.cluster_excess(i), to.cluster_excess(i)));
+      },
+      [&](std::size_t i) {
+        from.evaluate(i);
+        to.evaluate(i);
+      },
+      [&](int v) {
+        return r::sub_up(r::mul_up(increment_up, axis_distance[static_cast<std::size_t>(v)]),
+                         std::min(from.vertex_excess(v), to.vertex_excess(v)));
+      });
+}
+
+double vertex_route_proposal_radius(const StepAxisRadii& radii, VertexRouteEnd& at, double route_distance) {
+  const double both_ends = 2.0 * route_distance;
+  const std::vector<double>& axis_distance = radii.own_axis_distances(at.hull());
+  const std::vector<double>& cluster_axis_distance = radii.cluster_own_axis_distances(at.hull());
+  return largest_over_vertices(
+      radii.clusters(at.hull()),
+      [&](std::size_t i) { return cluster_axis_distance[i] * both_ends / (both_ends + at.cluster_excess(i)); },
+      [&](std::size_t i) { at.evaluate(i); },
+      [&](int v) {
+        return axis_distance[static_cast<std::size_t>(v)] * both_ends / (both_ends + at.vertex_excess(v));
+      });
 }
 
 }  // namespace grpvss::certify

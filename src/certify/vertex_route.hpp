@@ -1,7 +1,10 @@
 #pragma once
 // The revolution route weighed vertex by vertex: when only hull b's own joint moves it relative to
 // hull a's solid of revolution, each vertex's arc is charged against that vertex's own clearance
-// beyond the witness's plane, not the hull's farthest point against the nearest one.
+// beyond the witness's plane, not the hull's farthest point against the nearest one. The largest
+// charge over hundreds of vertices is found by branch and bound over a few vertex clusters
+// (geometry::cluster_vertices): a cluster's ball bounds its vertices' terms, and only the
+// clusters that might hold the largest are placed vertex by vertex.
 // proof: proofs/two-ball-cover.md#revolution-vertex-bound
 
 #include <vector>
@@ -13,31 +16,66 @@
 
 namespace grpvss::certify {
 
-/// Per vertex of hull b at one configuration: its clearance beyond the pair witness's plane on
-/// b's side (rounded down, >= 0) and its distance from hull b's own joint axis (rounded up).
-struct VertexRouteTerms {
-  std::vector<double> excess;
-  std::vector<double> axis_distance;
-};
+class StepAxisRadii;
 
 /// Whether pair `pair` may take the vertex bound: hull a has a solid of revolution (joint a+1
 /// frozen) and the only joint left between them, b's own, is revolute (link b = link a + 2).
 bool has_vertex_route(const RobotCell& cell, const SelfPairHulls& pair);
 
-/// The terms of pair `p` (a pair with has_vertex_route) at `probe`; false, with `out` left
-/// empty, when the probe proves no route distance for it (no witness or c = 0) or kept no frames.
-/// \param coordinate_limit L, the largest |coordinate| of any hull vertex (the axis parameter's range)
-bool vertex_route_terms(const RobotCell& cell, std::size_t p, const ProbeResult& probe,
-                        double coordinate_limit, VertexRouteTerms& out);
+/// \brief One end (probe) of a pair's vertex bound: e, lower bounds (>= 0) of hull b's vertices'
+/// clearance beyond the pair witness's plane on b's side, per cluster at reset and per vertex once
+/// its cluster is evaluated. The vertices' distances from b's own axis never change: they are
+/// StepAxisRadii's (own_axis_distances).
+class VertexRouteEnd {
+ public:
+  /// The cluster bounds of pair `p` (with has_vertex_route) at `probe`; false when the probe
+  /// proves no route distance for the pair (no witness, or c = 0) or kept no frames.
+  bool reset(const StepAxisRadii& radii, std::size_t p, const ProbeResult& probe);
+  /// Whether this end was reset for (radii, p) at configuration q, and with what result.
+  bool is_for(const StepAxisRadii& radii, std::size_t p, const Eigen::VectorXd& q) const {
+    return radii_ == &radii && pair_ == p && q_.size() == q.size() && q_ == q;
+  }
+  bool usable() const { return usable_; }
 
-/// M_v = max(0, max_v (V_b min(D_k(v), D_k+1(v)) - min(e_k(v), e_k+1(v)))) rounded up, for
-/// `increment_up` >= the variation V_b of hull b's joint. It stands in for the route's M' in both
-/// the step rule and the kept gap.
-double vertex_route_bound(const VertexRouteTerms& from, const VertexRouteTerms& to,
+  int hull() const { return hull_; }
+  std::size_t cluster_count() const { return cluster_excess_.size(); }
+  /// A lower bound of e over the cluster's vertices.
+  double cluster_excess(std::size_t cluster) const { return cluster_excess_[cluster]; }
+  /// Places the vertices of `cluster` and evaluates their e (once per reset).
+  void evaluate(std::size_t cluster);
+  double vertex_excess(int vertex) const { return vertex_excess_[static_cast<std::size_t>(vertex)]; }
+
+ private:
+  /// e of a placed point, less `radius`, at least 0 (round-to-nearest less the margin).
+  double excess_of(const Eigen::Vector3d& placed_W, double radius) const;
+
+  const StepAxisRadii* radii_ = nullptr;
+  std::size_t pair_ = 0;
+  Eigen::VectorXd q_;
+  bool usable_ = false;
+  int hull_ = 0;
+  Eigen::Isometry3d X_WL_ = Eigen::Isometry3d::Identity();  ///< hull b's link at this end
+  geometry::SeparationWitness witness_;
+  double normal_length_up_ = 0.0;
+  double margin_ = 0.0;  ///< round-off allowance of e (proofs/two-ball-cover.md#vertex-excess)
+  std::vector<double> cluster_excess_;
+  std::vector<char> evaluated_;
+  std::vector<double> vertex_excess_;
+};
+
+/// The end of pair `p` at `probe`, reset or taken from a few kept ones (the march asks for the
+/// same ends in its proposal and in each trial from a step); nullptr when the probe proves no
+/// route distance for the pair. Valid until five more ends are asked for.
+VertexRouteEnd* vertex_route_end(const StepAxisRadii& radii, std::size_t p, const ProbeResult& probe);
+
+/// M_v = max(0, max_v (V_b D(v) - min(e_k(v), e_k+1(v)))) rounded up, for `increment_up` >=
+/// the variation V_b of hull b's joint. It stands in for the route's M' in both the step rule and
+/// the kept gap.
+double vertex_route_bound(const StepAxisRadii& radii, VertexRouteEnd& from, VertexRouteEnd& to,
                           double increment_up);
 
 /// For proposals only (plain double): the weight r of b's joint with which "V_b r < 2 c" is
 /// "V_b D(v) - e(v) < 2 c for every vertex", the ends assumed alike: max_v D(v) 2c / (2c + e(v)).
-double vertex_route_proposal_radius(const VertexRouteTerms& at, double route_distance);
+double vertex_route_proposal_radius(const StepAxisRadii& radii, VertexRouteEnd& at, double route_distance);
 
 }  // namespace grpvss::certify

@@ -121,9 +121,12 @@ void check_self_pair_transition(const CheckedCell& cell, const Certificate& head
         const Rational& c_from = distance_from.revolution[p];
         const Rational& c_to = distance_to.revolution[p];
         Rational route = *bounds.revolution[p];
-        // proof: proofs/two-ball-cover.md#revolution-vertex-bound (c > 0: not clamped up to 0)
-        if (p < bounds.vertex.size() && bounds.vertex[p] && c_from > 0 && c_to > 0) {
-          route = std::min(route, *bounds.vertex[p]);
+        // M_v only where the other routes leave the pair unproven or short of the tolerance
+        // (c > 0: not clamped up to 0). proof: proofs/two-ball-cover.md#revolution-vertex-bound
+        const bool needed = !(proven || route < c_from + c_to) ||
+                            std::max(kept, kept_gap(c_from, c_to, route)) < exact(header.tolerance);
+        if (needed && bounds.vertex && c_from > 0 && c_to > 0) {
+          if (const std::optional<Rational> vertex = bounds.vertex(p)) route = std::min(route, *vertex);
         }
         proven = proven || route < c_from + c_to;
         kept = std::max(kept, kept_gap(c_from, c_to, route));

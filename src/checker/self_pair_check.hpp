@@ -5,6 +5,7 @@
 // `motion` the gap kept along the motion against the tolerance.
 // proof: proofs/two-ball-cover.md#lemma-relative-motion, proofs/cell-geometry.md#lemma-geometry-error
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -31,9 +32,10 @@ struct SelfPairBounds {
   /// M_b|a+1 for a pair whose hull a has a verified solid of revolution, else nullopt
   /// (proofs/two-ball-cover.md#revolution-route)
   std::vector<std::optional<Rational>> revolution;
-  /// The revolution route weighed vertex by vertex, M_v, where the pair has it; it holds only
-  /// with both ends' route distances c > 0 unclamped (proofs/two-ball-cover.md#revolution-vertex-bound)
-  std::vector<std::optional<Rational>> vertex;
+  /// The revolution route weighed vertex by vertex, M_v of pair p, decided on demand (it costs
+  /// a pass over hull b's vertices); nullopt where the pair has none. It holds only with both
+  /// ends' route distances c > 0 unclamped (proofs/two-ball-cover.md#revolution-vertex-bound).
+  std::function<std::optional<Rational>(std::size_t)> vertex;
 };
 
 /// \brief The self pairs' verified distances at `step`. `placed_raw[i]`: hull i's raw

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include <fmt/core.h>
 
@@ -16,7 +17,8 @@ TransitionCheck::TransitionCheck(const CheckedCell& cell, const Certificate& hea
       facts_(facts),
       clearances_(clearances),
       from_frames_(cell.robot()),
-      to_frames_(cell.robot()) {}
+      to_frames_(cell.robot()),
+      vertex_route_(cell, header) {}
 
 void TransitionCheck::check(const StepCertificate& from, const StepCertificate& to,
                             const std::vector<Rational>& radius_from,
@@ -94,8 +96,7 @@ void TransitionCheck::check(const StepCertificate& from, const StepCertificate& 
     }
   }
   if (!certified) facts_.all_transitions_certified = false;
-  for (std::size_t p = 0; p < cell_.self_pairs().size(); ++p) {
-    const auto [a, b] = cell_.self_pairs()[p];
+  for (const auto& [a, b] : cell_.self_pairs()) {
     const CheckedHull& hull_a = hulls[static_cast<std::size_t>(a)];
     const CheckedHull& hull_b = hulls[static_cast<std::size_t>(b)];
     // Joints 1..a move link a's frame, not b in it. proof: proofs/two-ball-cover.md#relative-frame
@@ -105,87 +106,23 @@ void TransitionCheck::check(const StepCertificate& from, const StepCertificate& 
     self_pair_bounds_.revolution.push_back(
         hull_a.revolution_L ? std::optional<Rational>(frozen_bound(hull_b, increments, hull_a.link + 1))
                             : std::nullopt);
-    const bool own_joint_only = hull_a.revolution_L && hull_b.link == hull_a.link + 2 &&
-                                hull_b.link <= joints && static_cast<std::size_t>(b) < placed_from.size() &&
-                                static_cast<std::size_t>(b) < placed_to.size() &&
-                                cell_.robot().joints[static_cast<std::size_t>(hull_b.link - 1)].type ==
-                                    JointType::kRevolute;
-    self_pair_bounds_.vertex.push_back(
-        own_joint_only ? vertex_route_bound(p, from, to, placed_from[static_cast<std::size_t>(b)],
-                                            placed_to[static_cast<std::size_t>(b)],
-                                            increments[static_cast<std::size_t>(hull_b.link - 1)])
-                       : std::nullopt);
   }
+  // M_v is decided only for the pairs whose other routes leave it needed (check_self_pair_transition).
+  const auto increments_kept = std::make_shared<std::vector<Rational>>(increments);
+  self_pair_bounds_.vertex = [this, &from, &to, &placed_from, &placed_to,
+                              increments_kept](std::size_t p) -> std::optional<Rational> {
+    const int b = cell_.self_pairs()[p].second;
+    const auto link = static_cast<std::size_t>(cell_.hulls()[static_cast<std::size_t>(b)].link);
+    if (p >= from.self_pairs.size() || p >= to.self_pairs.size() || static_cast<std::size_t>(b) >= placed_from.size() ||
+        static_cast<std::size_t>(b) >= placed_to.size() || link < 1 || link > increments_kept->size()) {
+      return std::nullopt;
+    }
+    return vertex_route_.bound(p, from.self_pairs[p], to.self_pairs[p], from_frames_.X_WL[link],
+                               to_frames_.X_WL[link], placed_from[static_cast<std::size_t>(b)],
+                               placed_to[static_cast<std::size_t>(b)], (*increments_kept)[link - 1]);
+  };
 }
 
-namespace {
-
-// e(v) = (n.v - o_b) / N at every placed vertex, N >= |n| (a lower bound of v's clearance beyond
-// the witness's plane); nullopt for an unusable witness or a vertex on the wrong side.
-std::optional<std::vector<Rational>> vertex_excess(const geometry::SeparationWitness& witness,
-                                                   const std::vector<Eigen::Vector3d>& placed) {
-  if (!witness.normal.allFinite() || witness.normal.isZero(0.0) || !std::isfinite(witness.offset_b)) {
-    return std::nullopt;
-  }
-  Rational normal_square = 0;
-  for (int k = 0; k < 3; ++k) normal_square += exact(witness.normal[k]) * exact(witness.normal[k]);
-  const Rational normal_length_up(root_up(normal_square));
-  const Rational offset = exact(witness.offset_b);
-  std::vector<Rational> excess;
-  excess.reserve(placed.size());
-  for (const Eigen::Vector3d& v : placed) {
-    if (!v.allFinite()) return std::nullopt;
-    Rational beyond = -offset;
-    for (int k = 0; k < 3; ++k) beyond += exact(witness.normal[k]) * exact(v[k]);
-    if (beyond < 0) return std::nullopt;
-    excess.push_back(beyond / normal_length_up);
-  }
-  return excess;
-}
-
-}  // namespace
-
-// proof: proofs/two-ball-cover.md#revolution-vertex-bound
-std::optional<Rational> TransitionCheck::vertex_route_bound(
-    std::size_t p, const StepCertificate& from, const StepCertificate& to,
-    const std::vector<Eigen::Vector3d>& placed_from, const std::vector<Eigen::Vector3d>& placed_to,
-    const Rational& increment) const {
-  if (p >= from.self_pairs.size() || p >= to.self_pairs.size()) return std::nullopt;
-  const SelfPairRecord& pair_from = from.self_pairs[p];
-  const SelfPairRecord& pair_to = to.self_pairs[p];
-  if (!pair_from.separated || !pair_to.separated || placed_from.empty() ||
-      placed_from.size() != placed_to.size()) {
-    return std::nullopt;
-  }
-  const std::optional<std::vector<Rational>> excess_from = vertex_excess(pair_from.witness, placed_from);
-  const std::optional<std::vector<Rational>> excess_to = vertex_excess(pair_to.witness, placed_to);
-  if (!excess_from || !excess_to) return std::nullopt;
-  const int joint = cell_.hulls()[static_cast<std::size_t>(cell_.self_pairs()[p].second)].link;
-  Rational bound = 0;
-  for (std::size_t v = 0; v < placed_from.size(); ++v) {
-    // D(v) does not change with b's own joint: either end bounds it.
-    const Rational axis_distance = std::min(vertex_axis_distance(from_frames_, placed_from[v], joint),
-                                            vertex_axis_distance(to_frames_, placed_to[v], joint));
-    const Rational charged = increment * axis_distance - std::min((*excess_from)[v], (*excess_to)[v]);
-    if (charged > bound) bound = charged;
-  }
-  return bound;
-}
-
-Rational TransitionCheck::vertex_axis_distance(const kinematics::Workspace& frames,
-                                               const Eigen::Vector3d& placed, int joint) const {
-  const Eigen::Isometry3d& X_WJ = frames.X_WJ[static_cast<std::size_t>(joint - 1)];
-  const Eigen::Vector3d o = X_WJ.translation();
-  const Eigen::Vector3d z = X_WJ.linear().col(2);
-  const double limit = cell_.hull_coordinate_limit();
-  const double s = std::clamp(z.dot(placed - o), -limit, limit);  // any |s| <= L is sound
-  Rational square = 0;
-  for (int k = 0; k < 3; ++k) {
-    const Rational d = exact(placed[k]) - exact(o[k]) - exact(s) * exact(z[k]);
-    square += d * d;
-  }
-  return Rational(root_up(square)) + exact(header_.placement_error);
-}
 
 // The smaller of the joint-sum bound and M'_h of hull b with joints 1..frozen held still.
 Rational TransitionCheck::frozen_bound(const CheckedHull& hull_b,

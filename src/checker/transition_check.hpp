@@ -16,6 +16,7 @@
 #include "grpvss/evidence/certificate.hpp"
 #include "grpvss/kinematics/forward_kinematics.hpp"
 #include "self_pair_check.hpp"  // SelfPairBounds
+#include "vertex_route_check.hpp"
 
 namespace grpvss::certify {
 
@@ -44,8 +45,9 @@ class TransitionCheck {
   ///   (proofs/two-ball-cover.md#relative-frame, proofs/motion-bound.md#lemma-axis-distance-along-step);
   /// - revolution: for a pair whose hull a has a verified solid of revolution, hull b's bound
   ///   with joints 1..a+1 frozen (the same two forms; proofs/two-ball-cover.md#revolution-route);
-  /// - vertex: M_v where hull b's own revolute joint is all that moves it relative to that solid
-  ///   (proofs/two-ball-cover.md#revolution-vertex-bound).
+  /// - vertex: M_v, on demand, where hull b's own revolute joint is all that moves it relative to
+  ///   that solid (proofs/two-ball-cover.md#revolution-vertex-bound); it reads the arguments of
+  ///   the last check(), which must still be alive.
   const SelfPairBounds& self_pair_bounds() const { return self_pair_bounds_; }
 
  private:
@@ -54,19 +56,6 @@ class TransitionCheck {
   /// proofs/motion-bound.md#lemma-axis-distance-along-step).
   Rational frozen_bound(const CheckedHull& hull_b, const std::vector<Rational>& increments,
                         int frozen) const;
-  /// M_v of self pair p exactly: max(0, max_v (V_b min(D_k(v), D_k+1(v)) - min(e_k(v), e_k+1(v))))
-  /// from the pair's witnesses at both ends and hull b's placed vertices; nullopt when the pair
-  /// has no vertex route or a witness is unusable. proof: proofs/two-ball-cover.md#revolution-vertex-bound
-  std::optional<Rational> vertex_route_bound(std::size_t p, const StepCertificate& from,
-                                             const StepCertificate& to,
-                                             const std::vector<Eigen::Vector3d>& placed_from,
-                                             const std::vector<Eigen::Vector3d>& placed_to,
-                                             const Rational& increment) const;
-  /// D(v) at one end: |v - o - s z| + placement_error for the placed vertex v and the axis of
-  /// `joint`, exactly (rounded up to a double only at the root).
-  /// proof: proofs/motion-bound.md#axis-distance-evaluation
-  Rational vertex_axis_distance(const kinematics::Workspace& frames, const Eigen::Vector3d& placed,
-                                int joint) const;
   /// The exact joint-sum bound M_h of the hull over the transition; with `joint_variation`
   /// (a joint trajectory's piece: the exact variation bound per joint) in place of |dq|.
   /// proof: proofs/joint-variation.md#theorem-variation-motion-bound
@@ -101,6 +90,7 @@ class TransitionCheck {
   MotionClearances& clearances_;
   std::vector<std::optional<Rational>> hull_bounds_;
   SelfPairBounds self_pair_bounds_;
+  VertexRouteCheck vertex_route_;
   kinematics::Workspace from_frames_, to_frames_;  ///< this checker's own FK at both ends
 };
 

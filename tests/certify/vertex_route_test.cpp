@@ -203,8 +203,9 @@ TEST(VertexRoute, TheCheckerFormsItExactlyFromTheCertificateAndRefusesAWitnessOn
       const std::vector<Points> placed_to = placed_hulls(to_frames);
       transitions.check(from, to, no_radius, no_radius, placed_from, placed_to, false, "t");
       const SelfPairBounds& bounds = transitions.self_pair_bounds();
-      for (std::size_t p = 0; p < bounds.vertex.size(); ++p) {
-        if (!bounds.vertex[p]) continue;
+      for (std::size_t p = 0; p < cell->self_pairs().size(); ++p) {
+        const std::optional<Rational> vertex_bound = bounds.vertex(p);
+        if (!vertex_bound) continue;
         const int b = cell->self_pairs()[p].second;
         const int joint = cell->hulls()[static_cast<std::size_t>(b)].link;
         const long double variation = std::fabs(static_cast<long double>(to.q[joint - 1]) - from.q[joint - 1]);
@@ -219,19 +220,19 @@ TEST(VertexRoute, TheCheckerFormsItExactlyFromTheCertificateAndRefusesAWitnessOn
                                               excess_long(to.self_pairs[p].witness, at_to));
           reference = std::max(reference, variation * rho - excess);
         }
-        const long double exact_bound = bounds.vertex[p]->get_d();
+        const long double exact_bound = vertex_bound->get_d();
         EXPECT_GE(exact_bound, reference - 1e-15L) << "step " << from.step << " pair " << p;
         EXPECT_LE(exact_bound, reference + variation * 1e-9L + 1e-15L) << "step " << from.step;
         ++compared;
-        if (bounds.revolution[p] && *bounds.vertex[p] < *bounds.revolution[p]) ++below_the_route;
+        if (bounds.revolution[p] && *vertex_bound < *bounds.revolution[p]) ++below_the_route;
         if (refused) continue;
         // A witness whose plane passes beyond one of hull b's vertices gives no excess: refused.
         to.self_pairs[p].witness.offset_b += 1.0;
         transitions.check(from, to, no_radius, no_radius, placed_from, placed_to, false, "t");
-        EXPECT_FALSE(transitions.self_pair_bounds().vertex[p].has_value());
+        EXPECT_FALSE(transitions.self_pair_bounds().vertex(p).has_value());
         to.self_pairs[p].witness.offset_b = std::numeric_limits<double>::infinity();
         transitions.check(from, to, no_radius, no_radius, placed_from, placed_to, false, "t");
-        EXPECT_FALSE(transitions.self_pair_bounds().vertex[p].has_value());
+        EXPECT_FALSE(transitions.self_pair_bounds().vertex(p).has_value());
         refused = true;
       }
     }
@@ -239,6 +240,49 @@ TEST(VertexRoute, TheCheckerFormsItExactlyFromTheCertificateAndRefusesAWitnessOn
   EXPECT_EQ(compared, 26);         // transitions with both ends' witnesses usable
   EXPECT_EQ(below_the_route, 24);  // where M_v is the smaller route bound
   EXPECT_TRUE(refused);
+}
+
+// The round-off margin of e (proofs/two-ball-cover.md#vertex-excess): every vertex's e, and every
+// cluster's, is at most the exact (n.x - o_b)/|n| of its placed vertices, decided in rationals.
+TEST(VertexRouteEnd, EveryExcessIsAtMostTheExactClearanceBeyondThePlane) {
+  const cell::LoadedCell loaded = test::load_test_cell("ur5e-self.yaml");
+  const RobotCell cell = test::certified_cell(loaded);
+  const StepAxisRadii radii(cell);
+  CellProbe probe(cell);
+  int ends = 0;
+  int positive = 0;
+  for (const Step& step : shoulder_steps(20, 21)) {
+    ProbeResult at;
+    probe.probe(step.q0, false, at);
+    for (std::size_t p = 0; p < cell.self_pairs().size(); ++p) {
+      if (!has_vertex_route(cell, cell.self_pairs()[p])) continue;
+      VertexRouteEnd end;
+      if (!end.reset(radii, p, at)) continue;
+      ++ends;
+      const LinkHull& b = cell.hulls()[static_cast<std::size_t>(cell.self_pairs()[p].b)];
+      const geometry::SeparationWitness& w = at.self_pairs[p].witness;
+      mpq_class normal_square = 0;
+      for (int k = 0; k < 3; ++k) normal_square += mpq_class(w.normal[k]) * mpq_class(w.normal[k]);
+      // e <= (n.x - o_b)/|n| with n.x - o_b >= 0: e < 0 never, e |n| <= n.x - o_b, squared.
+      const auto below_exact = [&](double excess, const Eigen::Vector3d& x) {
+        mpq_class beyond = -mpq_class(w.offset_b);
+        for (int k = 0; k < 3; ++k) beyond += mpq_class(w.normal[k]) * mpq_class(x[k]);
+        if (excess == 0.0) return true;
+        return excess > 0.0 && beyond >= 0 && mpq_class(excess) * mpq_class(excess) * normal_square <= beyond * beyond;
+      };
+      for (std::size_t i = 0; i < end.cluster_count(); ++i) {
+        end.evaluate(i);
+        for (const int v : radii.clusters(end.hull())[i].members) {
+          const Eigen::Vector3d placed = at.X_WL[static_cast<std::size_t>(b.link)] * b.raw_L[static_cast<std::size_t>(v)];
+          EXPECT_TRUE(below_exact(end.vertex_excess(v), placed)) << "vertex " << v;
+          EXPECT_TRUE(below_exact(end.cluster_excess(i), placed)) << "cluster " << i << " vertex " << v;
+          if (end.vertex_excess(v) > 0.0) ++positive;
+        }
+      }
+    }
+  }
+  EXPECT_EQ(ends, 20);
+  EXPECT_GT(positive, 1000);  // the margin costs ~1e-15 m, not the terms themselves
 }
 
 }  // namespace
