@@ -1,5 +1,8 @@
 #include "grpvss/certify/robot_cell.hpp"
 
+#include "step_axis_radius.hpp"  // axis_point_distance_up
+#include "vertex_route.hpp"      // has_vertex_route
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -85,6 +88,57 @@ RobotCell::RobotCell(const RobotModel& robot, const Environment& environment,
   obstacles_ = ObstacleSet(environment.obstacles);
   allowed_contacts_ = environment.allowed_contacts;
   self_pairs_ = self_pair_hulls(robot, hulls_);
+  prepare_vertex_routes(raw_extent);
+}
+
+namespace {
+
+// Each vertex's distance from its own link's joint axis, at the middle of the joint limits: any
+// configuration bounds the same constant distance (that joint turns the link about its axis).
+// proof: proofs/motion-bound.md#axis-distance-evaluation
+std::vector<double> own_axis_distances_up(const RobotCell& cell, const LinkHull& hull, double coordinate_limit) {
+  namespace r = geometry::rounding;
+  const kinematics::KinematicChain& chain = cell.chain();
+  Eigen::VectorXd middle(chain.joint_count());
+  for (int j = 0; j < chain.joint_count(); ++j) {
+    const kinematics::ChainJoint& joint = chain.joints[static_cast<std::size_t>(j)];
+    middle[j] = 0.5 * joint.minimum + 0.5 * joint.maximum;
+  }
+  kinematics::Workspace frames(cell.robot());
+  kinematics::forward_kinematics(chain, middle, frames);
+  std::vector<Eigen::Vector3d> placed_W;
+  kinematics::place_points(frames.X_WL[static_cast<std::size_t>(hull.link)], hull.raw_L, placed_W);
+  const Eigen::Isometry3d& X_WJ = frames.X_WJ[static_cast<std::size_t>(hull.link - 1)];
+  const Eigen::Vector3d o = X_WJ.translation();
+  const Eigen::Vector3d z = X_WJ.linear().col(2);
+  std::vector<double> parameters;
+  for (const Eigen::Vector3d& v : placed_W) {
+    parameters.push_back(std::clamp(z.dot(v - o), -coordinate_limit, coordinate_limit));  // any |s| <= L
+  }
+  std::vector<double> distances(placed_W.size());
+  r::UpwardRoundingScope upward;
+  for (std::size_t i = 0; i < placed_W.size(); ++i) {
+    distances[i] = r::add_up(axis_point_distance_up(placed_W[i], o, z, parameters[i]), cell.placement_error());
+  }
+  return distances;
+}
+
+}  // namespace
+
+// proof: proofs/two-ball-cover.md#revolution-vertex-bound
+void RobotCell::prepare_vertex_routes(double coordinate_limit) {
+  for (const SelfPairHulls& pair : self_pairs_) {
+    LinkHull& b = hulls_[static_cast<std::size_t>(pair.b)];
+    if (!has_vertex_route(*this, pair) || !b.vertex_clusters_L.empty() || b.raw_L.empty()) continue;
+    b.vertex_clusters_L = geometry::cluster_vertices(b.raw_L, geometry::kVertexClusterLeaves);
+    b.own_axis_distances = own_axis_distances_up(*this, b, coordinate_limit);
+    for (const geometry::VertexCluster& cluster : b.vertex_clusters_L) {
+      b.vertex_cluster_centers_L.push_back(cluster.center_L);
+      double largest = 0.0;
+      for (const int v : cluster.members) largest = std::max(largest, b.own_axis_distances[static_cast<std::size_t>(v)]);
+      b.cluster_own_axis_distances.push_back(largest);
+    }
+  }
 }
 
 // Below kTemplateClimbMinVertices placing every vertex is cheaper than climbing the template

@@ -5,7 +5,6 @@
 #include <limits>
 
 #include "grpvss/geometry/directed_rounding.hpp"
-#include "grpvss/kinematics/forward_kinematics.hpp"
 #include "vertex_route.hpp"
 
 namespace grpvss::certify {
@@ -37,35 +36,6 @@ double largest_distance_up(const std::vector<Eigen::Vector3d>& points_L, const E
   return r::sqrt_up(largest_square);
 }
 
-// Each vertex's distance from its own link's joint axis, at the middle of the joint limits (any
-// configuration gives an upper bound of the same constant distance).
-std::vector<double> own_axis_distances_up(const RobotCell& cell, const LinkHull& hull, double coordinate_limit) {
-  const kinematics::KinematicChain& chain = cell.chain();
-  if (hull.link < 1 || hull.link > chain.joint_count() || hull.raw_L.empty()) return {};
-  Eigen::VectorXd middle(chain.joint_count());
-  for (int j = 0; j < chain.joint_count(); ++j) {
-    const kinematics::ChainJoint& joint = chain.joints[static_cast<std::size_t>(j)];
-    middle[j] = 0.5 * joint.minimum + 0.5 * joint.maximum;
-  }
-  kinematics::Workspace frames(cell.robot());
-  kinematics::forward_kinematics(chain, middle, frames);
-  std::vector<Eigen::Vector3d> placed_W;
-  kinematics::place_points(frames.X_WL[static_cast<std::size_t>(hull.link)], hull.raw_L, placed_W);
-  const Eigen::Isometry3d& X_WJ = frames.X_WJ[static_cast<std::size_t>(hull.link - 1)];
-  const Eigen::Vector3d o = X_WJ.translation();
-  const Eigen::Vector3d z = X_WJ.linear().col(2);
-  std::vector<double> parameters;
-  for (const Eigen::Vector3d& v : placed_W) {
-    parameters.push_back(std::clamp(z.dot(v - o), -coordinate_limit, coordinate_limit));
-  }
-  std::vector<double> distances(placed_W.size());
-  r::UpwardRoundingScope upward;
-  for (std::size_t i = 0; i < placed_W.size(); ++i) {
-    distances[i] = r::add_up(axis_point_distance_up(placed_W[i], o, z, parameters[i]), cell.placement_error());
-  }
-  return distances;
-}
-
 }  // namespace
 
 // proof: proofs/motion-bound.md#axis-distance-evaluation
@@ -88,19 +58,6 @@ StepAxisRadii::StepAxisRadii(const RobotCell& cell)
   for (const LinkHull& hull : cell.hulls()) {
     center_L_.push_back(hull.raw_L.empty() ? Eigen::Vector3d::Zero() : box_midpoint(hull.raw_L));
     radius_up_.push_back(hull.raw_L.empty() ? 0.0 : largest_distance_up(hull.raw_L, center_L_.back()));
-  }
-  for (const LinkHull& hull : cell.hulls()) {
-    clusters_.push_back(geometry::cluster_vertices(hull.raw_L, geometry::kVertexClusterLeaves));
-    cluster_centers_.emplace_back();
-    for (const geometry::VertexCluster& cluster : clusters_.back()) cluster_centers_.back().push_back(cluster.center_L);
-    own_axis_distances_.push_back(own_axis_distances_up(cell, hull, coordinate_limit_));
-    cluster_own_axis_distances_.emplace_back();
-    if (own_axis_distances_.back().empty()) continue;
-    for (const geometry::VertexCluster& cluster : clusters_.back()) {
-      double largest = 0.0;
-      for (const int v : cluster.members) largest = std::max(largest, own_axis_distances_.back()[static_cast<std::size_t>(v)]);
-      cluster_own_axis_distances_.back().push_back(largest);
-    }
   }
 }
 

@@ -8,7 +8,6 @@
 #include <Eigen/Core>
 
 #include "cell_probe.hpp"
-#include "grpvss/geometry/vertex_clusters.hpp"
 #include "grpvss/certify/robot_cell.hpp"
 
 namespace grpvss::certify {
@@ -46,36 +45,12 @@ class StepAxisRadii {
   double coordinate_limit() const { return coordinate_limit_; }
   const RobotCell& cell() const { return *cell_; }
 
-  /// Hull `hull`'s vertex clusters (geometry::cluster_vertices) and their centres, for the
-  /// revolution route's vertex bound (vertex_route.hpp).
-  const std::vector<geometry::VertexCluster>& clusters(int hull) const {
-    return clusters_[static_cast<std::size_t>(hull)];
-  }
-  const std::vector<Eigen::Vector3d>& cluster_centers(int hull) const {
-    return cluster_centers_[static_cast<std::size_t>(hull)];
-  }
-  /// Per vertex of hull `hull` (link i >= 1): D_i(v), an upper bound of its distance from joint
-  /// i's axis. Joint i turns link i about that axis, so the distance is the same at every
-  /// configuration; it is evaluated once, at the middle of the joint limits. Empty for link 0.
-  /// proof: proofs/motion-bound.md#axis-distance-evaluation
-  const std::vector<double>& own_axis_distances(int hull) const {
-    return own_axis_distances_[static_cast<std::size_t>(hull)];
-  }
-  /// Per cluster of hull `hull`: the largest own_axis_distances of its vertices.
-  const std::vector<double>& cluster_own_axis_distances(int hull) const {
-    return cluster_own_axis_distances_[static_cast<std::size_t>(hull)];
-  }
-
  private:
   const RobotCell* cell_;
   int joints_ = 0;
   double coordinate_limit_ = 0.0;        ///< L
   std::vector<Eigen::Vector3d> center_L_;  ///< c_h per hull
   std::vector<double> radius_up_;        ///< r_h per hull
-  std::vector<std::vector<geometry::VertexCluster>> clusters_;   ///< per hull
-  std::vector<std::vector<Eigen::Vector3d>> cluster_centers_;  ///< per hull
-  std::vector<std::vector<double>> own_axis_distances_;        ///< per hull, per vertex
-  std::vector<std::vector<double>> cluster_own_axis_distances_;  ///< per hull, per cluster
 };
 
 /// |c - o - s z| rounded up, each coordinate bracketed by directed rounding (an active

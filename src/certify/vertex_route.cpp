@@ -56,9 +56,9 @@ bool VertexRouteEnd::reset(const StepAxisRadii& radii, std::size_t p, const Prob
   if (!evidence.separated || !(evidence.revolution_distance > 0.0)) return false;
   hull_ = cell.self_pairs()[p].b;
   const LinkHull& b = cell.hulls()[static_cast<std::size_t>(hull_)];
-  const std::vector<geometry::VertexCluster>& clusters = radii.clusters(hull_);
+  const std::vector<geometry::VertexCluster>& clusters = b.vertex_clusters_L;
   if (probe.X_WL.size() <= static_cast<std::size_t>(b.link) || clusters.empty() ||
-      radii.own_axis_distances(hull_).size() != b.raw_L.size()) {
+      b.own_axis_distances.size() != b.raw_L.size()) {
     return false;
   }
   X_WL_ = probe.X_WL[static_cast<std::size_t>(b.link)];
@@ -72,7 +72,7 @@ bool VertexRouteEnd::reset(const StepAxisRadii& radii, std::size_t p, const Prob
     margin_ = excess_margin_up(witness_, largest_coordinate, normal_length_up_);
   }
   thread_local std::vector<Eigen::Vector3d> centers_W;
-  kinematics::place_points(X_WL_, radii.cluster_centers(hull_), centers_W);
+  kinematics::place_points(X_WL_, b.vertex_cluster_centers_L, centers_W);
   cluster_excess_.resize(clusters.size());
   for (std::size_t i = 0; i < clusters.size(); ++i) {
     // The ball's vertices are within its radius of the centre, placed or not
@@ -96,8 +96,8 @@ double VertexRouteEnd::excess_of(const Eigen::Vector3d& placed_W, double radius)
 void VertexRouteEnd::evaluate(std::size_t cluster) {
   if (evaluated_[cluster]) return;
   evaluated_[cluster] = 1;
-  const std::vector<int>& members = radii_->clusters(hull_)[cluster].members;
   const LinkHull& b = radii_->cell().hulls()[static_cast<std::size_t>(hull_)];
+  const std::vector<int>& members = b.vertex_clusters_L[cluster].members;
   for (const int v : members) {
     // One vertex as place_points places it (the FK bound covers any summation order).
     const Eigen::Vector3d placed_W = X_WL_ * b.raw_L[static_cast<std::size_t>(v)];
@@ -151,12 +151,13 @@ double vertex_route_bound(const StepAxisRadii& radii, VertexRouteEnd& from, Vert
   if (from.hull() != to.hull() || from.cluster_count() == 0 || from.cluster_count() != to.cluster_count()) {
     return std::numeric_limits<double>::infinity();
   }
-  const std::vector<double>& axis_distance = radii.own_axis_distances(from.hull());
-  const std::vector<double>& cluster_axis_distance = radii.cluster_own_axis_distances(from.hull());
+  const LinkHull& b = radii.cell().hulls()[static_cast<std::size_t>(from.hull())];
+  const std::vector<double>& axis_distance = b.own_axis_distances;
+  const std::vector<double>& cluster_axis_distance = b.cluster_own_axis_distances;
   r::UpwardRoundingScope upward;
   // A cluster's largest D less its least e bounds each of its vertices' charge.
   return largest_over_vertices(
-      radii.clusters(from.hull()),
+      b.vertex_clusters_L,
       [&](std::size_t i) {
         return r::sub_up(r::mul_up(increment_up, cluster_axis_distance[i]),
                          std::min(from.cluster_excess(i), to.cluster_excess(i)));
@@ -173,10 +174,11 @@ double vertex_route_bound(const StepAxisRadii& radii, VertexRouteEnd& from, Vert
 
 double vertex_route_proposal_radius(const StepAxisRadii& radii, VertexRouteEnd& at, double route_distance) {
   const double both_ends = 2.0 * route_distance;
-  const std::vector<double>& axis_distance = radii.own_axis_distances(at.hull());
-  const std::vector<double>& cluster_axis_distance = radii.cluster_own_axis_distances(at.hull());
+  const LinkHull& b = radii.cell().hulls()[static_cast<std::size_t>(at.hull())];
+  const std::vector<double>& axis_distance = b.own_axis_distances;
+  const std::vector<double>& cluster_axis_distance = b.cluster_own_axis_distances;
   return largest_over_vertices(
-      radii.clusters(at.hull()),
+      b.vertex_clusters_L,
       [&](std::size_t i) { return cluster_axis_distance[i] * both_ends / (both_ends + at.cluster_excess(i)); },
       [&](std::size_t i) { at.evaluate(i); },
       [&](int v) {

@@ -25,7 +25,7 @@ bool has_vertex_route(const RobotCell& cell, const SelfPairHulls& pair);
 /// \brief One end (probe) of a pair's vertex bound: e, lower bounds (>= 0) of hull b's vertices'
 /// clearance beyond the pair witness's plane on b's side, per cluster at reset and per vertex once
 /// its cluster is evaluated. The vertices' distances from b's own axis never change: they are
-/// StepAxisRadii's (own_axis_distances).
+/// the cell's (LinkHull::own_axis_distances).
 class VertexRouteEnd {
  public:
   /// The cluster bounds of pair `p` (with has_vertex_route) at `probe`; false when the probe

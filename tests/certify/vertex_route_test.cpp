@@ -272,7 +272,7 @@ TEST(VertexRouteEnd, EveryExcessIsAtMostTheExactClearanceBeyondThePlane) {
       };
       for (std::size_t i = 0; i < end.cluster_count(); ++i) {
         end.evaluate(i);
-        for (const int v : radii.clusters(end.hull())[i].members) {
+        for (const int v : b.vertex_clusters_L[i].members) {
           const Eigen::Vector3d placed = at.X_WL[static_cast<std::size_t>(b.link)] * b.raw_L[static_cast<std::size_t>(v)];
           EXPECT_TRUE(below_exact(end.vertex_excess(v), placed)) << "vertex " << v;
           EXPECT_TRUE(below_exact(end.cluster_excess(i), placed)) << "cluster " << i << " vertex " << v;

@@ -18,6 +18,7 @@
 #include "grpvss/exact/convex_polytope.hpp"
 #include "grpvss/geometry/hull_skeleton.hpp"
 #include "grpvss/geometry/revolution_solid.hpp"
+#include "grpvss/geometry/vertex_clusters.hpp"
 #include "grpvss/exact/minkowski_offset.hpp"
 #include "grpvss/kinematics/kinematic_chain.hpp"
 #include "grpvss/model/environment.hpp"
@@ -46,6 +47,14 @@ struct LinkHull {
   /// about it (geometry::enclosing_revolution_solid): the self pairs with this hull as
   /// their lower hull may then freeze that joint (proofs/two-ball-cover.md#revolution-route).
   std::optional<geometry::RevolutionSolid> revolution_L;
+  /// For the upper hull of a self pair whose revolution route leaves only this hull's own joint
+  /// moving (proofs/two-ball-cover.md#revolution-vertex-bound), else empty: its vertex clusters
+  /// (geometry::cluster_vertices) with their centres, and each vertex's distance from its own
+  /// joint's axis (the same at every configuration), rounded up, with each cluster's largest.
+  std::vector<geometry::VertexCluster> vertex_clusters_L;
+  std::vector<Eigen::Vector3d> vertex_cluster_centers_L;
+  std::vector<double> own_axis_distances;
+  std::vector<double> cluster_own_axis_distances;
 };
 
 /// \brief A self-collision pair as indices into RobotCell::hulls().
@@ -139,6 +148,9 @@ class RobotCell {
   void enclose_round_hulls(double coordinate_bound);
   /// Each hull's raw_on_template, raw_max_abs_L and expanded_template_max_abs_L.
   void choose_templates();
+  /// The vertex clusters and own-axis distances of the hulls the vertex route needs
+  /// (LinkHull::vertex_clusters_L); L = `coordinate_limit`, the raw vertices' largest |coordinate|.
+  void prepare_vertex_routes(double coordinate_limit);
   const RobotModel* robot_;
   const Environment* environment_;
   CellSettings settings_;
