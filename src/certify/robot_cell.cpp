@@ -93,24 +93,15 @@ RobotCell::RobotCell(const RobotModel& robot, const Environment& environment,
 
 namespace {
 
-// Each vertex's distance from its own link's joint axis, at the middle of the joint limits: any
-// configuration bounds the same constant distance (that joint turns the link about its axis).
-// proof: proofs/motion-bound.md#axis-distance-evaluation
+// Each vertex's distance from its own link's joint axis, rounded up: any configuration bounds the
+// same constant distance. proof: proofs/motion-bound.md#axis-distance-evaluation
 std::vector<double> own_axis_distances_up(const RobotCell& cell, const LinkHull& hull, double coordinate_limit) {
   namespace r = geometry::rounding;
-  const kinematics::KinematicChain& chain = cell.chain();
-  Eigen::VectorXd middle(chain.joint_count());
-  for (int j = 0; j < chain.joint_count(); ++j) {
-    const kinematics::ChainJoint& joint = chain.joints[static_cast<std::size_t>(j)];
-    middle[j] = 0.5 * joint.minimum + 0.5 * joint.maximum;
-  }
-  kinematics::Workspace frames(cell.robot());
-  kinematics::forward_kinematics(chain, middle, frames);
-  std::vector<Eigen::Vector3d> placed_W;
-  kinematics::place_points(frames.X_WL[static_cast<std::size_t>(hull.link)], hull.raw_L, placed_W);
-  const Eigen::Isometry3d& X_WJ = frames.X_WJ[static_cast<std::size_t>(hull.link - 1)];
-  const Eigen::Vector3d o = X_WJ.translation();
-  const Eigen::Vector3d z = X_WJ.linear().col(2);
+  const kinematics::PlacedAtOwnJoint placed =
+      kinematics::place_at_middle_of_limits(cell.chain(), cell.robot(), hull.link, hull.raw_L);
+  const std::vector<Eigen::Vector3d>& placed_W = placed.points_W;
+  const Eigen::Vector3d o = placed.X_WJ.translation();
+  const Eigen::Vector3d z = placed.X_WJ.linear().col(2);
   std::vector<double> parameters;
   for (const Eigen::Vector3d& v : placed_W) {
     parameters.push_back(std::clamp(z.dot(v - o), -coordinate_limit, coordinate_limit));  // any |s| <= L

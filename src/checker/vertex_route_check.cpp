@@ -78,20 +78,12 @@ const VertexRouteCheck::HullTerms& VertexRouteCheck::terms(int hull_index) {
     }
   }
   if (std::find(covered.begin(), covered.end(), 0) != covered.end()) return terms;
-  Eigen::VectorXd middle(chain.joint_count());
-  for (int j = 0; j < chain.joint_count(); ++j) {
-    const kinematics::ChainJoint& joint = chain.joints[static_cast<std::size_t>(j)];
-    middle[j] = 0.5 * joint.minimum + 0.5 * joint.maximum;
-  }
-  kinematics::Workspace frames(cell_->robot());
-  kinematics::forward_kinematics(chain, middle, frames);
-  std::vector<Eigen::Vector3d> placed_W;
-  kinematics::place_points(frames.X_WL[static_cast<std::size_t>(hull.link)], hull.raw_L, placed_W);
-  const Eigen::Isometry3d& X_WJ = frames.X_WJ[static_cast<std::size_t>(hull.link - 1)];
-  const Eigen::Vector3d o = X_WJ.translation();
-  const Eigen::Vector3d z = X_WJ.linear().col(2);
+  const kinematics::PlacedAtOwnJoint placed =
+      kinematics::place_at_middle_of_limits(chain, cell_->robot(), hull.link, hull.raw_L);
+  const Eigen::Vector3d o = placed.X_WJ.translation();
+  const Eigen::Vector3d z = placed.X_WJ.linear().col(2);
   const double limit = cell_->hull_coordinate_limit();
-  for (const Eigen::Vector3d& v : placed_W) {
+  for (const Eigen::Vector3d& v : placed.points_W) {
     const double s = std::clamp(z.dot(v - o), -limit, limit);  // any |s| <= L is sound
     Rational square = 0;
     for (int k = 0; k < 3; ++k) {

@@ -79,4 +79,19 @@ void place_points(const Eigen::Isometry3d& X_WL, const std::vector<Eigen::Vector
   for (std::size_t i = 0; i < points_L.size(); ++i) points_W[i] = X_WL * points_L[i];
 }
 
+PlacedAtOwnJoint place_at_middle_of_limits(const KinematicChain& chain, const RobotModel& robot, int link,
+                                           const std::vector<Eigen::Vector3d>& points_L) {
+  Eigen::VectorXd middle(chain.joint_count());
+  for (int j = 0; j < chain.joint_count(); ++j) {
+    const ChainJoint& joint = chain.joints[static_cast<std::size_t>(j)];
+    middle[j] = 0.5 * joint.minimum + 0.5 * joint.maximum;
+  }
+  Workspace frames(robot);
+  forward_kinematics(chain, middle, frames);
+  PlacedAtOwnJoint placed;
+  place_points(frames.X_WL[static_cast<std::size_t>(link)], points_L, placed.points_W);
+  placed.X_WJ = frames.X_WJ[static_cast<std::size_t>(link - 1)];
+  return placed;
+}
+
 }  // namespace grpvss::kinematics

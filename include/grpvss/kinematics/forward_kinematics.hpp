@@ -38,6 +38,20 @@ void forward_kinematics(const KinematicChain& chain, const Eigen::VectorXd& q, W
 /// \brief Fills ws.hull_points_W from ws.X_WL (call forward_kinematics first). No allocation.
 void place_hull_points(const RobotModel& model, Workspace& ws);
 
+/// Link-frame points placed at one configuration, with the frame of the link's own joint there
+/// (its z axis is that joint's axis).
+struct PlacedAtOwnJoint {
+  std::vector<Eigen::Vector3d> points_W;
+  Eigen::Isometry3d X_WJ = Eigen::Isometry3d::Identity();
+};
+
+/// \brief `points_L` of link `link` (1..N) placed by place_points at the middle of every joint's
+/// limits, and joint `link`'s frame there. A point's distance from its own link's joint axis is
+/// the same at every configuration (that joint turns the link about it), so one configuration
+/// within the limits serves every step (proofs/motion-bound.md#axis-distance-evaluation).
+PlacedAtOwnJoint place_at_middle_of_limits(const KinematicChain& chain, const RobotModel& robot, int link,
+                                           const std::vector<Eigen::Vector3d>& points_L);
+
 /// \brief Places link-frame points with the pose X_WL exactly as place_hull_points places hull
 /// vertices: the expression the FK rounding bound covers (proofs/fk-rounding.md#fk-rounding).
 /// The verifier's probe and the certificate checker both place points with it.
