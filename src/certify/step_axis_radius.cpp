@@ -1,6 +1,7 @@
 #include "step_axis_radius.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 
@@ -50,8 +51,12 @@ double axis_point_distance_up(const Eigen::Vector3d& c, const Eigen::Vector3d& o
   return r::sqrt_up(square);
 }
 
+namespace {
+std::atomic<unsigned long long> next_identity{1};
+}  // namespace
+
 StepAxisRadii::StepAxisRadii(const RobotCell& cell)
-    : cell_(&cell), joints_(cell.chain().joint_count()) {
+    : cell_(&cell), identity_(next_identity.fetch_add(1)), joints_(cell.chain().joint_count()) {
   for (const LinkHull& hull : cell.hulls()) {
     for (const Eigen::Vector3d& u : hull.raw_L) coordinate_limit_ = std::max(coordinate_limit_, u.cwiseAbs().maxCoeff());
   }

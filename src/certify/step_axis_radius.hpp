@@ -44,9 +44,13 @@ class StepAxisRadii {
   /// L, the largest |coordinate| of any hull vertex.
   double coordinate_limit() const { return coordinate_limit_; }
   const RobotCell& cell() const { return *cell_; }
+  /// A number no other StepAxisRadii of this process has (caches keyed by it never mistake a
+  /// later one at the same address for this one).
+  unsigned long long identity() const { return identity_; }
 
  private:
   const RobotCell* cell_;
+  unsigned long long identity_ = 0;
   int joints_ = 0;
   double coordinate_limit_ = 0.0;        ///< L
   std::vector<Eigen::Vector3d> center_L_;  ///< c_h per hull

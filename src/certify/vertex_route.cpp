@@ -43,15 +43,31 @@ double placed_coordinate_bound_up(const Eigen::Isometry3d& X, double largest_L) 
 
 }  // namespace
 
+bool VertexRouteEnd::is_for(const StepAxisRadii& radii, std::size_t p, const ProbeResult& probe) const {
+  if (radii_ != &radii || radii_identity_ != radii.identity() || pair_ != p || q_.size() != probe.q.size() ||
+      q_ != probe.q) {
+    return false;
+  }
+  if (p >= probe.self_pairs.size()) return !usable_;
+  const SelfPairEvidence& evidence = probe.self_pairs[p];
+  return evidence.witness.normal == witness_.normal && evidence.witness.offset_b == witness_.offset_b &&
+         evidence.revolution_distance == route_distance_;
+}
+
 bool VertexRouteEnd::reset(const StepAxisRadii& radii, std::size_t p, const ProbeResult& probe) {
   const RobotCell& cell = radii.cell();
   radii_ = &radii;
+  radii_identity_ = radii.identity();
   pair_ = p;
   q_ = probe.q;
   usable_ = false;
   cluster_excess_.clear();
+  witness_ = geometry::SeparationWitness{};
+  route_distance_ = 0.0;
   if (p >= probe.self_pairs.size()) return false;
   const SelfPairEvidence& evidence = probe.self_pairs[p];
+  witness_ = evidence.witness;
+  route_distance_ = evidence.revolution_distance;
   // c_k = lambda - 2 eps unclamped: a distance clamped up to 0 would not bound dist - e.
   if (!evidence.separated || !(evidence.revolution_distance > 0.0)) return false;
   hull_ = cell.self_pairs()[p].b;
@@ -62,7 +78,6 @@ bool VertexRouteEnd::reset(const StepAxisRadii& radii, std::size_t p, const Prob
     return false;
   }
   X_WL_ = probe.X_WL[static_cast<std::size_t>(b.link)];
-  witness_ = evidence.witness;
   double largest_L = 0.0;  // the vertices' and the clusters' centres' (inside their box)
   for (const Eigen::Vector3d& v : b.raw_L) largest_L = std::max(largest_L, v.cwiseAbs().maxCoeff());
   const double largest_coordinate = placed_coordinate_bound_up(X_WL_, largest_L);
@@ -113,7 +128,7 @@ VertexRouteEnd* vertex_route_end(const StepAxisRadii& radii, std::size_t p, cons
   ++clock;
   std::size_t oldest = 0;
   for (std::size_t i = 0; i < kKept; ++i) {
-    if (kept[i].is_for(radii, p, probe.q)) {
+    if (kept[i].is_for(radii, p, probe)) {
       last_use[i] = clock;
       return kept[i].usable() ? &kept[i] : nullptr;
     }

@@ -31,10 +31,10 @@ class VertexRouteEnd {
   /// The cluster bounds of pair `p` (with has_vertex_route) at `probe`; false when the probe
   /// proves no route distance for the pair (no witness, or c = 0) or kept no frames.
   bool reset(const StepAxisRadii& radii, std::size_t p, const ProbeResult& probe);
-  /// Whether this end was reset for (radii, p) at configuration q, and with what result.
-  bool is_for(const StepAxisRadii& radii, std::size_t p, const Eigen::VectorXd& q) const {
-    return radii_ == &radii && pair_ == p && q_.size() == q.size() && q_ == q;
-  }
+  /// Whether this end was reset for pair p of the same StepAxisRadii (by identity: another at
+  /// the same address is another run) at a probe of configuration q with the same evidence for
+  /// the pair (a probe of the same q may prove another slab; e and c must share theirs).
+  bool is_for(const StepAxisRadii& radii, std::size_t p, const ProbeResult& probe) const;
   bool usable() const { return usable_; }
 
   int hull() const { return hull_; }
@@ -50,7 +50,9 @@ class VertexRouteEnd {
   double excess_of(const Eigen::Vector3d& placed_W, double radius) const;
 
   const StepAxisRadii* radii_ = nullptr;
+  unsigned long long radii_identity_ = 0;
   std::size_t pair_ = 0;
+  double route_distance_ = 0.0;
   Eigen::VectorXd q_;
   bool usable_ = false;
   int hull_ = 0;

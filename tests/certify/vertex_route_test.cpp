@@ -285,5 +285,37 @@ TEST(VertexRouteEnd, EveryExcessIsAtMostTheExactClearanceBeyondThePlane) {
   EXPECT_GT(positive, 1000);  // the margin costs ~1e-15 m, not the terms themselves
 }
 
+// The kept ends (vertex_route_end) are reused only for the same run, configuration and evidence:
+// e and c must come from one slab, and a later run's StepAxisRadii is another cell.
+TEST(VertexRouteEnd, IsKeptOnlyForTheSameRunConfigurationAndEvidence) {
+  const cell::LoadedCell loaded = test::load_test_cell("ur5e-self.yaml");
+  const RobotCell cell = test::certified_cell(loaded);
+  const StepAxisRadii radii(cell);
+  CellProbe probe(cell);
+  ProbeResult at;
+  probe.probe(shoulder_steps(1, 21).front().q0, false, at);
+  std::size_t p = 0;
+  while (p < cell.self_pairs().size() && !has_vertex_route(cell, cell.self_pairs()[p])) ++p;
+  ASSERT_LT(p, cell.self_pairs().size());
+  VertexRouteEnd* first = vertex_route_end(radii, p, at);
+  ASSERT_NE(first, nullptr);
+  EXPECT_EQ(vertex_route_end(radii, p, at), first);
+  // The same configuration with the witness's plane 1 mm farther from hull b: another end, whose
+  // e is 1 mm / |n| larger.
+  ProbeResult moved = at;
+  moved.self_pairs[p].witness.offset_b -= 1e-3;
+  VertexRouteEnd* other = vertex_route_end(radii, p, moved);
+  ASSERT_NE(other, nullptr);
+  EXPECT_NE(other, first);
+  first = vertex_route_end(radii, p, at);
+  first->evaluate(0);
+  other->evaluate(0);
+  const int v = cell.hulls()[static_cast<std::size_t>(cell.self_pairs()[p].b)].vertex_clusters_L[0].members.front();
+  EXPECT_NEAR(other->vertex_excess(v) - first->vertex_excess(v), 1e-3 / at.self_pairs[p].witness.normal.norm(), 1e-12);
+  // Another run over the same cell: never the first run's end.
+  const StepAxisRadii another_run(cell);
+  EXPECT_NE(vertex_route_end(another_run, p, at), first);
+}
+
 }  // namespace
 }  // namespace grpvss::certify
