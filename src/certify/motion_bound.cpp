@@ -5,6 +5,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "grpvss/common/next_double.hpp"
 #include "grpvss/geometry/rounded_bounds.hpp"
 #include "grpvss/geometry/directed_rounding.hpp"
 
@@ -133,7 +134,7 @@ std::vector<double> axis_radii_up(const RobotModel& robot, int link, const HullP
 double round_sum_upward(double computed_sum, int term_count) {
   const double inflated =
       computed_sum * (1.0 + 2.0 * term_count * std::numeric_limits<double>::epsilon());
-  return std::nextafter(inflated, std::numeric_limits<double>::infinity());
+  return next_up(inflated);
 }
 
 }  // namespace
@@ -169,8 +170,7 @@ double HullRadiusTable::hull_motion_bound(int link, int hull, const Eigen::Vecto
     const double increment = std::abs(dq[joint - 1]);
     if (joint_types_[joint - 1] == JointType::kRevolute) {
       // Each product is rounded up by one ulp so the sum only needs the sum inflation.
-      bound += std::nextafter(increment * radius_[link][hull][joint - 1],
-                              std::numeric_limits<double>::infinity());
+      bound += next_up(increment * radius_[link][hull][joint - 1]);
     } else {
       bound += increment;
     }

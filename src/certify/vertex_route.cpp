@@ -78,9 +78,8 @@ bool VertexRouteEnd::reset(const StepAxisRadii& radii, std::size_t p, const Prob
     return false;
   }
   X_WL_ = probe.X_WL[static_cast<std::size_t>(b.link)];
-  double largest_L = 0.0;  // the vertices' and the clusters' centres' (inside their box)
-  for (const Eigen::Vector3d& v : b.raw_L) largest_L = std::max(largest_L, v.cwiseAbs().maxCoeff());
-  const double largest_coordinate = placed_coordinate_bound_up(X_WL_, largest_L);
+  // The vertices' largest coordinate bounds the clusters' centres' too (inside their box).
+  const double largest_coordinate = placed_coordinate_bound_up(X_WL_, b.raw_max_abs_L);
   {
     r::UpwardRoundingScope upward;
     normal_length_up_ = r::sqrt_up(r::dot_up(witness_.normal.data(), witness_.normal.data()));

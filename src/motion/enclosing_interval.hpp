@@ -12,10 +12,12 @@
 #include <cmath>
 #include <limits>
 
+#include "grpvss/common/next_double.hpp"
+
 namespace grpvss::motion::detail {
 
-inline double next_up(double x) { return std::nextafter(x, std::numeric_limits<double>::infinity()); }
-inline double next_down(double x) { return std::nextafter(x, -std::numeric_limits<double>::infinity()); }
+using grpvss::next_down;
+using grpvss::next_up;
 
 /// [lo, hi] with lo <= hi.
 struct Interval {

@@ -22,6 +22,8 @@
 #include <cmath>
 #include <limits>
 
+#include "grpvss/common/next_double.hpp"
+
 namespace grpvss::geometry::rounding {
 
 /// \brief Forces \p x to be materialised here, in program order with other barriers.
@@ -92,7 +94,7 @@ inline double div_down(double a, double b) { return -div_up(-a, b); }
 /// \brief A double not above \f$\sqrt{a}\f$ (\p a >= 0).
 inline double sqrt_down(double a) {
   if (!(a > 0.0)) return 0.0;
-  return std::nextafter(sqrt_up(a), 0.0);
+  return next_toward_zero(sqrt_up(a));
 }
 
 /// \brief Upper bound of \f$\lvert x\rvert^2\f$ given \f$x \in [lo, hi]\f$.
@@ -137,7 +139,7 @@ inline double nearest_mode_add_down(double a, double b) {
   }
   const double bb = barrier(s - a);
   const double error = barrier(barrier(a - barrier(s - bb)) + barrier(b - bb));
-  return error < 0.0 ? std::nextafter(s, -std::numeric_limits<double>::infinity()) : s;
+  return error < 0.0 ? next_down(s) : s;
 }
 /// \brief \f$\mathrm{RU}(a + b)\f$ in round-to-nearest mode (no scope may be active).
 inline double nearest_mode_add_up(double a, double b) { return -nearest_mode_add_down(-a, -b); }
