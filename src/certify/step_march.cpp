@@ -187,7 +187,8 @@ double CertifiedMarch::predicted_ptp_step(const SegmentPath& path, double max_st
   const std::size_t hull_count = cell_.hulls().size();
   const std::size_t pair_count = current_.self_pairs.size();
   const bool has_trend = previous_radii_.size() == hull_count + pair_count + revolution_pairs_.size();
-  std::vector<ProposalHull> hulls(hull_count + pair_count + revolution_pairs_.size());
+  std::vector<ProposalHull>& hulls = proposal_hulls_;
+  hulls.assign(hull_count + pair_count + revolution_pairs_.size(), ProposalHull{});
   for (std::size_t i = 0; i < hull_count; ++i) {
     hulls[i].radius = current_.hulls[i].radius;
     hulls[i].expanded_interferes = current_.hulls[i].expanded_interferes;
@@ -210,7 +211,7 @@ double CertifiedMarch::predicted_ptp_step(const SegmentPath& path, double max_st
   const double s = s_;
   const Eigen::VectorXd& q = current_.q;
   // Weighted by where the hulls are now, not by the worst configuration (M'_h's form).
-  std::vector<double> distances;
+  std::vector<double>& distances = proposal_axis_distances_;
   step_radii_.proposal_axis_distances(current_, distances);
   // PTP: the profile; a trajectory piece: its interpolation (the transition still decides).
   return certify::predicted_ptp_step([&](double candidate) { return *path.q_at(s + candidate, q); },

@@ -129,6 +129,9 @@ class CertifiedMarch : public StepMarch {
   /// them (the trend predicted_ptp_step extrapolates); empty at a segment start.
   std::vector<double> previous_radii_;
   double previous_step_ = 1.0;
+  // The proposal's scratch, kept so that a proposal allocates nothing (contents are per call).
+  mutable std::vector<ProposalHull> proposal_hulls_;
+  mutable std::vector<double> proposal_axis_distances_;
   CpModelFailures model_failures_;  ///< the failed CP-model trials from the current step
 };
 

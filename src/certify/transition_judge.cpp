@@ -49,13 +49,16 @@ double self_pair_motion_bound(const RobotCell& cell, const SelfPairHulls& pair,
   const LinkHull& b = cell.hulls()[static_cast<std::size_t>(pair.b)];
   const double both = r::nearest_mode_add_up(record.hull_motion_bounds[static_cast<std::size_t>(pair.a)],
                                              record.hull_motion_bounds[static_cast<std::size_t>(pair.b)]);
-  Eigen::VectorXd relative = dq;
+  // Scratch kept per thread: a judge evaluates 15-450 pairs per trial.
+  thread_local Eigen::VectorXd relative;
+  relative = dq;
   relative.head(a.link).setZero();  // joints 1..a move link a's frame, not b within it
   double bound = std::min(both, cell.radii().hull_motion_bound(b.link, b.hull, relative));
   if (axis != nullptr && bound > 0.0) {
     // Distances from the axes a+1..b are the same seen from link a's frame.
     // proof: proofs/motion-bound.md#lemma-axis-distance-along-step
-    Eigen::VectorXd relative_up = axis->increments_up;
+    thread_local Eigen::VectorXd relative_up;
+    relative_up = axis->increments_up;
     relative_up.head(a.link).setZero();
     bound = std::min(bound, axis->radii->motion_bound(pair.b, relative_up, axis->from, axis->to));
   }
@@ -70,11 +73,13 @@ double revolution_motion_bound(const RobotCell& cell, const SelfPairHulls& pair,
   const LinkHull& a = cell.hulls()[static_cast<std::size_t>(pair.a)];
   const LinkHull& b = cell.hulls()[static_cast<std::size_t>(pair.b)];
   const Eigen::Index frozen = std::min<Eigen::Index>(a.link + 1, dq.size());
-  Eigen::VectorXd relative = dq;
+  thread_local Eigen::VectorXd relative;
+  relative = dq;
   relative.head(frozen).setZero();
   double bound = cell.radii().hull_motion_bound(b.link, b.hull, relative);
   if (axis != nullptr && bound > 0.0) {
-    Eigen::VectorXd relative_up = axis->increments_up;
+    thread_local Eigen::VectorXd relative_up;
+    relative_up = axis->increments_up;
     relative_up.head(frozen).setZero();
     bound = std::min(bound, axis->radii->motion_bound(pair.b, relative_up, axis->from, axis->to));
   }
