@@ -249,6 +249,7 @@ void CellProbe::decide_expanded(HullProbe& hull, int o, double gap_estimate,
   }
   const int obstacle_count = cell.obstacles().size();
   const std::size_t warm_slot = static_cast<std::size_t>(hull.index) * obstacle_count + o;
+  if (separate_by_kept_normal(hull, o, warm_slot, evidence)) return;
   if (separate_by_template(hull, o, warm_slot, evidence)) return;
   if (!hull.expanded_placed) {
     kinematics::place_points(hull.X_WL, hull.hull.expanded_L, placed_expanded_);
@@ -265,19 +266,41 @@ void CellProbe::decide_expanded(HullProbe& hull, int o, double gap_estimate,
 
 // The witness proven is the one a scan of the placed offset would prove
 // (proofs/fast-path.md#placed-separation); the checker re-checks it on every placed vertex.
+std::optional<geometry::PlacedHull> CellProbe::offset_template(const HullProbe& hull) const {
+  const double max_abs_L = hull.hull.expanded_template_max_abs_L;
+  if (!(max_abs_L >= 0.0)) return std::nullopt;
+  geometry::PlacedHull offset;
+  offset.vertices_L = &hull.hull.expanded_L;
+  offset.skeleton = &cell_->expanded_skeleton(static_cast<std::size_t>(hull.index));
+  offset.X_WL = hull.X_WL;
+  offset.max_abs_L = max_abs_L;
+  return offset;
+}
+
+// Any proven slab is evidence (the checker re-checks it on every placed vertex); the hull's
+// radius is the smallest clearance over its obstacles, which a bound not below the smallest so
+// far leaves as it is. proof: proofs/fast-path.md#placed-separation
+bool CellProbe::separate_by_kept_normal(const HullProbe& hull, int o, std::size_t warm_slot,
+                                        PairEvidence& evidence) {
+  if (!has_warm_normal_[warm_slot] || !(hull.smallest_clearance < kInfinity)) return false;
+  const std::optional<geometry::PlacedHull> offset = offset_template(hull);
+  if (!offset) return false;
+  const std::optional<geometry::CertifiedSeparation> separation = geometry::certify_placed_separation(
+      *offset, climb_hints_[warm_slot], cell_->obstacles().vertices_W(o), warm_normals_[warm_slot]);
+  if (!separation || !(separation->lower_bound >= hull.smallest_clearance)) return false;
+  evidence.separated = true;
+  evidence.witness = separation->witness;
+  evidence.lower_bound = separation->lower_bound;
+  return true;
+}
+
 bool CellProbe::separate_by_template(const HullProbe& hull, int o, std::size_t warm_slot,
                                      PairEvidence& evidence) {
   const RobotCell& cell = *cell_;
-  const auto h = static_cast<std::size_t>(hull.index);
-  const double max_abs_L = hull.hull.expanded_template_max_abs_L;
-  if (!(max_abs_L >= 0.0)) return false;
-  geometry::PlacedHull offset;
-  offset.vertices_L = &hull.hull.expanded_L;
-  offset.skeleton = &cell.expanded_skeleton(h);
-  offset.X_WL = hull.X_WL;
-  offset.max_abs_L = max_abs_L;
+  const std::optional<geometry::PlacedHull> offset = offset_template(hull);
+  if (!offset) return false;
   const auto result = geometry::certified_placed_separation_query(
-      offset, cell.obstacles().vertices_W(o),
+      *offset, cell.obstacles().vertices_W(o),
       has_warm_normal_[warm_slot] ? &warm_normals_[warm_slot] : nullptr, &climb_hints_[warm_slot],
       &simplex_hints_[warm_slot]);
   if (!result) return false;

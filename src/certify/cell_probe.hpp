@@ -110,6 +110,13 @@ class CellProbe {
   /// placing only the vertices visited. False when that proves nothing.
   bool separate_by_template(const HullProbe& hull, int obstacle, std::size_t warm_slot,
                             PairEvidence& evidence);
+  /// Before that, once a nearer obstacle has set the hull's smallest clearance: the pair's
+  /// last witness normal proven again on the template (no GJK). Taken only when its bound does
+  /// not lower that clearance, so the hull's radius is the one the full query gives.
+  bool separate_by_kept_normal(const HullProbe& hull, int obstacle, std::size_t warm_slot,
+                               PairEvidence& evidence);
+  /// The placed offset on its template, or nullopt when the offset is placed instead.
+  std::optional<geometry::PlacedHull> offset_template(const HullProbe& hull) const;
   /// Keeps a proven separation of the offset and an obstacle as evidence and warm start.
   void keep_separation(const geometry::CertifiedPairResult& result, std::size_t warm_slot,
                        PairEvidence& evidence);

@@ -3,9 +3,12 @@
 #include "certify/cell_probe.hpp"
 
 #include <algorithm>
+#include <map>
+#include <utility>
 #include <random>
 #include <string>
 
+#include <gmpxx.h>
 #include <gtest/gtest.h>
 
 #include "grpvss/exact/convex_polytope.hpp"
@@ -15,6 +18,7 @@
 #include "grpvss/kinematics/forward_kinematics.hpp"
 #include "grpvss/io/robot_file.hpp"
 #include "support/random_configurations.hpp"
+#include "support/ur5e_self_run.hpp"
 
 namespace grpvss::certify {
 namespace {
@@ -193,6 +197,80 @@ TEST(CellProbe, AHullWhoseLinkDidNotMoveKeepsItsProofAndAMovedOneIsDecidedAgain)
   });
   EXPECT_GT(unmoved, 2000);
   EXPECT_GT(decided_again, 2000);
+}
+
+// n.x <= o_a for every placed offset vertex x and n.y >= o_b for every obstacle vertex y,
+// decided in rationals (the inequalities the checker decides for a recorded witness).
+bool witness_holds_exactly(const geometry::SeparationWitness& witness,
+                           const std::vector<Eigen::Vector3d>& placed_offset_W,
+                           const std::vector<Eigen::Vector3d>& obstacle_W) {
+  const auto dot = [&](const Eigen::Vector3d& p) -> mpq_class {  // not an expression template
+    return mpq_class(witness.normal.x()) * mpq_class(p.x()) + mpq_class(witness.normal.y()) * mpq_class(p.y()) +
+           mpq_class(witness.normal.z()) * mpq_class(p.z());
+  };
+  for (const Eigen::Vector3d& x : placed_offset_W) {
+    if (dot(x) > mpq_class(witness.offset_a)) return false;
+  }
+  for (const Eigen::Vector3d& y : obstacle_W) {
+    if (dot(y) < mpq_class(witness.offset_b)) return false;
+  }
+  return mpq_class(witness.offset_a) < mpq_class(witness.offset_b);
+}
+
+// Once a nearer obstacle has set a hull's smallest clearance, the probe proves the next ones on
+// their last witness normal (no GJK) and keeps that proof only when it does not lower the
+// clearance. Along a UR5e motion beside the post, probed step after step by one warm probe and
+// by a fresh probe at each configuration: every hull's radius is the fresh probe's (a kept
+// normal never sets it), the kept-normal proofs are there (the same normal as the step before,
+// a smaller bound than the fresh query's), and every witness holds exactly on the placed offset.
+TEST(CellProbe, AKeptNormalProvesAFartherObstacleWithoutChangingAnyHullsRadius) {
+  const cell::LoadedCell loaded = test::load_test_cell("ur5e-post.yaml");
+  const RobotCell cell = test::certified_cell(loaded);
+  Eigen::VectorXd from(6), to(6);
+  from << 0.0, -1.5708, 1.5708, 0.0, 0.0, 0.0;  // the cell's home
+  to << -0.9, -1.3, 1.4, -0.3, 0.5, 0.2;
+  CellProbe warm(cell);
+  std::map<std::pair<int, int>, Eigen::Vector3d> last_normal;  // (hull, obstacle) -> normal
+  kinematics::Workspace workspace(cell.robot());
+  std::vector<Eigen::Vector3d> placed_offset_W;
+  int kept_normal_proofs = 0;
+  constexpr int kSteps = 60;
+  for (int k = 0; k <= kSteps; ++k) {
+    const Eigen::VectorXd q = from + (to - from) * (static_cast<double>(k) / kSteps);
+    ProbeResult warm_result, fresh_result;
+    warm.probe(q, /*with_points=*/false, warm_result);
+    CellProbe(cell).probe(q, /*with_points=*/false, fresh_result);
+    ASSERT_FALSE(warm_result.any_expanded_interference) << "step " << k;
+    kinematics::forward_kinematics(cell.chain(), q, workspace);
+    for (int i = 0; i < static_cast<int>(cell.hulls().size()); ++i) {
+      const double want = fresh_result.hulls[static_cast<std::size_t>(i)].radius;
+      EXPECT_NEAR(warm_result.hulls[static_cast<std::size_t>(i)].radius, want, 1e-9 * (1.0 + want))
+          << "step " << k << " hull " << i;
+      const LinkHull& hull = cell.hulls()[static_cast<std::size_t>(i)];
+      kinematics::place_points(workspace.X_WL[static_cast<std::size_t>(hull.link)], hull.expanded_L,
+                               placed_offset_W);
+      const std::vector<PairEvidence> fresh_evidence = evidence_of(fresh_result, i);
+      double smallest = std::numeric_limits<double>::infinity();
+      for (const PairEvidence& evidence : evidence_of(warm_result, i)) smallest = std::min(smallest, evidence.lower_bound);
+      for (const PairEvidence& evidence : evidence_of(warm_result, i)) {
+        ASSERT_TRUE(evidence.separated);
+        EXPECT_TRUE(witness_holds_exactly(evidence.witness, placed_offset_W,
+                                          cell.obstacles().vertices_W(evidence.obstacle)))
+            << "step " << k << " hull " << i << " obstacle " << evidence.obstacle;
+        const auto key = std::make_pair(i, evidence.obstacle);
+        const auto last = last_normal.find(key);
+        const auto fresh = std::find_if(fresh_evidence.begin(), fresh_evidence.end(),
+                                        [&](const PairEvidence& e) { return e.obstacle == evidence.obstacle; });
+        if (k > 0 && last != last_normal.end() && last->second == evidence.witness.normal &&
+            fresh != fresh_evidence.end() && evidence.lower_bound < fresh->lower_bound - 1e-12) {
+          ++kept_normal_proofs;
+          EXPECT_GT(evidence.lower_bound, smallest) << "step " << k << " hull " << i;  // not the nearest
+        }
+        last_normal[key] = evidence.witness.normal;
+      }
+    }
+  }
+  EXPECT_GT(kept_normal_proofs, 20);  // the kept normals are exercised, not vacuous
 }
 
 // The probe is asked for points only when the world-frame query finds the pair interfering.
