@@ -269,9 +269,12 @@ void Checker::check_segment(const SegmentCertificate& segment,
                                            std::to_string(step.step);
       transitions_->check(*previous, step, previous_radius, radius, previous_placed, placed, cp,
                           where_transition, piece_variation(planned, *previous, step));
+      const VertexRouteBound vertex_bound = [&](std::size_t p) {
+        return transitions_->vertex_route_bound(p, *previous, step, previous_placed, placed);
+      };
       check_self_pair_transition(*cell_, certificate_, *previous, step, previous->to_next,
                                  transitions_->hull_bounds(), transitions_->self_pair_bounds(),
-                                 previous_distance,
+                                 vertex_bound, previous_distance,
                                  distance, ledger_, facts_, where_transition);
     }
     previous_radius = std::move(radius);

@@ -93,7 +93,7 @@ void check_self_pair_transition(const CheckedCell& cell, const Certificate& head
                                 const StepCertificate& from, const StepCertificate& to,
                                 const TransitionRecord& claimed,
                                 const std::vector<std::optional<Rational>>& hull_bounds,
-                                const SelfPairBounds& bounds,
+                                const SelfPairBounds& bounds, const VertexRouteBound& vertex_bound,
                                 const SelfPairDistances& distance_from,
                                 const SelfPairDistances& distance_to, CheckLedger& ledger,
                                 ClaimFacts& facts, const std::string& where) {
@@ -125,8 +125,8 @@ void check_self_pair_transition(const CheckedCell& cell, const Certificate& head
         // (c > 0: not clamped up to 0). proof: proofs/two-ball-cover.md#revolution-vertex-bound
         const bool needed = !(proven || route < c_from + c_to) ||
                             std::max(kept, kept_gap(c_from, c_to, route)) < exact(header.tolerance);
-        if (needed && bounds.vertex && c_from > 0 && c_to > 0) {
-          if (const std::optional<Rational> vertex = bounds.vertex(p)) route = std::min(route, *vertex);
+        if (needed && vertex_bound && c_from > 0 && c_to > 0) {
+          if (const std::optional<Rational> vertex = vertex_bound(p)) route = std::min(route, *vertex);
         }
         proven = proven || route < c_from + c_to;
         kept = std::max(kept, kept_gap(c_from, c_to, route));

@@ -32,11 +32,12 @@ struct SelfPairBounds {
   /// M_b|a+1 for a pair whose hull a has a verified solid of revolution, else nullopt
   /// (proofs/two-ball-cover.md#revolution-route)
   std::vector<std::optional<Rational>> revolution;
-  /// The revolution route weighed vertex by vertex, M_v of pair p, decided on demand (it costs
-  /// a pass over hull b's vertices); nullopt where the pair has none. It holds only with both
-  /// ends' route distances c > 0 unclamped (proofs/two-ball-cover.md#revolution-vertex-bound).
-  std::function<std::optional<Rational>(std::size_t)> vertex;
 };
+
+/// The revolution route weighed vertex by vertex, M_v of pair p, decided on demand (it costs a
+/// pass over hull b's vertices); nullopt where the pair has none. It holds only with both ends'
+/// route distances c > 0 unclamped (proofs/two-ball-cover.md#revolution-vertex-bound).
+using VertexRouteBound = std::function<std::optional<Rational>(std::size_t pair)>;
 
 /// \brief The self pairs' verified distances at `step`. `placed_raw[i]`: hull i's raw
 /// vertices placed at the step (empty when the step check could not place it); `X_WL`: the
@@ -47,7 +48,8 @@ SelfPairDistances check_self_pair_evidence(
     const std::vector<Eigen::Isometry3d>& X_WL, CheckLedger& ledger, const std::string& where);
 
 /// \brief Decides min(M_a + M_b, M_b|a) < d_k + d_{k+1}, or for a pair with a revolution
-/// route min(M_b|a+1, M_v) < c_k + c_{k+1} (`bounds`, c the solid's distances), for every self pair, M_a and M_b the
+/// route min(M_b|a+1, M_v) < c_k + c_{k+1} (`bounds`, `vertex_bound` for M_v, c the solid's
+/// distances), for every self pair, M_a and M_b the
 /// hulls' verified motion bounds (`hull_bounds`, nullopt where none is proven), M_b|a the exact
 /// joint-sum bound of hull b over joints a+1..b (its motion in link a's frame). A failing pair
 /// fails the ledger when the transition claims to be certified; either way it makes it
@@ -59,7 +61,7 @@ void check_self_pair_transition(const CheckedCell& cell, const Certificate& head
                                 const StepCertificate& from, const StepCertificate& to,
                                 const TransitionRecord& claimed,
                                 const std::vector<std::optional<Rational>>& hull_bounds,
-                                const SelfPairBounds& bounds,
+                                const SelfPairBounds& bounds, const VertexRouteBound& vertex_bound,
                                 const SelfPairDistances& distance_from,
                                 const SelfPairDistances& distance_to, CheckLedger& ledger,
                                 ClaimFacts& facts, const std::string& where);

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <memory>
+#include <stdexcept>
 
 #include <fmt/core.h>
 
@@ -31,6 +31,9 @@ void TransitionCheck::check(const StepCertificate& from, const StepCertificate& 
   const std::vector<CheckedHull>& hulls = cell_.hulls();
   hull_bounds_.clear();
   self_pair_bounds_ = SelfPairBounds{};
+  increments_.clear();
+  checked_from_step_ = from.step;
+  checked_to_step_ = to.step;
   // A step with the wrong joint count was already rejected by the step check; reading its q
   // here would run past the vector (found reviewing for the checker fuzz target).
   const int joints = cell_.robot().joint_count();
@@ -108,19 +111,26 @@ void TransitionCheck::check(const StepCertificate& from, const StepCertificate& 
                             : std::nullopt);
   }
   // M_v is decided only for the pairs whose other routes leave it needed (check_self_pair_transition).
-  const auto increments_kept = std::make_shared<std::vector<Rational>>(increments);
-  self_pair_bounds_.vertex = [this, &from, &to, &placed_from, &placed_to,
-                              increments_kept](std::size_t p) -> std::optional<Rational> {
-    const int b = cell_.self_pairs()[p].second;
-    const auto link = static_cast<std::size_t>(cell_.hulls()[static_cast<std::size_t>(b)].link);
-    if (p >= from.self_pairs.size() || p >= to.self_pairs.size() || static_cast<std::size_t>(b) >= placed_from.size() ||
-        static_cast<std::size_t>(b) >= placed_to.size() || link < 1 || link > increments_kept->size()) {
-      return std::nullopt;
-    }
-    return vertex_route_.bound(p, from.self_pairs[p], to.self_pairs[p], from_frames_.X_WL[link],
-                               to_frames_.X_WL[link], placed_from[static_cast<std::size_t>(b)],
-                               placed_to[static_cast<std::size_t>(b)], (*increments_kept)[link - 1]);
-  };
+  increments_ = std::move(increments);
+}
+
+std::optional<Rational> TransitionCheck::vertex_route_bound(
+    std::size_t p, const StepCertificate& from, const StepCertificate& to,
+    const std::vector<std::vector<Eigen::Vector3d>>& placed_from,
+    const std::vector<std::vector<Eigen::Vector3d>>& placed_to) {
+  if (from.step != checked_from_step_ || to.step != checked_to_step_) {
+    throw std::logic_error("TransitionCheck::vertex_route_bound: not the last checked transition");
+  }
+  if (p >= cell_.self_pairs().size()) return std::nullopt;
+  const int b = cell_.self_pairs()[p].second;
+  const auto link = static_cast<std::size_t>(cell_.hulls()[static_cast<std::size_t>(b)].link);
+  if (p >= from.self_pairs.size() || p >= to.self_pairs.size() || static_cast<std::size_t>(b) >= placed_from.size() ||
+      static_cast<std::size_t>(b) >= placed_to.size() || link < 1 || link > increments_.size()) {
+    return std::nullopt;
+  }
+  return vertex_route_.bound(p, from.self_pairs[p], to.self_pairs[p], from_frames_.X_WL[link],
+                             to_frames_.X_WL[link], placed_from[static_cast<std::size_t>(b)],
+                             placed_to[static_cast<std::size_t>(b)], increments_[link - 1]);
 }
 
 

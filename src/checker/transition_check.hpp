@@ -45,10 +45,15 @@ class TransitionCheck {
   ///   (proofs/two-ball-cover.md#relative-frame, proofs/motion-bound.md#lemma-axis-distance-along-step);
   /// - revolution: for a pair whose hull a has a verified solid of revolution, hull b's bound
   ///   with joints 1..a+1 frozen (the same two forms; proofs/two-ball-cover.md#revolution-route);
-  /// - vertex: M_v, on demand, where hull b's own revolute joint is all that moves it relative to
-  ///   that solid (proofs/two-ball-cover.md#revolution-vertex-bound); it reads the arguments of
-  ///   the last check(), which must still be alive.
   const SelfPairBounds& self_pair_bounds() const { return self_pair_bounds_; }
+  /// M_v of pair p over the last check()'s transition, exactly, where hull b's own revolute
+  /// joint is all that moves it relative to hull a's solid (proofs/two-ball-cover.md#revolution-vertex-bound);
+  /// nullopt where the pair has none or a witness is unusable. `from`, `to` and the placed hulls
+  /// are that check()'s (its frames and increments are reused); another transition's steps
+  /// throw std::logic_error.
+  std::optional<Rational> vertex_route_bound(std::size_t p, const StepCertificate& from, const StepCertificate& to,
+                                             const std::vector<std::vector<Eigen::Vector3d>>& placed_from,
+                                             const std::vector<std::vector<Eigen::Vector3d>>& placed_to);
 
  private:
   /// Hull b's exact bound with joints 1..frozen held still: the smaller of the joint sum over
@@ -90,6 +95,8 @@ class TransitionCheck {
   MotionClearances& clearances_;
   std::vector<std::optional<Rational>> hull_bounds_;
   SelfPairBounds self_pair_bounds_;
+  std::vector<Rational> increments_;  ///< the last check()'s exact joint increments (or variations)
+  int checked_from_step_ = -1, checked_to_step_ = -1;  ///< the last check()'s steps
   VertexRouteCheck vertex_route_;
   kinematics::Workspace from_frames_, to_frames_;  ///< this checker's own FK at both ends
 };

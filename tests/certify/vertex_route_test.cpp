@@ -204,7 +204,7 @@ TEST(VertexRoute, TheCheckerFormsItExactlyFromTheCertificateAndRefusesAWitnessOn
       transitions.check(from, to, no_radius, no_radius, placed_from, placed_to, false, "t");
       const SelfPairBounds& bounds = transitions.self_pair_bounds();
       for (std::size_t p = 0; p < cell->self_pairs().size(); ++p) {
-        const std::optional<Rational> vertex_bound = bounds.vertex(p);
+        const std::optional<Rational> vertex_bound = transitions.vertex_route_bound(p, from, to, placed_from, placed_to);
         if (!vertex_bound) continue;
         const int b = cell->self_pairs()[p].second;
         const int joint = cell->hulls()[static_cast<std::size_t>(b)].link;
@@ -229,10 +229,10 @@ TEST(VertexRoute, TheCheckerFormsItExactlyFromTheCertificateAndRefusesAWitnessOn
         // A witness whose plane passes beyond one of hull b's vertices gives no excess: refused.
         to.self_pairs[p].witness.offset_b += 1.0;
         transitions.check(from, to, no_radius, no_radius, placed_from, placed_to, false, "t");
-        EXPECT_FALSE(transitions.self_pair_bounds().vertex(p).has_value());
+        EXPECT_FALSE(transitions.vertex_route_bound(p, from, to, placed_from, placed_to).has_value());
         to.self_pairs[p].witness.offset_b = std::numeric_limits<double>::infinity();
         transitions.check(from, to, no_radius, no_radius, placed_from, placed_to, false, "t");
-        EXPECT_FALSE(transitions.self_pair_bounds().vertex(p).has_value());
+        EXPECT_FALSE(transitions.vertex_route_bound(p, from, to, placed_from, placed_to).has_value());
         refused = true;
       }
     }
