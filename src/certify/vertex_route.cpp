@@ -23,7 +23,8 @@ namespace {
 
 // M = 16 u S / N rounded up, S = |n|_1 V + |o_b| with V >= |x|_inf for every placed point x the
 // end evaluates, N >= |n|: (n.x - o_b) / N evaluated in round-to-nearest (any order, with or
-// without FMA), less M, is at most (n.x - o_b) / |n| where that is >= 0. Needs an active
+// without FMA, divided by N or multiplied by RN(1/N)), less M, is at most (n.x - o_b) / |n|
+// where that is >= 0. Needs an active
 // UpwardRoundingScope. proof: proofs/two-ball-cover.md#vertex-excess
 double excess_margin_up(const geometry::SeparationWitness& witness, double largest_coordinate,
                         double normal_length_up) {
@@ -85,6 +86,7 @@ bool VertexRouteEnd::reset(const StepAxisRadii& radii, std::size_t p, const Prob
     normal_length_up_ = r::sqrt_up(r::dot_up(witness_.normal.data(), witness_.normal.data()));
     margin_ = excess_margin_up(witness_, largest_coordinate, normal_length_up_);
   }
+  inverse_normal_length_ = 1.0 / normal_length_up_;  // round-to-nearest: the margin covers it
   thread_local std::vector<Eigen::Vector3d> centers_W;
   kinematics::place_points(X_WL_, b.vertex_cluster_centers_L, centers_W);
   cluster_excess_.resize(clusters.size());
@@ -102,7 +104,7 @@ bool VertexRouteEnd::reset(const StepAxisRadii& radii, std::size_t p, const Prob
 double VertexRouteEnd::excess_of(const Eigen::Vector3d& placed_W, double radius) const {
   // Round-to-nearest: the margin covers the rounding, and the radius is taken off with room to
   // spare (a negative result stands for 0: every vertex's exact e is >= 0).
-  const double excess = (witness_.normal.dot(placed_W) - witness_.offset_b) / normal_length_up_ - margin_ -
+  const double excess = (witness_.normal.dot(placed_W) - witness_.offset_b) * inverse_normal_length_ - margin_ -
                         radius * (1.0 + 4.0 * std::numeric_limits<double>::epsilon());
   return excess > 0.0 ? excess : 0.0;
 }

@@ -59,6 +59,7 @@ class VertexRouteEnd {
   Eigen::Isometry3d X_WL_ = Eigen::Isometry3d::Identity();  ///< hull b's link at this end
   geometry::SeparationWitness witness_;
   double normal_length_up_ = 0.0;
+  double inverse_normal_length_ = 0.0;  ///< RN(1 / normal_length_up_)
   double margin_ = 0.0;  ///< round-off allowance of e (proofs/two-ball-cover.md#vertex-excess)
   std::vector<double> cluster_excess_;
   std::vector<char> evaluated_;
