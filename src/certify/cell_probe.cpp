@@ -54,7 +54,8 @@ CellProbe::CellProbe(const RobotCell& cell)
       has_warm_normal_(cell.hulls().size() * static_cast<std::size_t>(cell.obstacles().size()), 0),
       climb_hints_(cell.hulls().size() * static_cast<std::size_t>(cell.obstacles().size()), 0),
       simplex_hints_(cell.hulls().size() * static_cast<std::size_t>(cell.obstacles().size())),
-      unmoved_hulls_(cell.hulls().size()) {}
+      unmoved_hulls_(cell.hulls().size()),
+      last_centers_W_(cell.hulls().size()) {}
 
 bool CellProbe::reuse_unmoved_hull(int hull_index, const Eigen::Isometry3d& X_WL,
                                    ProbeResult& out) const {
@@ -224,6 +225,9 @@ void CellProbe::collect_candidates(HullProbe& hull, HullState& state) {
 void CellProbe::order_candidates(HullProbe& hull) {
   const RobotCell& cell = *cell_;
   hull.center_W = hull.X_WL * hull.hull.expanded_sphere_L.center;
+  std::optional<Eigen::Vector3d>& last_center_W = last_centers_W_[static_cast<std::size_t>(hull.index)];
+  if (last_center_W) hull.moved = (hull.center_W - *last_center_W).norm();
+  last_center_W = hull.center_W;
   hull.radius_W = placed_sphere_radius(hull.hull.expanded_sphere_L.radius_upper,
                                        cell.placement_error());
   ordered_candidates_.clear();
@@ -282,7 +286,11 @@ std::optional<geometry::PlacedHull> CellProbe::offset_template(const HullProbe& 
 // far leaves as it is. proof: proofs/fast-path.md#placed-separation
 bool CellProbe::separate_by_kept_normal(const HullProbe& hull, int o, std::size_t warm_slot,
                                         PairEvidence& evidence) {
-  if (!has_warm_normal_[warm_slot] || !(hull.smallest_clearance < kInfinity)) return false;
+  // After a long move the kept normal is stale: its bound would mostly fall short (wasted climbs).
+  if (!has_warm_normal_[warm_slot] || !(hull.smallest_clearance < kInfinity) ||
+      !(hull.moved < hull.smallest_clearance)) {
+    return false;
+  }
   const std::optional<geometry::PlacedHull> offset = offset_template(hull);
   if (!offset) return false;
   const std::optional<geometry::CertifiedSeparation> separation = geometry::certify_placed_separation(

@@ -101,6 +101,9 @@ class CellProbe {
     bool expanded_placed = false;  ///< placed_expanded_ holds this hull's placed offset
     bool raw_placed = false;       ///< placed_raw_ holds this hull's placed raw hull
     double smallest_clearance = std::numeric_limits<double>::infinity();
+    /// How far the sphere's centre moved since this CellProbe's last probe of the hull
+    /// (infinity at the first): kept normals are tried only after a small move.
+    double moved = std::numeric_limits<double>::infinity();
   };
   void probe_hull(int hull_index, bool with_points, ProbeResult& out);
   void collect_candidates(HullProbe& hull, HullState& state);
@@ -161,6 +164,7 @@ class CellProbe {
   /// [hull * obstacles + obstacle]: GJK's last simplex on the offset's template
   std::vector<geometry::GjkSimplexHint> simplex_hints_;
   std::vector<UnmovedHull> unmoved_hulls_;  ///< [hull]
+  std::vector<std::optional<Eigen::Vector3d>> last_centers_W_;  ///< [hull], at the last probe
 };
 
 }  // namespace grpvss::certify
