@@ -16,9 +16,9 @@ TransitionCheck::TransitionCheck(const CheckedCell& cell, const Certificate& hea
       ledger_(ledger),
       facts_(facts),
       clearances_(clearances),
+      vertex_route_(cell, header),
       from_frames_(cell.robot()),
-      to_frames_(cell.robot()),
-      vertex_route_(cell, header) {}
+      to_frames_(cell.robot()) {}
 
 void TransitionCheck::check(const StepCertificate& from, const StepCertificate& to,
                             const std::vector<Rational>& radius_from,
