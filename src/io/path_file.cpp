@@ -2,6 +2,7 @@
 
 #include <cfloat>
 #include <climits>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -101,7 +102,7 @@ PathSegment read_segment(NumberReader& reader, const RobotModel& robot, int segm
       break;
     }
     case 3:
-      result.spec = CpLineSegment{read_world_target(reader, segment)};
+      result.spec = CpLineSegment{read_world_target(reader, segment), /*speed=*/std::nullopt};
       break;
     default:
       reader.fail(reader.line(),

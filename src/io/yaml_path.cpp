@@ -170,7 +170,7 @@ PathSegment read_segment(const CellYaml& yaml, const YAML::Node& entry, int numb
   const YAML::Node lin = entry["lin"];
   const std::string name = what + " lin";
   yaml.require_keys(lin, name, {"pose"});
-  segment.spec = CpLineSegment{read_pose(yaml, lin, name, units, placement)};
+  segment.spec = CpLineSegment{read_pose(yaml, lin, name, units, placement), /*speed=*/std::nullopt};
   return segment;
 }
 

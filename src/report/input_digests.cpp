@@ -70,7 +70,8 @@ InputDigests digest_input_files(const std::string& robot_file,
                                 const std::string& path_file) {
   return {{robot_file, sha256_hex_of_file(robot_file)},
           {environment_file, sha256_hex_of_file(environment_file)},
-          {path_file, sha256_hex_of_file(path_file)}};
+          {path_file, sha256_hex_of_file(path_file)},
+          /*length_unit=*/{}};
 }
 
 }  // namespace grpvss::report

@@ -327,7 +327,8 @@ void Session::perform_motion() {
     out_ << verdict_summary(run.result, ModelNames{&cell->robot, &cell->environment});
     last_digests_ = {{robot_file_, report::sha256_hex_of_file(robot_file_)},
                      {environment_file_, report::sha256_hex_of_file(environment_file_)},
-                     path_digest};
+                     path_digest,
+                     /*length_unit=*/{}};
     if (!results_file.empty()) {
       report::write_file_atomically(results_file,
                                     report::render_thesis_output(
