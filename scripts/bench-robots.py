@@ -7,7 +7,8 @@ Usage: scripts/bench-robots.py [--build DIR] [--repetitions N] [--runs N] [--jso
                                [--filter REGEX] [--no-processes]
 
 --json FILE   read the benchmark results from FILE (an earlier --benchmark_out) instead of
-              running grpvss_bench (the file is written there when it does not exist).
+              running grpvss_bench (the file is written there when it does not exist; a FILE
+              older than grpvss_bench is refused).
 --filter      benchmark filter (default: every robot benchmark and Table 3's CP operation).
 Benchmarks: CPU-time medians of --repetitions repetitions (the machine's load is printed:
 other processes inflate wall time; CPU time is what the tables use). Whole processes: --runs
@@ -33,11 +34,17 @@ def load_text():
 
 
 def run_benchmarks(build, repetitions, json_file, bench_filter):
+    binary = os.path.join(build, "tests", "grpvss_bench")
     if json_file and os.path.exists(json_file):
+        # Results older than the binary are another build's: a stale file once gave a table
+        # from before the revolution route without a word.
+        if os.path.exists(binary) and os.path.getmtime(json_file) < os.path.getmtime(binary):
+            sys.exit(f"bench-robots.py: {json_file} is older than {binary}: its results are another "
+                     "build's; remove it or name a new file")
         with open(json_file) as f:
             return json.load(f)
     out = json_file or tempfile.mktemp(suffix=".json")
-    command = [os.path.join(build, "tests", "grpvss_bench"), f"--benchmark_filter={bench_filter}",
+    command = [binary, f"--benchmark_filter={bench_filter}",
                f"--benchmark_repetitions={repetitions}", "--benchmark_report_aggregates_only=true",
                f"--benchmark_out={out}", "--benchmark_out_format=json"]
     print(f"# running {' '.join(command)} ({load_text()})", file=sys.stderr)
