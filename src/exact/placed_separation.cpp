@@ -48,6 +48,42 @@ class TiedMarks {
   std::uint32_t generation_ = 0;
 };
 
+/// The common case of tied_support_upper() with T = {x}, proven while climbing: each visited
+/// vertex's neighbours are valued in directed rounding once, and the climb stops where every
+/// one of them is at most the vertex's lower value. Returns that vertex's upper value, or
+/// nullopt where a neighbour is not clearly below or above (a plateau: left to
+/// tied_support_upper, which starts where this climb stopped). Saves the two passes over the
+/// end's neighbours that the climb, the tie search and the check would otherwise make. Needs
+/// an active UpwardRoundingScope.
+/// proof: proofs/fast-path.md#placed-separation (step 2, T = {x})
+std::optional<double> climbed_support_upper(const std::vector<Vector3d>& v, const HullSkeleton& skeleton,
+                                            const Vector3d& m, int& climb_start) {
+  int at = climb_start;
+  double at_upper = dot_up(m.data(), v[static_cast<std::size_t>(at)].data());
+  for (;;) {
+    const double at_lower = dot_down(m.data(), v[static_cast<std::size_t>(at)].data());
+    bool every_neighbour_below = true;
+    int best = -1;
+    double best_upper = at_upper;
+    const int end = skeleton.first[static_cast<std::size_t>(at) + 1];
+    for (int k = skeleton.first[static_cast<std::size_t>(at)]; k < end; ++k) {
+      const int y = skeleton.neighbours[static_cast<std::size_t>(k)];
+      const double upper = dot_up(m.data(), v[static_cast<std::size_t>(y)].data());
+      if (!(upper <= at_lower)) every_neighbour_below = false;  // NaN counts as not below
+      if (upper > best_upper) {
+        best = y;
+        best_upper = upper;
+      }
+    }
+    climb_start = at;
+    if (every_neighbour_below) return std::isfinite(at_upper) ? std::optional<double>(at_upper) : std::nullopt;
+    // Each move strictly raises the upper value, so no vertex is visited twice.
+    if (best < 0) return std::nullopt;
+    at = best;
+    at_upper = best_upper;
+  }
+}
+
 /// Upper bound of \f$\max_i m\cdot v_i\f$ over the template (coordinates at most max_abs),
 /// or nullopt. The climb's end x and the vertices connected to it whose values are within
 /// `tie` of its value form T; if every
@@ -111,7 +147,8 @@ std::optional<double> placed_max_upper(const PlacedHull& hull, const Vector3d& n
   const double spread = rotated.spread;
   // The template's support vertices for m_lo: the climb's end and the vertices tied with it
   // (a face or edge facing n), proven to bound every vertex (step 2).
-  const std::optional<double> top = tied_support_upper(*hull.vertices_L, *hull.skeleton, m_lo, hull.max_abs_L, climb_start);
+  std::optional<double> top = climbed_support_upper(*hull.vertices_L, *hull.skeleton, m_lo, climb_start);
+  if (!top) top = tied_support_upper(*hull.vertices_L, *hull.skeleton, m_lo, hull.max_abs_L, climb_start);
   if (!top) return std::nullopt;
   // max_i m.v_i <= m_lo.v_top + spread V; plus n.t (step 3).
   const double translation[3] = {X(0, 3), X(1, 3), X(2, 3)};
