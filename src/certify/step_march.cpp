@@ -174,7 +174,8 @@ CertifiedMarch::Trial CertifiedMarch::next_trial(const SegmentPath& path) {
 double CertifiedMarch::proposed_ptp_step(const SegmentPath& path, double max_step) {
   if (!aims_at_tolerance_) return predicted_ptp_step(path, max_step, false);
   const double held = predicted_ptp_step(path, max_step, true);
-  if (held >= max_step) return held;
+  // The nominal step is at most max_step, so this is the test below without computing it.
+  if (held >= max_step / 16.0) return held;
   const double nominal = predicted_ptp_step(path, max_step, false);
   if (held >= nominal / 16.0) return held;
   aims_at_tolerance_ = false;
