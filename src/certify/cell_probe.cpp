@@ -52,10 +52,16 @@ CellProbe::CellProbe(const RobotCell& cell)
       self_pairs_(cell),
       warm_normals_(cell.hulls().size() * static_cast<std::size_t>(cell.obstacles().size())),
       has_warm_normal_(cell.hulls().size() * static_cast<std::size_t>(cell.obstacles().size()), 0),
+      anchor_bounds_(cell.hulls().size() * static_cast<std::size_t>(cell.obstacles().size()), 0.0),
       climb_hints_(cell.hulls().size() * static_cast<std::size_t>(cell.obstacles().size()), 0),
       simplex_hints_(cell.hulls().size() * static_cast<std::size_t>(cell.obstacles().size())),
       unmoved_hulls_(cell.hulls().size()),
       last_centers_W_(cell.hulls().size()) {}
+
+void CellProbe::set_loose_terms(const LooseTerms& loose) {
+  loose_hulls_.assign(loose.hulls.begin(), loose.hulls.end());
+  self_pairs_.set_loose_pairs(loose.pairs);
+}
 
 bool CellProbe::reuse_unmoved_hull(int hull_index, const Eigen::Isometry3d& X_WL,
                                    ProbeResult& out) const {
@@ -286,16 +292,21 @@ std::optional<geometry::PlacedHull> CellProbe::offset_template(const HullProbe& 
 // far leaves as it is. proof: proofs/fast-path.md#placed-separation
 bool CellProbe::separate_by_kept_normal(const HullProbe& hull, int o, std::size_t warm_slot,
                                         PairEvidence& evidence) {
+  if (!has_warm_normal_[warm_slot]) return false;
+  // The bound the kept normal must reach: a farther obstacle's must not lower the hull's
+  // radius; a loose hull's nearest keeps kLooseKeep of its last closest witness's.
+  const bool nearest = !(hull.smallest_clearance < kInfinity);
+  const bool loose = nearest && static_cast<std::size_t>(hull.index) < loose_hulls_.size() &&
+                     loose_hulls_[static_cast<std::size_t>(hull.index)];
+  if (nearest && !loose) return false;
+  const double required = loose ? kLooseKeep * anchor_bounds_[warm_slot] : hull.smallest_clearance;
   // After a long move the kept normal is stale: its bound would mostly fall short (wasted climbs).
-  if (!has_warm_normal_[warm_slot] || !(hull.smallest_clearance < kInfinity) ||
-      !(hull.moved < hull.smallest_clearance)) {
-    return false;
-  }
+  if (!(required > 0.0) || !(hull.moved < (loose ? anchor_bounds_[warm_slot] : required))) return false;
   const std::optional<geometry::PlacedHull> offset = offset_template(hull);
   if (!offset) return false;
   const std::optional<geometry::CertifiedSeparation> separation = geometry::certify_placed_separation(
       *offset, climb_hints_[warm_slot], cell_->obstacles().vertices_W(o), warm_normals_[warm_slot]);
-  if (!separation || !(separation->lower_bound >= hull.smallest_clearance)) return false;
+  if (!separation || !(separation->lower_bound >= required)) return false;
   evidence.separated = true;
   evidence.witness = separation->witness;
   evidence.lower_bound = separation->lower_bound;
@@ -323,6 +334,7 @@ void CellProbe::keep_separation(const geometry::CertifiedPairResult& result, std
   evidence.lower_bound = result.clearance_lower_bound;
   warm_normals_[warm_slot] = result.witness->normal;
   has_warm_normal_[warm_slot] = 1;
+  anchor_bounds_[warm_slot] = result.clearance_lower_bound;
 }
 
 void CellProbe::record_clearance(HullProbe& hull, HullState& state, const PairEvidence& evidence,

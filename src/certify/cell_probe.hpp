@@ -18,6 +18,7 @@
 #include "grpvss/evidence/verification_result.hpp"
 #include "grpvss/geometry/separation_witness.hpp"
 #include "grpvss/kinematics/forward_kinematics.hpp"
+#include "loose_terms.hpp"
 #include "self_pair_probe.hpp"
 
 namespace grpvss::certify {
@@ -79,6 +80,9 @@ class CellProbe {
  public:
   explicit CellProbe(const RobotCell& cell);
 
+  /// The terms later probes may settle on their kept normals (until the next call).
+  void set_loose_terms(const LooseTerms& loose);
+
   /// Evaluates configuration q. `with_points`: also compute the exact interference points.
   void probe(const Eigen::VectorXd& q, bool with_points, ProbeResult& out);
 
@@ -115,7 +119,9 @@ class CellProbe {
                             PairEvidence& evidence);
   /// Before that, once a nearer obstacle has set the hull's smallest clearance: the pair's
   /// last witness normal proven again on the template (no GJK). Taken only when its bound does
-  /// not lower that clearance, so the hull's radius is the one the full query gives.
+  /// not lower that clearance, so the hull's radius is the one the full query gives. For a
+  /// loose hull's nearest obstacle, taken when its bound keeps kLooseKeep of the bound the
+  /// normal was found with.
   bool separate_by_kept_normal(const HullProbe& hull, int obstacle, std::size_t warm_slot,
                                PairEvidence& evidence);
   /// The placed offset on its template, or nullopt when the offset is placed instead.
@@ -160,6 +166,9 @@ class CellProbe {
   std::vector<std::pair<double, int>> ordered_candidates_;
   std::vector<Eigen::Vector3d> warm_normals_;  ///< [hull * obstacles + obstacle]
   std::vector<char> has_warm_normal_;
+  /// [hull * obstacles + obstacle]: the lower bound the kept normal was found with (by GJK)
+  std::vector<double> anchor_bounds_;
+  std::vector<char> loose_hulls_;  ///< [hull], set_loose_terms()
   std::vector<int> climb_hints_;  ///< [hull * obstacles + obstacle]: GJK's last support of A
   /// [hull * obstacles + obstacle]: GJK's last simplex on the offset's template
   std::vector<geometry::GjkSimplexHint> simplex_hints_;

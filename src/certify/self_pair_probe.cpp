@@ -27,6 +27,7 @@ SelfPairProbe::SelfPairProbe(const RobotCell& cell)
       is_placed_(cell.hulls().size(), 0),
       warm_normals_(cell.self_pairs().size()),
       has_warm_normal_(cell.self_pairs().size(), 0),
+      anchor_bounds_(cell.self_pairs().size(), 0.0),
       climb_hints_a_(cell.self_pairs().size(), 0),
       climb_hints_b_(cell.self_pairs().size(), 0),
       simplex_hints_(cell.self_pairs().size()) {}
@@ -59,8 +60,30 @@ bool SelfPairProbe::settle_by_templates(std::size_t p, const std::vector<Eigen::
   return true;
 }
 
+void SelfPairProbe::set_loose_pairs(const std::vector<char>& loose) { loose_.assign(loose.begin(), loose.end()); }
+
+// Any proven slab is evidence (proofs/fast-path.md#placed-separation; the checker re-checks it
+// on every placed vertex); only its distance, the pair's allowance, is a little smaller.
+bool SelfPairProbe::settle_by_kept_normal(std::size_t p, const std::vector<Eigen::Isometry3d>& X_WL,
+                                          SelfPairEvidence& evidence) {
+  if (p >= loose_.size() || !loose_[p] || !has_warm_normal_[p] || !(anchor_bounds_[p] > 0.0)) return false;
+  const SelfPairHulls& pair = cell_->self_pairs()[p];
+  const auto on_template = [&](int hull) { return cell_->hulls()[static_cast<std::size_t>(hull)].raw_on_template; };
+  if (!on_template(pair.a) && !on_template(pair.b)) return false;
+  const std::optional<geometry::CertifiedSeparation> separation = geometry::certify_placed_separation(
+      template_placed(pair.a, X_WL), climb_hints_a_[p], template_placed(pair.b, X_WL), climb_hints_b_[p],
+      warm_normals_[p]);
+  if (!separation || !(separation->lower_bound >= kLooseKeep * anchor_bounds_[p])) return false;
+  evidence.separated = true;
+  evidence.witness = separation->witness;
+  evidence.lower_bound = separation->lower_bound;
+  evidence.distance = exact_distance_lower_bound(separation->lower_bound, cell_->placement_error());
+  return true;
+}
+
 void SelfPairProbe::keep(std::size_t p, const geometry::CertifiedPairResult& result,
                          SelfPairEvidence& evidence) {
+  anchor_bounds_[p] = result.clearance_lower_bound;
   evidence.separated = true;
   evidence.witness = *result.witness;
   evidence.lower_bound = result.clearance_lower_bound;
@@ -140,7 +163,7 @@ bool SelfPairProbe::probe(const std::vector<Eigen::Isometry3d>& X_WL,
       add_revolution_bound(pairs[p], X_WL, out[p]);
       continue;
     }
-    if (settle_by_templates(p, X_WL, out[p])) {
+    if (settle_by_kept_normal(p, X_WL, out[p]) || settle_by_templates(p, X_WL, out[p])) {
       add_revolution_bound(pairs[p], X_WL, out[p]);
       continue;
     }

@@ -12,6 +12,7 @@
 #include "grpvss/geometry/gjk.hpp"
 #include "grpvss/geometry/placed_hull.hpp"
 #include "grpvss/geometry/separation_witness.hpp"
+#include "loose_terms.hpp"
 
 namespace grpvss::certify {
 
@@ -54,6 +55,8 @@ class SelfPairProbe {
   ///        its closest witness.
   bool probe(const std::vector<Eigen::Isometry3d>& X_WL, const std::vector<double>& hull_radius,
              std::vector<SelfPairEvidence>& out);
+  /// [pair]: the pairs later probes may settle on their kept normals (LooseTerms::pairs).
+  void set_loose_pairs(const std::vector<char>& loose);
 
  private:
   const std::vector<Eigen::Vector3d>& placed(int hull, const std::vector<Eigen::Isometry3d>& X_WL);
@@ -63,6 +66,10 @@ class SelfPairProbe {
   /// worth it (geometry::kTemplateClimbMinVertices); false when that proves nothing.
   bool settle_by_templates(std::size_t p, const std::vector<Eigen::Isometry3d>& X_WL,
                            SelfPairEvidence& evidence);
+  /// A loose pair's last witness normal proven again on the two templates (no GJK), kept when
+  /// its bound is at least kLooseKeep of the bound the normal was found with.
+  bool settle_by_kept_normal(std::size_t p, const std::vector<Eigen::Isometry3d>& X_WL,
+                             SelfPairEvidence& evidence);
   /// Keeps a proven separation of pair p as its evidence and its normal as the next warm start.
   void keep(std::size_t p, const geometry::CertifiedPairResult& result, SelfPairEvidence& evidence);
   /// The revolution route's distances of a separated pair whose hull a has a solid of revolution: the
@@ -79,6 +86,8 @@ class SelfPairProbe {
   std::vector<char> is_placed_;
   std::vector<Eigen::Vector3d> warm_normals_;  ///< [pair]
   std::vector<char> has_warm_normal_;
+  std::vector<double> anchor_bounds_;  ///< [pair]: the lower bound the kept normal was found with
+  std::vector<char> loose_;            ///< [pair], set_loose_pairs()
   std::vector<int> climb_hints_a_;  ///< [pair]: where GJK's climb on hull a starts
   std::vector<int> climb_hints_b_;  ///< [pair]: the same on hull b
   std::vector<geometry::GjkSimplexHint> simplex_hints_;  ///< [pair]: GJK's last simplex on the templates

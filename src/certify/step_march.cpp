@@ -136,6 +136,8 @@ bool CertifiedMarch::march_segment(const SegmentPath& path, int segment) {
     const bool refinement_region =
         trial_.any_expanded_interference || current_.any_expanded_interference;
     accept_trial(segment, path, trial.s1, transition, refinement_region);
+    loose_terms(transition, aims_at_tolerance_ ? 2.0 * cell_.tolerance() : 0.0, loose_);
+    probe_.set_loose_terms(loose_);
     retrying_ = false;
     if (!transition.certified) previous_slack_ = 0.0;
     keep_trend(taken);

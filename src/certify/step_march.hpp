@@ -69,6 +69,7 @@ class StepMarch {
   const RunSettings& settings_;
   MarchListener& listener_;
   CellProbe probe_;
+  LooseTerms loose_;  ///< of the last accepted transition, for the probes after it
   ProbeResult current_;
   ProbeResult trial_;
   long long probes_ = 0;

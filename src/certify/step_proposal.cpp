@@ -22,6 +22,34 @@ double transition_slack(const TransitionRecord& transition) {
   return slack;
 }
 
+void loose_terms(const TransitionRecord& transition, double held_margin, LooseTerms& out) {
+  const auto ratio = [&](double allowance, double bound) {
+    return bound > 0.0 ? (allowance - held_margin) / bound : std::numeric_limits<double>::infinity();
+  };
+  double smallest = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < transition.hull_motion_bounds.size(); ++i) {
+    smallest = std::min(smallest, ratio(transition.hull_allowances[i], transition.hull_motion_bounds[i]));
+  }
+  for (std::size_t p = 0; p < transition.self_pair_motion_bounds.size(); ++p) {
+    smallest = std::min(smallest,
+                        ratio(transition.self_pair_allowances[p], transition.self_pair_motion_bounds[p]));
+  }
+  // A limit that is not positive leaves no scale to compare with: nothing is loose but what
+  // did not move.
+  const double loose_from = smallest > 0.0 ? kLooseFactor * smallest : std::numeric_limits<double>::infinity();
+  const auto is_loose = [&](double allowance, double bound) {
+    return static_cast<char>(!(bound > 0.0) || ratio(allowance, bound) >= loose_from);
+  };
+  out.hulls.resize(transition.hull_motion_bounds.size());
+  for (std::size_t i = 0; i < out.hulls.size(); ++i) {
+    out.hulls[i] = is_loose(transition.hull_allowances[i], transition.hull_motion_bounds[i]);
+  }
+  out.pairs.resize(transition.self_pair_motion_bounds.size());
+  for (std::size_t p = 0; p < out.pairs.size(); ++p) {
+    out.pairs[p] = is_loose(transition.self_pair_allowances[p], transition.self_pair_motion_bounds[p]);
+  }
+}
+
 double basic_resolution_slack(const TransitionRecord& transition, double two_delta) {
   double slack = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < transition.hull_motion_bounds.size(); ++i) {

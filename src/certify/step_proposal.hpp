@@ -10,12 +10,22 @@
 #include <Eigen/Core>
 
 #include "grpvss/evidence/certificate.hpp"
+#include "loose_terms.hpp"
 
 namespace grpvss::certify {
 
 /// Smallest allowance / bound ratio over the hulls with a positive bound (>= 1 exactly when
 /// every hull is certified; +inf when nothing moves).
 double transition_slack(const TransitionRecord& transition);
+
+/// How much more room than the limiting term a term must have had to count as loose.
+constexpr double kLooseFactor = 1.5;
+
+/// The terms of `transition` far from limiting the step: a hull or self pair is loose when its
+/// ratio (allowance - held_margin) / bound is at least kLooseFactor times the smallest ratio (a
+/// term that did not move, bound <= 0, always is). The march's next probes may prove their
+/// clearance a little short of the closest witness (loose_terms.hpp). Written into `out`.
+void loose_terms(const TransitionRecord& transition, double held_margin, LooseTerms& out);
 
 /// The basic resolution next to a collision: every hull whose motion its clearances do not
 /// cover moves at most 2 Delta (the thesis's resolution); the others are covered anyway.

@@ -122,7 +122,7 @@ TEST_F(JointTrajectoryCli, ACubicOvershootBetweenClearWaypointsHitsThePostTheLin
   const CliRun cubic = run_cli(dir(), "verify " + inputs("ur5e-overshoot-cubic.csv"));
   ASSERT_EQ(cubic.exit_code, grpvss::app::kExitFinding) << cubic.out << cubic.err;
   EXPECT_TRUE(contains(cubic.out, "interference: forearm_link hull 0 / post, steps 15-25 "
-                                  "(0.656-1.126 s, clear by 1.244 s), unexpanded collides at "
+                                  "(0.656-1.134 s, clear by 1.253 s), unexpanded collides at "
                                   "steps 22-25"))
       << cubic.out;
   const CliRun samples =

@@ -273,6 +273,86 @@ TEST(CellProbe, AKeptNormalProvesAFartherObstacleWithoutChangingAnyHullsRadius) 
   EXPECT_GT(kept_normal_proofs, 20);  // the kept normals are exercised, not vacuous
 }
 
+// A term the march's last transition left loose (far from limiting the step) may be proven on its
+// kept witness normal alone, its nearest obstacle included: no GJK. Along the same UR5e motion
+// beside the post, one warm probe told every hull and pair is loose, against a fresh probe at
+// each configuration: every witness holds exactly on the placed offset or raw hulls (a proven
+// slab is evidence), such proofs are there (the normal kept from the step before, a bound below
+// the fresh query's), and each keeps at least kLooseKeep of the bound its normal was found
+// with (by GJK) -- below that the normal is stale and GJK runs again.
+TEST(CellProbe, ALooseTermIsProvenOnItsKeptNormalWhileItKeepsMostOfItsLastClosestBound) {
+  const cell::LoadedCell loaded = test::load_test_cell("ur5e-post.yaml");
+  const RobotCell cell = test::certified_cell(loaded);
+  ASSERT_FALSE(cell.self_pairs().empty());
+  Eigen::VectorXd from(6), to(6);
+  from << 0.0, -1.5708, 1.5708, 0.0, 0.0, 0.0;  // the cell's home
+  to << -0.9, -1.3, 1.4, -0.3, 0.5, 0.2;
+  CellProbe warm(cell);
+  warm.set_loose_terms({std::vector<char>(cell.hulls().size(), 1), std::vector<char>(cell.self_pairs().size(), 1)});
+  struct Kept {
+    Eigen::Vector3d normal;
+    double found_with = 0.0;  // the bound at the probe that found the normal
+  };
+  std::map<std::pair<int, int>, Kept> kept;  // (hull, obstacle) or (-1, pair) -> its normal
+  kinematics::Workspace workspace(cell.robot());
+  std::vector<Eigen::Vector3d> placed_offset_W;
+  std::vector<std::vector<Eigen::Vector3d>> placed_raw_W(cell.hulls().size());
+  int loose_hull_proofs = 0;
+  int loose_pair_proofs = 0;
+  // A bound proven on the normal kept from the step before, below the fresh query's: it must
+  // keep kLooseKeep of the bound that normal was found with.
+  const auto check_kept = [&](const std::pair<int, int>& key, const Eigen::Vector3d& normal, double bound,
+                              double fresh_bound, int step, int& proofs) {
+    const auto last = kept.find(key);
+    if (step > 0 && last != kept.end() && last->second.normal == normal && bound < fresh_bound - 1e-12) {
+      ++proofs;
+      EXPECT_GE(bound, kLooseKeep * last->second.found_with) << "step " << step;
+      return;
+    }
+    kept[key] = {normal, bound};
+  };
+  constexpr int kSteps = 60;
+  for (int k = 0; k <= kSteps; ++k) {
+    const Eigen::VectorXd q = from + (to - from) * (static_cast<double>(k) / kSteps);
+    ProbeResult warm_result, fresh_result;
+    warm.probe(q, /*with_points=*/false, warm_result);
+    CellProbe(cell).probe(q, /*with_points=*/false, fresh_result);
+    ASSERT_FALSE(warm_result.any_expanded_interference) << "step " << k;
+    kinematics::forward_kinematics(cell.chain(), q, workspace);
+    for (int i = 0; i < static_cast<int>(cell.hulls().size()); ++i) {
+      const LinkHull& hull = cell.hulls()[static_cast<std::size_t>(i)];
+      kinematics::place_points(workspace.X_WL[static_cast<std::size_t>(hull.link)], hull.expanded_L, placed_offset_W);
+      kinematics::place_points(workspace.X_WL[static_cast<std::size_t>(hull.link)], hull.raw_L,
+                               placed_raw_W[static_cast<std::size_t>(i)]);
+      const std::vector<PairEvidence> fresh_evidence = evidence_of(fresh_result, i);
+      for (const PairEvidence& evidence : evidence_of(warm_result, i)) {
+        ASSERT_TRUE(evidence.separated);
+        EXPECT_TRUE(witness_holds_exactly(evidence.witness, placed_offset_W,
+                                          cell.obstacles().vertices_W(evidence.obstacle)))
+            << "step " << k << " hull " << i << " obstacle " << evidence.obstacle;
+        const auto fresh = std::find_if(fresh_evidence.begin(), fresh_evidence.end(),
+                                        [&](const PairEvidence& e) { return e.obstacle == evidence.obstacle; });
+        ASSERT_NE(fresh, fresh_evidence.end());
+        check_kept({i, evidence.obstacle}, evidence.witness.normal, evidence.lower_bound, fresh->lower_bound, k,
+                   loose_hull_proofs);
+      }
+    }
+    for (std::size_t p = 0; p < cell.self_pairs().size(); ++p) {
+      const SelfPairEvidence& evidence = warm_result.self_pairs[p];
+      ASSERT_TRUE(evidence.separated) << "step " << k << " pair " << p;
+      const SelfPairHulls& pair = cell.self_pairs()[p];
+      EXPECT_TRUE(witness_holds_exactly(evidence.witness, placed_raw_W[static_cast<std::size_t>(pair.a)],
+                                        placed_raw_W[static_cast<std::size_t>(pair.b)]))
+          << "step " << k << " pair " << p;
+      check_kept({-1, static_cast<int>(p)}, evidence.witness.normal, evidence.lower_bound,
+                 fresh_result.self_pairs[p].lower_bound, k, loose_pair_proofs);
+    }
+  }
+  // Exercised, not vacuous: hulls' nearest obstacles and self pairs both.
+  EXPECT_GT(loose_hull_proofs, 20);
+  EXPECT_GT(loose_pair_proofs, 20);
+}
+
 // The probe is asked for points only when the world-frame query finds the pair interfering.
 // If the pair merely touches there, the link-frame images (the obstacle placed by X_LW, rounded
 // differently) may miss by a rounding, and the probe must fall back to the world-frame placed

@@ -24,6 +24,29 @@ TEST(StepProposal, TransitionSlackIsTheSmallestAllowanceOverBound) {
             std::numeric_limits<double>::infinity());
 }
 
+// Loose: a ratio (allowance - held margin) / bound at least kLooseFactor (1.5) times the
+// smallest, or no motion at all.
+TEST(StepProposal, LooseTermsHaveOneAndAHalfTimesTheLimitingRoomOrDoNotMove) {
+  ASSERT_EQ(kLooseFactor, 1.5);
+  // Hull ratios 1.5, 2.25 (exactly 1.5 x 1.5), 2.2, and one that does not move; pair ratios
+  // 3 and 1.4 (the smallest: 1.5 x 1.4 = 2.1 is the line).
+  TransitionRecord record = transition({2.0, 2.0, 1.0, 0.0}, {3.0, 4.5, 2.2, 0.0});
+  record.self_pair_motion_bounds = {1.0, 5.0};
+  record.self_pair_allowances = {3.0, 7.0};
+  LooseTerms loose;
+  loose_terms(record, 0.0, loose);
+  EXPECT_EQ(loose.hulls, (std::vector<char>{0, 1, 1, 1}));
+  EXPECT_EQ(loose.pairs, (std::vector<char>{1, 0}));
+  // Held to the tolerance (margin 1): ratios 1, 1.75, 1.2, -; 2, 1.2: the line is 1.5.
+  loose_terms(record, 1.0, loose);
+  EXPECT_EQ(loose.hulls, (std::vector<char>{0, 1, 0, 1}));
+  EXPECT_EQ(loose.pairs, (std::vector<char>{1, 0}));
+  // A limit with no room left (ratio <= 0) gives no scale: only what did not move is loose.
+  loose_terms(transition({1.0, 2.0, 0.0}, {0.5, 40.0, 0.0}), 1.0, loose);
+  EXPECT_EQ(loose.hulls, (std::vector<char>{0, 0, 1}));
+  EXPECT_TRUE(loose.pairs.empty());
+}
+
 // Next to a collision only the hulls their clearances do not cover are held to 2 Delta.
 TEST(StepProposal, BasicResolutionHoldsOnlyUncoveredHullsToTwoDelta) {
   // Hull 0 in contact (allowance 0) moves 0.8 <= 2 Delta = 1; hull 1 moves 4, far beyond
