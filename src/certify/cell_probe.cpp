@@ -56,6 +56,7 @@ CellProbe::CellProbe(const RobotCell& cell)
       climb_hints_(cell.hulls().size() * static_cast<std::size_t>(cell.obstacles().size()), 0),
       simplex_hints_(cell.hulls().size() * static_cast<std::size_t>(cell.obstacles().size())),
       unmoved_hulls_(cell.hulls().size()),
+      nearby_obstacles_(cell.hulls().size()),
       last_centers_W_(cell.hulls().size()) {}
 
 void CellProbe::set_loose_terms(const LooseTerms& loose) {
@@ -207,9 +208,18 @@ void CellProbe::collect_candidates(HullProbe& hull, HullState& state) {
     // The offset's vertices are placed only if an obstacle is a candidate (decide_expanded).
     // proof: proofs/fast-path.md#placed-box-enclosure
     state.broadphase_margin = 0.25 * cell.radii().radius(cell.radii().link_count() - 1, 0, 1);
-    cell.obstacles().index().candidates(
-        geometry::placed_box_enclosure(hull.hull.expanded_box_L, hull.X_WL),
-        state.broadphase_margin, candidates_);
+    const geometry::Aabb query_W = geometry::placed_box_enclosure(hull.hull.expanded_box_L, hull.X_WL);
+    // The tree is walked for a box with a margin's room to move; while the hull's inflated box
+    // stays inside it, its answer holds every candidate and a filter gives the same list.
+    NearbyObstacles& nearby = nearby_obstacles_[static_cast<std::size_t>(hull.index)];
+    const geometry::Aabb inflated_W = query_W.inflated(state.broadphase_margin);
+    if (!nearby.valid || !nearby.box_W.contains(inflated_W)) {
+      nearby.box_W = inflated_W.inflated(state.broadphase_margin);
+      cell.obstacles().index().candidates(nearby.box_W, 0.0, nearby.obstacles);
+      nearby.valid = true;
+    }
+    cell.obstacles().index().candidates_among(nearby.obstacles, query_W, state.broadphase_margin,
+                                              candidates_);
   }
   // Allowed contacts (a cell's allowed_contacts) are never verified; the certificate lists
   // them and the checker skips the same pairs.

@@ -173,6 +173,13 @@ class CellProbe {
   /// [hull * obstacles + obstacle]: GJK's last simplex on the offset's template
   std::vector<geometry::GjkSimplexHint> simplex_hints_;
   std::vector<UnmovedHull> unmoved_hulls_;  ///< [hull]
+  /// The broadphase's answer for a box around a hull's last query, with room to move.
+  struct NearbyObstacles {
+    bool valid = false;
+    geometry::Aabb box_W;
+    std::vector<int> obstacles;  ///< sorted
+  };
+  std::vector<NearbyObstacles> nearby_obstacles_;  ///< [hull]
   std::vector<std::optional<Eigen::Vector3d>> last_centers_W_;  ///< [hull], at the last probe
 };
 

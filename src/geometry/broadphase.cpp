@@ -120,6 +120,15 @@ void StaticObstacleIndex::candidates(const Aabb& query_W, double margin,
   std::sort(out.begin(), out.end());
 }
 
+void StaticObstacleIndex::candidates_among(const std::vector<int>& superset, const Aabb& query_W,
+                                           double margin, std::vector<int>& out) const {
+  out.clear();
+  const Aabb query = query_W.inflated(margin);
+  for (const int o : superset) {
+    if (boxes_[static_cast<std::size_t>(o)].overlaps(query)) out.push_back(o);
+  }
+}
+
 std::vector<int> StaticObstacleIndex::candidates(const std::vector<Eigen::Vector3d>& points_W,
                                                  double margin) const {
   std::vector<int> out;

@@ -1,5 +1,6 @@
 #include "grpvss/geometry/broadphase.hpp"
 
+#include <cmath>
 #include <random>
 
 #include <gtest/gtest.h>
@@ -50,6 +51,59 @@ TEST(Broadphase, NeverDropsAnObstacleWithinTheMargin) {
       EXPECT_GT(axis_gap(box, index.box(k)), margin);
     }
   }
+}
+
+// A probe walks the tree once for a box with room to move, then filters that answer while the
+// hull's inflated box stays inside: the filter must give exactly the tree's answer (the same
+// obstacles, in the same order), against the brute-force reference too.
+TEST(Broadphase, CandidatesAmongAnEnclosingBoxsAnswerAreTheTreesAnswer) {
+  std::mt19937_64 rng(4242);
+  std::uniform_real_distribution<double> position(-30.0, 30.0);
+  std::uniform_real_distribution<double> drift(-1.0, 1.0);
+  std::vector<std::vector<Vector3d>> obstacles;
+  for (int k = 0; k < 300; ++k) {
+    obstacles.push_back(test::random_prism(rng, Vector3d(position(rng), position(rng), position(rng)), 2.0));
+  }
+  const StaticObstacleIndex index(obstacles);
+  std::vector<int> enclosing, filtered, walked;
+  int filtered_queries = 0;
+  for (int walk = 0; walk < 40; ++walk) {
+    Vector3d center(position(rng), position(rng), position(rng));
+    const double margin = 0.5 + 0.25 * (walk % 8);
+    Aabb room;
+    for (int step = 0; step < 25; ++step, center += Vector3d(drift(rng), drift(rng), drift(rng))) {
+      const Aabb box = Aabb::of_points(test::random_prism(rng, center, 3.0));
+      const Aabb inflated = box.inflated(margin);
+      if (step == 0 || !room.contains(inflated)) {
+        room = inflated.inflated(margin);
+        index.candidates(room, 0.0, enclosing);
+      } else {
+        ++filtered_queries;
+      }
+      index.candidates_among(enclosing, box, margin, filtered);
+      index.candidates(box, margin, walked);
+      EXPECT_EQ(filtered, walked) << "walk " << walk << " step " << step;
+      std::vector<int> expected;
+      for (int k = 0; k < 300; ++k) {
+        if (axis_gap(box, Aabb::of_points(obstacles[static_cast<std::size_t>(k)])) <= margin) expected.push_back(k);
+      }
+      EXPECT_EQ(filtered, expected) << "walk " << walk << " step " << step;
+    }
+  }
+  EXPECT_GT(filtered_queries, 200);  // the filter is exercised, not only fresh walks
+}
+
+TEST(Broadphase, ContainsIsExactAndClosed) {
+  Aabb outer;
+  outer.lo = Vector3d(0, 0, 0);
+  outer.hi = Vector3d(1, 1, 1);
+  Aabb inner = outer;
+  EXPECT_TRUE(outer.contains(inner));  // closed: equal boxes
+  inner.hi.z() = std::nextafter(1.0, 2.0);
+  EXPECT_FALSE(outer.contains(inner));
+  inner.hi.z() = 0.5;
+  inner.lo.x() = std::nextafter(0.0, -1.0);
+  EXPECT_FALSE(outer.contains(inner));
 }
 
 TEST(Broadphase, TouchingBoxesAtExactlyTheMarginAreReturned) {

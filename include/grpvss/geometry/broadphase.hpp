@@ -32,6 +32,10 @@ struct Aabb {
   bool overlaps(const Aabb& other) const {
     return (lo.array() <= other.hi.array()).all() && (other.lo.array() <= hi.array()).all();
   }
+  /// \brief Exact test that \p other lies inside this box.
+  bool contains(const Aabb& other) const {
+    return (lo.array() <= other.lo.array()).all() && (other.hi.array() <= hi.array()).all();
+  }
   void extend(const Aabb& other) {
     lo = lo.cwiseMin(other.lo);
     hi = hi.cwiseMax(other.hi);
@@ -54,6 +58,11 @@ class StaticObstacleIndex {
   /// `query_W.inflated(margin)`, in increasing order. Every obstacle not listed is farther
   /// than \p margin from every point of \p query_W.
   void candidates(const Aabb& query_W, double margin, std::vector<int>& out) const;
+  /// \brief The answer of candidates(query_W, margin, out) taken from \p superset (sorted, and
+  /// holding every obstacle whose box meets `query_W.inflated(margin)`: e.g. the candidates of
+  /// a box containing that inflated box), without walking the tree.
+  void candidates_among(const std::vector<int>& superset, const Aabb& query_W, double margin,
+                        std::vector<int>& out) const;
   /// \brief Convenience: the box of \p points_W, then candidates().
   std::vector<int> candidates(const std::vector<Eigen::Vector3d>& points_W, double margin) const;
 
