@@ -46,6 +46,7 @@ StepCertificate CertificateRecorder::certificate_step(const ProbeResult& probe, 
                                                         evidence.separated, evidence.witness,
                                                         evidence.lower_bound});
   }
+  step.self_pairs.reserve(probe.self_pairs.size());
   for (const SelfPairEvidence& pair : probe.self_pairs) {
     step.self_pairs.push_back({pair.separated, pair.witness, pair.lower_bound, pair.revolution_lower_bound});
   }
