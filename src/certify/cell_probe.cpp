@@ -60,8 +60,8 @@ CellProbe::CellProbe(const RobotCell& cell)
       last_centers_W_(cell.hulls().size()) {}
 
 void CellProbe::set_loose_terms(const LooseTerms& loose) {
-  loose_hulls_.assign(loose.hulls.begin(), loose.hulls.end());
-  self_pairs_.set_loose_pairs(loose.pairs);
+  loose_hull_floors_.assign(loose.hull_floors.begin(), loose.hull_floors.end());
+  self_pairs_.set_loose_pairs(loose.pair_floors);
 }
 
 bool CellProbe::reuse_unmoved_hull(int hull_index, const Eigen::Isometry3d& X_WL,
@@ -304,12 +304,15 @@ bool CellProbe::separate_by_kept_normal(const HullProbe& hull, int o, std::size_
                                         PairEvidence& evidence) {
   if (!has_warm_normal_[warm_slot]) return false;
   // The bound the kept normal must reach: a farther obstacle's must not lower the hull's
-  // radius; a loose hull's nearest keeps kLooseKeep of its last closest witness's.
+  // radius; a loose hull's nearest keeps kLooseKeep of its last closest witness's and the
+  // radius its floor asks (radius = Delta + bound).
   const bool nearest = !(hull.smallest_clearance < kInfinity);
-  const bool loose = nearest && static_cast<std::size_t>(hull.index) < loose_hulls_.size() &&
-                     loose_hulls_[static_cast<std::size_t>(hull.index)];
+  const auto h = static_cast<std::size_t>(hull.index);
+  const bool loose = nearest && h < loose_hull_floors_.size() && loose_hull_floors_[h] < kInfinity;
   if (nearest && !loose) return false;
-  const double required = loose ? kLooseKeep * anchor_bounds_[warm_slot] : hull.smallest_clearance;
+  const double required =
+      loose ? std::max(kLooseKeep * anchor_bounds_[warm_slot], loose_hull_floors_[h] - cell_->tolerance())
+            : hull.smallest_clearance;
   // After a long move the kept normal is stale: its bound would mostly fall short (wasted climbs).
   if (!(required > 0.0) || !(hull.moved < (loose ? anchor_bounds_[warm_slot] : required))) return false;
   const std::optional<geometry::PlacedHull> offset = offset_template(hull);

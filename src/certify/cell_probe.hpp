@@ -121,6 +121,7 @@ class CellProbe {
   /// last witness normal proven again on the template (no GJK). Taken only when its bound does
   /// not lower that clearance, so the hull's radius is the one the full query gives. For a
   /// loose hull's nearest obstacle, taken when its bound keeps kLooseKeep of the bound the
+  /// normal was found with and the hull's floor (LooseTerms); the
   /// normal was found with.
   bool separate_by_kept_normal(const HullProbe& hull, int obstacle, std::size_t warm_slot,
                                PairEvidence& evidence);
@@ -168,7 +169,7 @@ class CellProbe {
   std::vector<char> has_warm_normal_;
   /// [hull * obstacles + obstacle]: the lower bound the kept normal was found with (by GJK)
   std::vector<double> anchor_bounds_;
-  std::vector<char> loose_hulls_;  ///< [hull], set_loose_terms()
+  std::vector<double> loose_hull_floors_;  ///< [hull], set_loose_terms()
   std::vector<int> climb_hints_;  ///< [hull * obstacles + obstacle]: GJK's last support of A
   /// [hull * obstacles + obstacle]: GJK's last simplex on the offset's template
   std::vector<geometry::GjkSimplexHint> simplex_hints_;

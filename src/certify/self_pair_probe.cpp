@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 #include "grpvss/exact/certified_query.hpp"
@@ -60,13 +61,18 @@ bool SelfPairProbe::settle_by_templates(std::size_t p, const std::vector<Eigen::
   return true;
 }
 
-void SelfPairProbe::set_loose_pairs(const std::vector<char>& loose) { loose_.assign(loose.begin(), loose.end()); }
+void SelfPairProbe::set_loose_pairs(const std::vector<double>& floors) {
+  loose_floors_.assign(floors.begin(), floors.end());
+}
 
 // Any proven slab is evidence (proofs/fast-path.md#placed-separation; the checker re-checks it
 // on every placed vertex); only its distance, the pair's allowance, is a little smaller.
 bool SelfPairProbe::settle_by_kept_normal(std::size_t p, const std::vector<Eigen::Isometry3d>& X_WL,
                                           SelfPairEvidence& evidence) {
-  if (p >= loose_.size() || !loose_[p] || !has_warm_normal_[p] || !(anchor_bounds_[p] > 0.0)) return false;
+  if (p >= loose_floors_.size() || !(loose_floors_[p] < std::numeric_limits<double>::infinity()) ||
+      !has_warm_normal_[p] || !(anchor_bounds_[p] > 0.0)) {
+    return false;
+  }
   const SelfPairHulls& pair = cell_->self_pairs()[p];
   const auto on_template = [&](int hull) { return cell_->hulls()[static_cast<std::size_t>(hull)].raw_on_template; };
   if (!on_template(pair.a) && !on_template(pair.b)) return false;
@@ -74,10 +80,12 @@ bool SelfPairProbe::settle_by_kept_normal(std::size_t p, const std::vector<Eigen
       template_placed(pair.a, X_WL), climb_hints_a_[p], template_placed(pair.b, X_WL), climb_hints_b_[p],
       warm_normals_[p]);
   if (!separation || !(separation->lower_bound >= kLooseKeep * anchor_bounds_[p])) return false;
+  const double distance = exact_distance_lower_bound(separation->lower_bound, cell_->placement_error());
+  if (!(distance >= loose_floors_[p])) return false;
   evidence.separated = true;
   evidence.witness = separation->witness;
   evidence.lower_bound = separation->lower_bound;
-  evidence.distance = exact_distance_lower_bound(separation->lower_bound, cell_->placement_error());
+  evidence.distance = distance;
   return true;
 }
 

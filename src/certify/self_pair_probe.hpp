@@ -55,8 +55,9 @@ class SelfPairProbe {
   ///        its closest witness.
   bool probe(const std::vector<Eigen::Isometry3d>& X_WL, const std::vector<double>& hull_radius,
              std::vector<SelfPairEvidence>& out);
-  /// [pair]: the pairs later probes may settle on their kept normals (LooseTerms::pairs).
-  void set_loose_pairs(const std::vector<char>& loose);
+  /// [pair]: the pairs later probes may settle on their kept normals, and the distance each
+  /// must keep (LooseTerms::pair_floors).
+  void set_loose_pairs(const std::vector<double>& floors);
 
  private:
   const std::vector<Eigen::Vector3d>& placed(int hull, const std::vector<Eigen::Isometry3d>& X_WL);
@@ -67,7 +68,8 @@ class SelfPairProbe {
   bool settle_by_templates(std::size_t p, const std::vector<Eigen::Isometry3d>& X_WL,
                            SelfPairEvidence& evidence);
   /// A loose pair's last witness normal proven again on the two templates (no GJK), kept when
-  /// its bound is at least kLooseKeep of the bound the normal was found with.
+  /// its bound is at least kLooseKeep of the bound the normal was found with and its distance
+  /// is at least the pair's floor.
   bool settle_by_kept_normal(std::size_t p, const std::vector<Eigen::Isometry3d>& X_WL,
                              SelfPairEvidence& evidence);
   /// Keeps a proven separation of pair p as its evidence and its normal as the next warm start.
@@ -87,7 +89,7 @@ class SelfPairProbe {
   std::vector<Eigen::Vector3d> warm_normals_;  ///< [pair]
   std::vector<char> has_warm_normal_;
   std::vector<double> anchor_bounds_;  ///< [pair]: the lower bound the kept normal was found with
-  std::vector<char> loose_;            ///< [pair], set_loose_pairs()
+  std::vector<double> loose_floors_;   ///< [pair], set_loose_pairs()
   std::vector<int> climb_hints_a_;  ///< [pair]: where GJK's climb on hull a starts
   std::vector<int> climb_hints_b_;  ///< [pair]: the same on hull b
   std::vector<geometry::GjkSimplexHint> simplex_hints_;  ///< [pair]: GJK's last simplex on the templates

@@ -118,6 +118,8 @@ bool CertifiedMarch::march_segment(const SegmentPath& path, int segment) {
       if (cp == Outcome::kRetry) continue;
       if (cp == Outcome::kStop) return false;
     }
+    // A retry is probed in full: a loose term short of its floor may be what failed the trial.
+    if (!trial.first) probe_.set_loose_terms(LooseTerms{});
     probe_trial(*q1);
     step_radii_.keep(trial_);  // evaluated once per configuration: the proposal reuses them
     const TransitionRecord transition =
@@ -136,8 +138,7 @@ bool CertifiedMarch::march_segment(const SegmentPath& path, int segment) {
     const bool refinement_region =
         trial_.any_expanded_interference || current_.any_expanded_interference;
     accept_trial(segment, path, trial.s1, transition, refinement_region);
-    loose_terms(transition, aims_at_tolerance_ ? 2.0 * cell_.tolerance() : 0.0, loose_);
-    probe_.set_loose_terms(loose_);
+    keep_loose_terms(transition);
     retrying_ = false;
     if (!transition.certified) previous_slack_ = 0.0;
     keep_trend(taken);
@@ -145,6 +146,18 @@ bool CertifiedMarch::march_segment(const SegmentPath& path, int segment) {
     advance(segment, trial.s1, end_);
   }
   return true;
+}
+
+// The terms the accepted transition left loose, for the probes of the next step; its end is the
+// trial just accepted.
+void CertifiedMarch::keep_loose_terms(const TransitionRecord& transition) {
+  loose_hull_radii_.resize(trial_.hulls.size());
+  for (std::size_t i = 0; i < trial_.hulls.size(); ++i) loose_hull_radii_[i] = trial_.hulls[i].radius;
+  loose_pair_distances_.resize(trial_.self_pairs.size());
+  for (std::size_t p = 0; p < trial_.self_pairs.size(); ++p) loose_pair_distances_[p] = trial_.self_pairs[p].distance;
+  loose_terms(transition, aims_at_tolerance_ ? 2.0 * cell_.tolerance() : 0.0, loose_hull_radii_,
+              loose_pair_distances_, loose_);
+  probe_.set_loose_terms(loose_);
 }
 
 CertifiedMarch::Trial CertifiedMarch::next_trial(const SegmentPath& path) {

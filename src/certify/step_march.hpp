@@ -69,7 +69,6 @@ class StepMarch {
   const RunSettings& settings_;
   MarchListener& listener_;
   CellProbe probe_;
-  LooseTerms loose_;  ///< of the last accepted transition, for the probes after it
   ProbeResult current_;
   ProbeResult trial_;
   long long probes_ = 0;
@@ -93,6 +92,8 @@ class CertifiedMarch : public StepMarch {
   double predicted_ptp_step(const SegmentPath& path, double max_step, bool held) const;
   /// The PTP proposal of this march; gives up aiming at g >= Delta where it would creep.
   double proposed_ptp_step(const SegmentPath& path, double max_step);
+  /// Tells the probe which terms `transition` (just accepted) left loose (step_proposal.hpp).
+  void keep_loose_terms(const TransitionRecord& transition);
   Outcome check_cp_model(const SegmentPath& path, const Trial& trial, const Eigen::VectorXd& q1,
                          int segment, double& deviation);
   /// After the trial's transition was judged: the next step's size, or a retry.
@@ -134,6 +135,9 @@ class CertifiedMarch : public StepMarch {
   mutable std::vector<ProposalHull> proposal_hulls_;
   mutable std::vector<double> proposal_axis_distances_;
   CpModelFailures model_failures_;  ///< the failed CP-model trials from the current step
+  LooseTerms loose_;  ///< of the last accepted transition, for the probes after it
+  std::vector<double> loose_hull_radii_;      ///< scratch of keep_loose_terms()
+  std::vector<double> loose_pair_distances_;  ///< scratch of keep_loose_terms()
 };
 
 class ThesisMarch : public StepMarch {

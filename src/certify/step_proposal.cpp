@@ -22,7 +22,9 @@ double transition_slack(const TransitionRecord& transition) {
   return slack;
 }
 
-void loose_terms(const TransitionRecord& transition, double held_margin, LooseTerms& out) {
+void loose_terms(const TransitionRecord& transition, double held_margin, const std::vector<double>& hull_radii,
+                 const std::vector<double>& pair_distances, LooseTerms& out) {
+  constexpr double kNotLoose = std::numeric_limits<double>::infinity();
   const auto ratio = [&](double allowance, double bound) {
     return bound > 0.0 ? (allowance - held_margin) / bound : std::numeric_limits<double>::infinity();
   };
@@ -37,16 +39,20 @@ void loose_terms(const TransitionRecord& transition, double held_margin, LooseTe
   // A limit that is not positive leaves no scale to compare with: nothing is loose but what
   // did not move.
   const double loose_from = smallest > 0.0 ? kLooseFactor * smallest : std::numeric_limits<double>::infinity();
-  const auto is_loose = [&](double allowance, double bound) {
-    return static_cast<char>(!(bound > 0.0) || ratio(allowance, bound) >= loose_from);
+  const auto floor_of = [&](double allowance, double bound, double clearance) {
+    if (bound > 0.0 && !(ratio(allowance, bound) >= loose_from)) return kNotLoose;
+    return held_margin + kLooseRoom * std::max(bound, 0.0) - clearance;
   };
-  out.hulls.resize(transition.hull_motion_bounds.size());
-  for (std::size_t i = 0; i < out.hulls.size(); ++i) {
-    out.hulls[i] = is_loose(transition.hull_allowances[i], transition.hull_motion_bounds[i]);
+  out.hull_floors.resize(transition.hull_motion_bounds.size());
+  for (std::size_t i = 0; i < out.hull_floors.size(); ++i) {
+    out.hull_floors[i] = floor_of(transition.hull_allowances[i], transition.hull_motion_bounds[i], hull_radii.at(i));
   }
-  out.pairs.resize(transition.self_pair_motion_bounds.size());
-  for (std::size_t p = 0; p < out.pairs.size(); ++p) {
-    out.pairs[p] = is_loose(transition.self_pair_allowances[p], transition.self_pair_motion_bounds[p]);
+  out.pair_floors.resize(transition.self_pair_motion_bounds.size());
+  for (std::size_t p = 0; p < out.pair_floors.size(); ++p) {
+    const bool by_revolution = p < transition.self_pair_by_revolution.size() && transition.self_pair_by_revolution[p];
+    out.pair_floors[p] = by_revolution ? kNotLoose
+                                       : floor_of(transition.self_pair_allowances[p],
+                                                  transition.self_pair_motion_bounds[p], pair_distances.at(p));
   }
 }
 

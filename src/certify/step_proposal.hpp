@@ -21,11 +21,18 @@ double transition_slack(const TransitionRecord& transition);
 /// How much more room than the limiting term a term must have had to count as loose.
 constexpr double kLooseFactor = 1.5;
 
-/// The terms of `transition` far from limiting the step: a hull or self pair is loose when its
-/// ratio (allowance - held_margin) / bound is at least kLooseFactor times the smallest ratio (a
-/// term that did not move, bound <= 0, always is). The march's next probes may prove their
-/// clearance a little short of the closest witness (loose_terms.hpp). Written into `out`.
-void loose_terms(const TransitionRecord& transition, double held_margin, LooseTerms& out);
+/// The next transition should pass a loose term with this much room over the last one's bound.
+constexpr double kLooseRoom = 1.5;
+
+/// The terms of `transition` far from limiting the step, for the march's next probes
+/// (loose_terms.hpp), written into `out`. A hull or self pair is loose when its ratio
+/// (allowance - held_margin) / bound is at least kLooseFactor times the smallest ratio (a term
+/// that did not move, bound <= 0, always is); a pair held by its revolution route never is (its
+/// allowance is not its distance). Its floor keeps the next transition passing it with room:
+/// held_margin + kLooseRoom bound - its clearance at the transition's end (`hull_radii`,
+/// `pair_distances`: HullState::radius, SelfPairEvidence::distance there).
+void loose_terms(const TransitionRecord& transition, double held_margin, const std::vector<double>& hull_radii,
+                 const std::vector<double>& pair_distances, LooseTerms& out);
 
 /// The basic resolution next to a collision: every hull whose motion its clearances do not
 /// cover moves at most 2 Delta (the thesis's resolution); the others are covered anyway.

@@ -288,7 +288,10 @@ TEST(CellProbe, ALooseTermIsProvenOnItsKeptNormalWhileItKeepsMostOfItsLastCloses
   from << 0.0, -1.5708, 1.5708, 0.0, 0.0, 0.0;  // the cell's home
   to << -0.9, -1.3, 1.4, -0.3, 0.5, 0.2;
   CellProbe warm(cell);
-  warm.set_loose_terms({std::vector<char>(cell.hulls().size(), 1), std::vector<char>(cell.self_pairs().size(), 1)});
+  // Every term loose, with no floor: only kLooseKeep limits the kept normals.
+  const double no_floor = -std::numeric_limits<double>::infinity();
+  warm.set_loose_terms({std::vector<double>(cell.hulls().size(), no_floor),
+                        std::vector<double>(cell.self_pairs().size(), no_floor)});
   struct Kept {
     Eigen::Vector3d normal;
     double found_with = 0.0;  // the bound at the probe that found the normal

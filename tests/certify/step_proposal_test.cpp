@@ -25,26 +25,32 @@ TEST(StepProposal, TransitionSlackIsTheSmallestAllowanceOverBound) {
 }
 
 // Loose: a ratio (allowance - held margin) / bound at least kLooseFactor (1.5) times the
-// smallest, or no motion at all.
-TEST(StepProposal, LooseTermsHaveOneAndAHalfTimesTheLimitingRoomOrDoNotMove) {
+// smallest, or no motion at all; not a pair on its revolution route. The floor keeps the next
+// transition passing with kLooseRoom (1.5) times the bound: margin + 1.5 bound - clearance.
+TEST(StepProposal, LooseTermsHaveOneAndAHalfTimesTheLimitingRoomAndAFloorThatKeepsItPassing) {
   ASSERT_EQ(kLooseFactor, 1.5);
+  ASSERT_EQ(kLooseRoom, 1.5);
+  constexpr double kNot = std::numeric_limits<double>::infinity();
   // Hull ratios 1.5, 2.25 (exactly 1.5 x 1.5), 2.2, and one that does not move; pair ratios
-  // 3 and 1.4 (the smallest: 1.5 x 1.4 = 2.1 is the line).
+  // 3, 1.4 (the smallest: 1.5 x 1.4 = 2.1 is the line) and 5 (on its revolution route).
   TransitionRecord record = transition({2.0, 2.0, 1.0, 0.0}, {3.0, 4.5, 2.2, 0.0});
-  record.self_pair_motion_bounds = {1.0, 5.0};
-  record.self_pair_allowances = {3.0, 7.0};
+  record.self_pair_motion_bounds = {1.0, 5.0, 1.0};
+  record.self_pair_allowances = {3.0, 7.0, 5.0};
+  record.self_pair_by_revolution = {0, 0, 1};
+  const std::vector<double> radii{1.0, 2.5, 1.0, 0.25};
+  const std::vector<double> distances{2.0, 3.0, 4.0};
   LooseTerms loose;
-  loose_terms(record, 0.0, loose);
-  EXPECT_EQ(loose.hulls, (std::vector<char>{0, 1, 1, 1}));
-  EXPECT_EQ(loose.pairs, (std::vector<char>{1, 0}));
-  // Held to the tolerance (margin 1): ratios 1, 1.75, 1.2, -; 2, 1.2: the line is 1.5.
-  loose_terms(record, 1.0, loose);
-  EXPECT_EQ(loose.hulls, (std::vector<char>{0, 1, 0, 1}));
-  EXPECT_EQ(loose.pairs, (std::vector<char>{1, 0}));
+  loose_terms(record, 0.0, radii, distances, loose);
+  EXPECT_EQ(loose.hull_floors, (std::vector<double>{kNot, 1.5 * 2.0 - 2.5, 1.5 * 1.0 - 1.0, -0.25}));
+  EXPECT_EQ(loose.pair_floors, (std::vector<double>{1.5 * 1.0 - 2.0, kNot, kNot}));
+  // Held to the tolerance (margin 1): ratios 1, 1.75, 1.2, -; 2, 1.2, 4: the line is 1.5.
+  loose_terms(record, 1.0, radii, distances, loose);
+  EXPECT_EQ(loose.hull_floors, (std::vector<double>{kNot, 1.0 + 1.5 * 2.0 - 2.5, kNot, 1.0 - 0.25}));
+  EXPECT_EQ(loose.pair_floors, (std::vector<double>{1.0 + 1.5 * 1.0 - 2.0, kNot, kNot}));
   // A limit with no room left (ratio <= 0) gives no scale: only what did not move is loose.
-  loose_terms(transition({1.0, 2.0, 0.0}, {0.5, 40.0, 0.0}), 1.0, loose);
-  EXPECT_EQ(loose.hulls, (std::vector<char>{0, 0, 1}));
-  EXPECT_TRUE(loose.pairs.empty());
+  loose_terms(transition({1.0, 2.0, 0.0}, {0.5, 40.0, 0.0}), 1.0, {0.25, 20.0, 3.0}, {}, loose);
+  EXPECT_EQ(loose.hull_floors, (std::vector<double>{kNot, kNot, 1.0 - 3.0}));
+  EXPECT_TRUE(loose.pair_floors.empty());
 }
 
 // Next to a collision only the hulls their clearances do not cover are held to 2 Delta.

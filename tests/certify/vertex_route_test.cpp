@@ -237,8 +237,8 @@ TEST(VertexRoute, TheCheckerFormsItExactlyFromTheCertificateAndRefusesAWitnessOn
       }
     }
   }
-  EXPECT_EQ(compared, 28);         // transitions with both ends' witnesses usable
-  EXPECT_EQ(below_the_route, 25);  // where M_v is the smaller route bound
+  EXPECT_EQ(compared, 26);         // transitions with both ends' witnesses usable
+  EXPECT_EQ(below_the_route, 24);  // where M_v is the smaller route bound
   EXPECT_TRUE(refused);
 }
 
