@@ -121,8 +121,7 @@ class CellProbe {
   /// last witness normal proven again on the template (no GJK). Taken only when its bound does
   /// not lower that clearance, so the hull's radius is the one the full query gives. For a
   /// loose hull's nearest obstacle, taken when its bound keeps kLooseKeep of the bound the
-  /// normal was found with and the hull's floor (LooseTerms); the
-  /// normal was found with.
+  /// normal was found with and the hull's radius its floor (LooseTerms::hull_floors).
   bool separate_by_kept_normal(const HullProbe& hull, int obstacle, std::size_t warm_slot,
                                PairEvidence& evidence);
   /// The placed offset on its template, or nullopt when the offset is placed instead.
