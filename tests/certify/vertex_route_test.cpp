@@ -10,6 +10,7 @@
 #include <limits>
 #include <optional>
 #include <random>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -237,6 +238,12 @@ TEST(VertexRoute, TheCheckerFormsItExactlyFromTheCertificateAndRefusesAWitnessOn
       }
     }
   }
+  // M_v belongs to the transition checked last: asking for another is the caller's mistake.
+  const SegmentCertificate& first = certificate.segments.front();
+  ASSERT_GE(first.steps.size(), 2u);
+  ASSERT_NE(first.steps[1].step, certificate.segments.back().steps.back().step);
+  EXPECT_THROW(static_cast<void>(transitions.vertex_route_bound(0, first.steps[0], first.steps[1], {}, {})),
+               std::logic_error);
   EXPECT_EQ(compared, 26);         // transitions with both ends' witnesses usable
   EXPECT_EQ(below_the_route, 24);  // where M_v is the smaller route bound
   EXPECT_TRUE(refused);
