@@ -217,6 +217,24 @@ bool witness_holds_exactly(const geometry::SeparationWitness& witness,
   return mpq_class(witness.offset_a) < mpq_class(witness.offset_b);
 }
 
+// The UR5e motion beside the post of the kept-normal tests (ur5e-post.yaml): configuration k of
+// kBesideThePostSteps + 1 from the cell's home, probed by `warm` and by a fresh probe.
+constexpr int kBesideThePostSteps = 60;
+struct WarmAndFresh {
+  ProbeResult warm;
+  ProbeResult fresh;
+};
+WarmAndFresh probe_beside_the_post(const RobotCell& cell, CellProbe& warm, int k) {
+  Eigen::VectorXd from(6), to(6);
+  from << 0.0, -1.5708, 1.5708, 0.0, 0.0, 0.0;  // the cell's home
+  to << -0.9, -1.3, 1.4, -0.3, 0.5, 0.2;
+  const Eigen::VectorXd q = from + (to - from) * (static_cast<double>(k) / kBesideThePostSteps);
+  WarmAndFresh result;
+  warm.probe(q, /*with_points=*/false, result.warm);
+  CellProbe(cell).probe(q, /*with_points=*/false, result.fresh);
+  return result;
+}
+
 // Once a nearer obstacle has set a hull's smallest clearance, the probe proves the next ones on
 // their last witness normal (no GJK) and keeps that proof only when it does not lower the
 // clearance. Along a UR5e motion beside the post, probed step after step by one warm probe and
@@ -226,22 +244,15 @@ bool witness_holds_exactly(const geometry::SeparationWitness& witness,
 TEST(CellProbe, AKeptNormalProvesAFartherObstacleWithoutChangingAnyHullsRadius) {
   const cell::LoadedCell loaded = test::load_test_cell("ur5e-post.yaml");
   const RobotCell cell = test::certified_cell(loaded);
-  Eigen::VectorXd from(6), to(6);
-  from << 0.0, -1.5708, 1.5708, 0.0, 0.0, 0.0;  // the cell's home
-  to << -0.9, -1.3, 1.4, -0.3, 0.5, 0.2;
   CellProbe warm(cell);
   std::map<std::pair<int, int>, Eigen::Vector3d> last_normal;  // (hull, obstacle) -> normal
   kinematics::Workspace workspace(cell.robot());
   std::vector<Eigen::Vector3d> placed_offset_W;
   int kept_normal_proofs = 0;
-  constexpr int kSteps = 60;
-  for (int k = 0; k <= kSteps; ++k) {
-    const Eigen::VectorXd q = from + (to - from) * (static_cast<double>(k) / kSteps);
-    ProbeResult warm_result, fresh_result;
-    warm.probe(q, /*with_points=*/false, warm_result);
-    CellProbe(cell).probe(q, /*with_points=*/false, fresh_result);
+  for (int k = 0; k <= kBesideThePostSteps; ++k) {
+    const auto [warm_result, fresh_result] = probe_beside_the_post(cell, warm, k);
     ASSERT_FALSE(warm_result.any_expanded_interference) << "step " << k;
-    kinematics::forward_kinematics(cell.chain(), q, workspace);
+    kinematics::forward_kinematics(cell.chain(), warm_result.q, workspace);
     for (int i = 0; i < static_cast<int>(cell.hulls().size()); ++i) {
       const double want = fresh_result.hulls[static_cast<std::size_t>(i)].radius;
       EXPECT_NEAR(warm_result.hulls[static_cast<std::size_t>(i)].radius, want, 1e-9 * (1.0 + want))
@@ -284,9 +295,6 @@ TEST(CellProbe, ALooseTermIsProvenOnItsKeptNormalWhileItKeepsMostOfItsLastCloses
   const cell::LoadedCell loaded = test::load_test_cell("ur5e-post.yaml");
   const RobotCell cell = test::certified_cell(loaded);
   ASSERT_FALSE(cell.self_pairs().empty());
-  Eigen::VectorXd from(6), to(6);
-  from << 0.0, -1.5708, 1.5708, 0.0, 0.0, 0.0;  // the cell's home
-  to << -0.9, -1.3, 1.4, -0.3, 0.5, 0.2;
   CellProbe warm(cell);
   // Every term loose, with no floor: only kLooseKeep limits the kept normals.
   const double no_floor = -std::numeric_limits<double>::infinity();
@@ -314,14 +322,10 @@ TEST(CellProbe, ALooseTermIsProvenOnItsKeptNormalWhileItKeepsMostOfItsLastCloses
     }
     kept[key] = {normal, bound};
   };
-  constexpr int kSteps = 60;
-  for (int k = 0; k <= kSteps; ++k) {
-    const Eigen::VectorXd q = from + (to - from) * (static_cast<double>(k) / kSteps);
-    ProbeResult warm_result, fresh_result;
-    warm.probe(q, /*with_points=*/false, warm_result);
-    CellProbe(cell).probe(q, /*with_points=*/false, fresh_result);
+  for (int k = 0; k <= kBesideThePostSteps; ++k) {
+    const auto [warm_result, fresh_result] = probe_beside_the_post(cell, warm, k);
     ASSERT_FALSE(warm_result.any_expanded_interference) << "step " << k;
-    kinematics::forward_kinematics(cell.chain(), q, workspace);
+    kinematics::forward_kinematics(cell.chain(), warm_result.q, workspace);
     for (int i = 0; i < static_cast<int>(cell.hulls().size()); ++i) {
       const LinkHull& hull = cell.hulls()[static_cast<std::size_t>(i)];
       kinematics::place_points(workspace.X_WL[static_cast<std::size_t>(hull.link)], hull.expanded_L, placed_offset_W);
