@@ -213,10 +213,9 @@ void CellProbe::collect_candidates(HullProbe& hull, HullState& state) {
     // stays inside it, its answer holds every candidate and a filter gives the same list.
     NearbyObstacles& nearby = nearby_obstacles_[static_cast<std::size_t>(hull.index)];
     const geometry::Aabb inflated_W = query_W.inflated(state.broadphase_margin);
-    if (!nearby.valid || !nearby.box_W.contains(inflated_W)) {
+    if (!nearby.box_W.contains(inflated_W)) {  // the empty box of the first query contains none
       nearby.box_W = inflated_W.inflated(state.broadphase_margin);
       cell.obstacles().index().candidates(nearby.box_W, 0.0, nearby.obstacles);
-      nearby.valid = true;
     }
     cell.obstacles().index().candidates_among(nearby.obstacles, query_W, state.broadphase_margin,
                                               candidates_);

@@ -175,8 +175,7 @@ class CellProbe {
   std::vector<UnmovedHull> unmoved_hulls_;  ///< [hull]
   /// The broadphase's answer for a box around a hull's last query, with room to move.
   struct NearbyObstacles {
-    bool valid = false;
-    geometry::Aabb box_W;
+    geometry::Aabb box_W;  ///< empty until the first walk
     std::vector<int> obstacles;  ///< sorted
   };
   std::vector<NearbyObstacles> nearby_obstacles_;  ///< [hull]

@@ -104,6 +104,7 @@ TEST(Broadphase, ContainsIsExactAndClosed) {
   inner.hi.z() = 0.5;
   inner.lo.x() = std::nextafter(0.0, -1.0);
   EXPECT_FALSE(outer.contains(inner));
+  EXPECT_FALSE(Aabb{}.contains(outer));  // the empty box contains no box
 }
 
 TEST(Broadphase, TouchingBoxesAtExactlyTheMarginAreReturned) {
