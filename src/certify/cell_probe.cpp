@@ -59,6 +59,11 @@ CellProbe::CellProbe(const RobotCell& cell)
       nearby_obstacles_(cell.hulls().size()),
       last_centers_W_(cell.hulls().size()) {}
 
+void CellProbe::set_need(ProbeNeed need) {
+  need_ = need;
+  self_pairs_.set_need(need);
+}
+
 void CellProbe::set_loose_terms(const LooseTerms& loose) {
   loose_hull_floors_.assign(loose.hull_floors.begin(), loose.hull_floors.end());
   self_pairs_.set_loose_pairs(loose.pair_floors);
@@ -251,7 +256,8 @@ void CellProbe::order_candidates(HullProbe& hull) {
     const double gap = (sphere.center - hull.center_W).norm() - hull.radius_W - sphere.radius_upper;
     ordered_candidates_.emplace_back(gap, o);
   }
-  std::sort(ordered_candidates_.begin(), ordered_candidates_.end());
+  // A verdict settles each pair on its own; a clearance needs the nearest first.
+  if (need_ == ProbeNeed::kClearance) std::sort(ordered_candidates_.begin(), ordered_candidates_.end());
   expanded_polytope_.reset();
 }
 
@@ -260,7 +266,10 @@ void CellProbe::decide_expanded(HullProbe& hull, int o, double gap_estimate,
                                 PairEvidence& evidence) {
   const RobotCell& cell = *cell_;
   const geometry::CertifiedSphere& sphere = cell.obstacles().sphere_W(o);
-  if (gap_estimate > 0.0 && gap_estimate >= hull.smallest_clearance &&
+  // For a verdict any ball slab settles the pair; for a clearance only one that cannot lower
+  // the hull's radius.
+  const bool any_slab = need_ == ProbeNeed::kVerdict;
+  if (gap_estimate > 0.0 && (any_slab || gap_estimate >= hull.smallest_clearance) &&
       sphere_witness(hull.center_W, hull.radius_W, sphere.center, sphere.radius_upper,
                      evidence.witness, evidence.lower_bound)) {
     evidence.separated = true;
@@ -302,18 +311,22 @@ std::optional<geometry::PlacedHull> CellProbe::offset_template(const HullProbe& 
 bool CellProbe::separate_by_kept_normal(const HullProbe& hull, int o, std::size_t warm_slot,
                                         PairEvidence& evidence) {
   if (!has_warm_normal_[warm_slot]) return false;
-  // The bound the kept normal must reach: a farther obstacle's must not lower the hull's
-  // radius; a loose hull's nearest keeps kLooseKeep of its last closest witness's and the
-  // radius its floor asks (radius = Delta + bound).
+  // The bound the kept normal must reach: for a verdict any (a returned slab has a positive
+  // gap); else a farther obstacle's must not lower the hull's radius, and a loose hull's
+  // nearest keeps kLooseKeep of its last closest witness's and the radius its floor asks
+  // (radius = Delta + bound).
+  const bool any_slab = need_ == ProbeNeed::kVerdict;
   const bool nearest = !(hull.smallest_clearance < kInfinity);
   const auto h = static_cast<std::size_t>(hull.index);
   const bool loose = nearest && h < loose_hull_floors_.size() && loose_hull_floors_[h] < kInfinity;
-  if (nearest && !loose) return false;
+  if (!any_slab && nearest && !loose) return false;
   const double required =
-      loose ? std::max(kLooseKeep * anchor_bounds_[warm_slot], loose_hull_floors_[h] - cell_->tolerance())
-            : hull.smallest_clearance;
+      any_slab ? 0.0
+      : loose  ? std::max(kLooseKeep * anchor_bounds_[warm_slot], loose_hull_floors_[h] - cell_->tolerance())
+               : hull.smallest_clearance;
+  if (!any_slab && !(required > 0.0)) return false;
   // After a long move the kept normal is stale: its bound would mostly fall short (wasted climbs).
-  if (!(required > 0.0) || !(hull.moved < (loose ? anchor_bounds_[warm_slot] : required))) return false;
+  if (!(hull.moved < (any_slab || loose ? anchor_bounds_[warm_slot] : required))) return false;
   const std::optional<geometry::PlacedHull> offset = offset_template(hull);
   if (!offset) return false;
   const std::optional<geometry::CertifiedSeparation> separation = geometry::certify_placed_separation(

@@ -19,6 +19,7 @@
 #include "grpvss/geometry/separation_witness.hpp"
 #include "grpvss/kinematics/forward_kinematics.hpp"
 #include "loose_terms.hpp"
+#include "probe_need.hpp"
 #include "self_pair_probe.hpp"
 
 namespace grpvss::certify {
@@ -82,6 +83,9 @@ class CellProbe {
 
   /// The terms later probes may settle on their kept normals (until the next call).
   void set_loose_terms(const LooseTerms& loose);
+
+  /// What later probes must prove of each term (until the next call; kClearance at first).
+  void set_need(ProbeNeed need);
 
   /// Evaluates configuration q. `with_points`: also compute the exact interference points.
   void probe(const Eigen::VectorXd& q, bool with_points, ProbeResult& out);
@@ -155,6 +159,7 @@ class CellProbe {
   bool reuse_unmoved_hull(int hull_index, const Eigen::Isometry3d& X_WL, ProbeResult& out) const;
 
   const RobotCell* cell_;
+  ProbeNeed need_ = ProbeNeed::kClearance;
   kinematics::Workspace workspace_;
   SelfPairProbe self_pairs_;
   std::vector<double> hull_radii_;  ///< [hull]: this probe's radii, for SelfPairProbe::probe

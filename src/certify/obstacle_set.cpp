@@ -30,6 +30,8 @@ const ObstacleSet::Entry& ObstacleSet::built(int o) const {
     throw std::out_of_range("ObstacleSet: no obstacle " + std::to_string(o));
   }
   Entry& entry = entries_[static_cast<std::size_t>(o)];
+  // Built once, read per probed pair: the flag is cheaper than call_once's check.
+  if (entry.ready.load(std::memory_order_acquire)) return entry;
   std::call_once(entry.once, [&] {
     // Hulled from its own vertices, so that vertex j is input point j: the obstacle is the
     // template of its images in the link frames (CellProbe::append_points).

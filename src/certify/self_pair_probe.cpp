@@ -69,19 +69,22 @@ void SelfPairProbe::set_loose_pairs(const std::vector<double>& floors) {
 // on every placed vertex); only its distance, the pair's allowance, is a little smaller.
 bool SelfPairProbe::settle_by_kept_normal(std::size_t p, const std::vector<Eigen::Isometry3d>& X_WL,
                                           SelfPairEvidence& evidence) {
-  if (p >= loose_floors_.size() || !(loose_floors_[p] < std::numeric_limits<double>::infinity()) ||
-      !has_warm_normal_[p] || !(anchor_bounds_[p] > 0.0)) {
-    return false;
-  }
+  // For a verdict every pair is settled by any slab proving a positive distance.
+  const bool any_slab = need_ == ProbeNeed::kVerdict;
+  const bool loose = p < loose_floors_.size() && loose_floors_[p] < std::numeric_limits<double>::infinity();
+  if (!(any_slab || loose) || !has_warm_normal_[p] || !(anchor_bounds_[p] > 0.0)) return false;
   const SelfPairHulls& pair = cell_->self_pairs()[p];
   const auto on_template = [&](int hull) { return cell_->hulls()[static_cast<std::size_t>(hull)].raw_on_template; };
   if (!on_template(pair.a) && !on_template(pair.b)) return false;
   const std::optional<geometry::CertifiedSeparation> separation = geometry::certify_placed_separation(
       template_placed(pair.a, X_WL), climb_hints_a_[p], template_placed(pair.b, X_WL), climb_hints_b_[p],
       warm_normals_[p]);
-  if (!separation || !(separation->lower_bound >= kLooseKeep * anchor_bounds_[p])) return false;
+  if (!separation) return false;
   const double distance = exact_distance_lower_bound(separation->lower_bound, cell_->placement_error());
-  if (!(distance >= loose_floors_[p])) return false;
+  if (any_slab ? !(distance > 0.0)
+               : !(separation->lower_bound >= kLooseKeep * anchor_bounds_[p]) || !(distance >= loose_floors_[p])) {
+    return false;
+  }
   evidence.separated = true;
   evidence.witness = separation->witness;
   evidence.lower_bound = separation->lower_bound;
@@ -145,7 +148,8 @@ void SelfPairProbe::add_revolution_bound(const SelfPairHulls& pair,
                                          const std::vector<Eigen::Isometry3d>& X_WL,
                                          SelfPairEvidence& evidence) const {
   const LinkHull& a = cell_->hulls()[static_cast<std::size_t>(pair.a)];
-  if (!a.revolution_L || !evidence.separated) return;
+  // The route bounds a step's motion: a verdict has no step.
+  if (need_ == ProbeNeed::kVerdict || !a.revolution_L || !evidence.separated) return;
   geometry::SeparationWitness solid_side = evidence.witness;
   solid_side.offset_a = geometry::placed_solid_support_upper(
       *a.revolution_L, X_WL[static_cast<std::size_t>(a.link)], evidence.witness.normal);
@@ -162,12 +166,16 @@ bool SelfPairProbe::probe(const std::vector<Eigen::Isometry3d>& X_WL,
   out.assign(pairs.size(), SelfPairEvidence{});
   std::fill(is_placed_.begin(), is_placed_.end(), 0);
   bool any_contact = false;
+  // For a verdict any ball slab proving a positive distance settles a pair.
+  constexpr double kAnyPositive = std::numeric_limits<double>::denorm_min();
   for (std::size_t p = 0; p < pairs.size(); ++p) {
-    if (!hull_radius.empty() &&
-        settle_by_balls(pairs[p], X_WL,
-                        hull_radius[static_cast<std::size_t>(pairs[p].a)] +
-                            hull_radius[static_cast<std::size_t>(pairs[p].b)],
-                        out[p])) {
+    const bool balls_may_settle = need_ == ProbeNeed::kVerdict || !hull_radius.empty();
+    const double ample = need_ == ProbeNeed::kVerdict
+                             ? kAnyPositive
+                             : balls_may_settle ? hull_radius[static_cast<std::size_t>(pairs[p].a)] +
+                                                      hull_radius[static_cast<std::size_t>(pairs[p].b)]
+                                                : 0.0;
+    if (balls_may_settle && settle_by_balls(pairs[p], X_WL, ample, out[p])) {
       add_revolution_bound(pairs[p], X_WL, out[p]);
       continue;
     }

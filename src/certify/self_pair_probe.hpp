@@ -13,6 +13,7 @@
 #include "grpvss/geometry/placed_hull.hpp"
 #include "grpvss/geometry/separation_witness.hpp"
 #include "loose_terms.hpp"
+#include "probe_need.hpp"
 
 namespace grpvss::certify {
 
@@ -58,6 +59,9 @@ class SelfPairProbe {
   /// [pair]: the pairs later probes may settle on their kept normals, and the distance each
   /// must keep (LooseTerms::pair_floors).
   void set_loose_pairs(const std::vector<double>& floors);
+  /// What later probes must prove of each pair (kClearance at first). kVerdict: any slab proving
+  /// a positive distance settles a pair, `hull_radius` aside.
+  void set_need(ProbeNeed need) { need_ = need; }
 
  private:
   const std::vector<Eigen::Vector3d>& placed(int hull, const std::vector<Eigen::Isometry3d>& X_WL);
@@ -84,6 +88,7 @@ class SelfPairProbe {
                        double ample, SelfPairEvidence& evidence) const;
 
   const RobotCell* cell_;
+  ProbeNeed need_ = ProbeNeed::kClearance;
   std::vector<std::vector<Eigen::Vector3d>> placed_raw_;  ///< [hull], this probe's
   std::vector<char> is_placed_;
   std::vector<Eigen::Vector3d> warm_normals_;  ///< [pair]

@@ -16,6 +16,7 @@
 #include <benchmark/benchmark.h>
 
 #include "certify/cell_probe.hpp"
+#include "grpvss/certify/configuration_check.hpp"
 #include "grpvss/motion/trajectory.hpp"
 #include "bench/robots/bench_cells.hpp"
 #ifdef GRPVSS_HAVE_FCL
@@ -124,6 +125,24 @@ void configuration_args(benchmark::internal::Benchmark* b) {
 }
 
 BENCHMARK(BM_RobotConfigurationGrpvss)->Apply(configuration_args)->Unit(benchmark::kMicrosecond);
+
+// The certified verdict of one configuration (ConfigurationCheck::check: FCL's boolean
+// question with the certified mode's guarantee), same 64 configurations. Counters: per_config;
+// clear (how many of the 64 are CLEAR: all of them, on a certified-clear trajectory).
+void BM_RobotConfigurationCheckGrpvss(benchmark::State& state) {
+  const auto qs = configurations(state.range(0), state.range(1));
+  BenchCell& bench = bench_cell(state.range(0), state.range(1), 5);
+  grpvss::certify::ConfigurationCheck check(*bench.cell);
+  int clear = 0;
+  for (auto _ : state) {
+    clear = 0;
+    for (const auto& q : qs) clear += check.check(q).verdict == grpvss::certify::Verdict::kClear;
+  }
+  if (clear != static_cast<int>(qs.size())) state.SkipWithError("a configuration of a certified-clear trajectory is not CLEAR");
+  per_item(state, qs.size(), "per_config");
+  robot_label(state);
+}
+BENCHMARK(BM_RobotConfigurationCheckGrpvss)->Apply(configuration_args)->Unit(benchmark::kMicrosecond);
 
 // A whole certified trajectory on a prebuilt cell (verify(cell, ...): planning, the march,
 // the certificate). Counters: steps, verdict (0 = CLEAR), per_segment. With 10 waypoints and
