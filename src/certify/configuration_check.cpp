@@ -67,6 +67,24 @@ Verdict worst(const std::vector<ConfigurationFinding>& findings) {
 
 }  // namespace
 
+std::string to_string(ConfigurationFinding::Kind kind) {
+  switch (kind) {
+    case Kind::kCollision: return "collision";
+    case Kind::kWithinTolerance: return "within tolerance";
+    case Kind::kSelfCollision: return "self-collision";
+    case Kind::kUndecided: return "undecided";
+  }
+  return "?";
+}
+
+std::string describe(const ConfigurationFinding& finding, const RobotModel& robot,
+                     const Environment& environment) {
+  const std::string other = finding.obstacle >= 0
+                                ? obstacle_label(environment, finding.obstacle)
+                                : hull_label(robot, finding.other_link, finding.other_hull);
+  return hull_label(robot, finding.link, finding.hull) + " / " + other + ": " + to_string(finding.kind);
+}
+
 // proof: proofs/configuration-check.md#lemma-configuration-verdict
 ConfigurationVerdict verdict_of(const RobotCell& cell, const ProbeResult& probed) {
   ConfigurationVerdict out;

@@ -8,7 +8,6 @@
 #include <random>
 #include <string>
 
-#include <gmpxx.h>
 #include <gtest/gtest.h>
 
 #include "grpvss/exact/convex_polytope.hpp"
@@ -17,6 +16,7 @@
 #include "grpvss/io/environment_file.hpp"
 #include "grpvss/kinematics/forward_kinematics.hpp"
 #include "grpvss/io/robot_file.hpp"
+#include "support/exact_witness.hpp"
 #include "support/random_configurations.hpp"
 #include "support/ur5e_self_run.hpp"
 
@@ -199,24 +199,6 @@ TEST(CellProbe, AHullWhoseLinkDidNotMoveKeepsItsProofAndAMovedOneIsDecidedAgain)
   EXPECT_GT(decided_again, 2000);
 }
 
-// n.x <= o_a for every placed offset vertex x and n.y >= o_b for every obstacle vertex y,
-// decided in rationals (the inequalities the checker decides for a recorded witness).
-bool witness_holds_exactly(const geometry::SeparationWitness& witness,
-                           const std::vector<Eigen::Vector3d>& placed_offset_W,
-                           const std::vector<Eigen::Vector3d>& obstacle_W) {
-  const auto dot = [&](const Eigen::Vector3d& p) -> mpq_class {  // not an expression template
-    return mpq_class(witness.normal.x()) * mpq_class(p.x()) + mpq_class(witness.normal.y()) * mpq_class(p.y()) +
-           mpq_class(witness.normal.z()) * mpq_class(p.z());
-  };
-  for (const Eigen::Vector3d& x : placed_offset_W) {
-    if (dot(x) > mpq_class(witness.offset_a)) return false;
-  }
-  for (const Eigen::Vector3d& y : obstacle_W) {
-    if (dot(y) < mpq_class(witness.offset_b)) return false;
-  }
-  return mpq_class(witness.offset_a) < mpq_class(witness.offset_b);
-}
-
 // The UR5e motion beside the post of the kept-normal tests (ur5e-post.yaml): configuration k of
 // kBesideThePostSteps + 1 from the cell's home, probed by `warm` and by a fresh probe.
 constexpr int kBesideThePostSteps = 60;
@@ -265,7 +247,7 @@ TEST(CellProbe, AKeptNormalProvesAFartherObstacleWithoutChangingAnyHullsRadius) 
       for (const PairEvidence& evidence : evidence_of(warm_result, i)) smallest = std::min(smallest, evidence.lower_bound);
       for (const PairEvidence& evidence : evidence_of(warm_result, i)) {
         ASSERT_TRUE(evidence.separated);
-        EXPECT_TRUE(witness_holds_exactly(evidence.witness, placed_offset_W,
+        EXPECT_TRUE(test::witness_holds_exactly(evidence.witness, placed_offset_W,
                                           cell.obstacles().vertices_W(evidence.obstacle)))
             << "step " << k << " hull " << i << " obstacle " << evidence.obstacle;
         const auto key = std::make_pair(i, evidence.obstacle);
@@ -334,7 +316,7 @@ TEST(CellProbe, ALooseTermIsProvenOnItsKeptNormalWhileItKeepsMostOfItsLastCloses
       const std::vector<PairEvidence> fresh_evidence = evidence_of(fresh_result, i);
       for (const PairEvidence& evidence : evidence_of(warm_result, i)) {
         ASSERT_TRUE(evidence.separated);
-        EXPECT_TRUE(witness_holds_exactly(evidence.witness, placed_offset_W,
+        EXPECT_TRUE(test::witness_holds_exactly(evidence.witness, placed_offset_W,
                                           cell.obstacles().vertices_W(evidence.obstacle)))
             << "step " << k << " hull " << i << " obstacle " << evidence.obstacle;
         const auto fresh = std::find_if(fresh_evidence.begin(), fresh_evidence.end(),
@@ -348,7 +330,7 @@ TEST(CellProbe, ALooseTermIsProvenOnItsKeptNormalWhileItKeepsMostOfItsLastCloses
       const SelfPairEvidence& evidence = warm_result.self_pairs[p];
       ASSERT_TRUE(evidence.separated) << "step " << k << " pair " << p;
       const SelfPairHulls& pair = cell.self_pairs()[p];
-      EXPECT_TRUE(witness_holds_exactly(evidence.witness, placed_raw_W[static_cast<std::size_t>(pair.a)],
+      EXPECT_TRUE(test::witness_holds_exactly(evidence.witness, placed_raw_W[static_cast<std::size_t>(pair.a)],
                                         placed_raw_W[static_cast<std::size_t>(pair.b)]))
           << "step " << k << " pair " << p;
       check_kept({-1, static_cast<int>(p)}, evidence.witness.normal, evidence.lower_bound,

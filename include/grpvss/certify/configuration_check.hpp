@@ -7,12 +7,15 @@
 /// proof: proofs/configuration-check.md#lemma-configuration-verdict
 
 #include <memory>
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
 
 #include "grpvss/certify/robot_cell.hpp"
 #include "grpvss/evidence/verification_result.hpp"
+#include "grpvss/model/environment.hpp"
+#include "grpvss/model/robot_model.hpp"
 
 namespace grpvss::certify {
 
@@ -33,6 +36,14 @@ struct ConfigurationFinding {
   int other_link = -1;  ///< a self pair's upper link; -1 for an obstacle
   int other_hull = -1;
 };
+
+/// \brief How reports name a finding: "forearm_link / post: collision", "wrist_3_link /
+/// upper_arm_link: self-collision" (hull_label, obstacle_label; the kind as in to_string below).
+std::string describe(const ConfigurationFinding& finding, const RobotModel& robot,
+                     const Environment& environment);
+
+/// "collision", "within tolerance", "self-collision", "undecided".
+std::string to_string(ConfigurationFinding::Kind kind);
 
 /// \brief A configuration's verdict: kClear, kWithinTolerance, kCollision or kUndecided (the
 /// worst of its findings: collision, undecided, within tolerance), and every finding in link,
