@@ -266,8 +266,8 @@ void CellProbe::decide_expanded(HullProbe& hull, int o, double gap_estimate,
                                 PairEvidence& evidence) {
   const RobotCell& cell = *cell_;
   const geometry::CertifiedSphere& sphere = cell.obstacles().sphere_W(o);
-  // For a verdict any ball slab settles the pair; for a clearance only one that cannot lower
-  // the hull's radius.
+  // For a verdict any ball slab settles the pair (proofs/configuration-check.md#lemma-configuration-verdict);
+  // for a clearance only one that cannot lower the hull's radius.
   const bool any_slab = need_ == ProbeNeed::kVerdict;
   if (gap_estimate > 0.0 && (any_slab || gap_estimate >= hull.smallest_clearance) &&
       sphere_witness(hull.center_W, hull.radius_W, sphere.center, sphere.radius_upper,

@@ -11,6 +11,7 @@ enum class ProbeNeed {
   /// Only the configuration's verdict: every term is settled by the first slab proven with a
   /// positive gap (ball slab, kept normal, template query, full query, in that order). Every
   /// radius and distance is still a certified lower bound, only farther below the closest.
+  /// proof: proofs/configuration-check.md#lemma-configuration-verdict
   kVerdict,
 };
 

@@ -69,7 +69,8 @@ void SelfPairProbe::set_loose_pairs(const std::vector<double>& floors) {
 // on every placed vertex); only its distance, the pair's allowance, is a little smaller.
 bool SelfPairProbe::settle_by_kept_normal(std::size_t p, const std::vector<Eigen::Isometry3d>& X_WL,
                                           SelfPairEvidence& evidence) {
-  // For a verdict every pair is settled by any slab proving a positive distance.
+  // For a verdict every pair is settled by any slab proving a positive distance
+  // (proofs/configuration-check.md#lemma-configuration-verdict).
   const bool any_slab = need_ == ProbeNeed::kVerdict;
   const bool loose = p < loose_floors_.size() && loose_floors_[p] < std::numeric_limits<double>::infinity();
   if (!(any_slab || loose) || !has_warm_normal_[p] || !(anchor_bounds_[p] > 0.0)) return false;
