@@ -167,16 +167,15 @@ bool SelfPairProbe::probe(const std::vector<Eigen::Isometry3d>& X_WL,
   out.assign(pairs.size(), SelfPairEvidence{});
   std::fill(is_placed_.begin(), is_placed_.end(), 0);
   bool any_contact = false;
-  // For a verdict any ball slab proving a positive distance settles a pair.
-  constexpr double kAnyPositive = std::numeric_limits<double>::denorm_min();
+  // The distance a ball slab must prove to settle a pair: any positive one for a verdict, the
+  // sum of the hulls' radii for a clearance; without radii the balls are not tried.
+  const bool balls_may_settle = need_ == ProbeNeed::kVerdict || !hull_radius.empty();
+  const auto ample = [&](const SelfPairHulls& pair) {
+    if (need_ == ProbeNeed::kVerdict) return std::numeric_limits<double>::denorm_min();
+    return hull_radius[static_cast<std::size_t>(pair.a)] + hull_radius[static_cast<std::size_t>(pair.b)];
+  };
   for (std::size_t p = 0; p < pairs.size(); ++p) {
-    const bool balls_may_settle = need_ == ProbeNeed::kVerdict || !hull_radius.empty();
-    const double ample = need_ == ProbeNeed::kVerdict
-                             ? kAnyPositive
-                             : balls_may_settle ? hull_radius[static_cast<std::size_t>(pairs[p].a)] +
-                                                      hull_radius[static_cast<std::size_t>(pairs[p].b)]
-                                                : 0.0;
-    if (balls_may_settle && settle_by_balls(pairs[p], X_WL, ample, out[p])) {
+    if (balls_may_settle && settle_by_balls(pairs[p], X_WL, ample(pairs[p]), out[p])) {
       add_revolution_bound(pairs[p], X_WL, out[p]);
       continue;
     }
