@@ -11,7 +11,8 @@ import os
 import tempfile
 
 import _grpvss as _native
-from _grpvss import (Certificate, CheckedMotionClearance, CheckReport, Environment, Episode,
+from _grpvss import (Certificate, CheckedMotionClearance, CheckReport, ConfigurationFinding,
+                     ConfigurationVerdict, Environment, Episode,
                      InterferencePoint, JointTrajectory, LinkClearance, Path, PathError, Result,
                      Robot, RobotProgram, Segment, Verdict, exit_code_of)
 
@@ -21,6 +22,7 @@ __all__ = [
     "CheckedMotionClearance", "VerificationSession", "Cell", "load_cell", "load_robot",
     "load_environment", "load_path", "verify", "check_certificate", "exit_code_of",
     "JointTrajectory", "joint_trajectory", "load_trajectory", "RobotProgram", "load_program",
+    "ConfigurationVerdict", "ConfigurationFinding",
 ]
 
 #: The label of a trajectory given as arrays: the name reports give it (``motion_model``,
@@ -288,6 +290,27 @@ class VerificationSession:
         """Verifies a trajectory file (CSV or ROS JSON)."""
         return self.verify_joint_trajectory(load_trajectory(file, self.robot), ik=ik,
                                             claim=claim)
+
+    def check_configurations(self, configurations):
+        """The certified verdict of each configuration: ``configurations`` is an array of
+        rows of joint values (rad / length, within the limits: a planner's samples), one
+        :class:`ConfigurationVerdict` per row (``verdict``, ``clear``, ``findings``: each
+        link hull meeting an obstacle or another link hull, named as the reports name them).
+        CLEAR proves every link farther than the tolerance from every obstacle and no two
+        self-pair links touching (proofs/configuration-check.md). Rows are checked in order,
+        each term's last slab tried first: nearby rows in sequence are cheapest. Certified
+        mode only; the GIL is released while the rows are checked."""
+        import numpy
+        rows = numpy.asarray(configurations, dtype=float)
+        if rows.size == 0:
+            return []
+        if rows.ndim == 1:
+            rows = rows.reshape(1, -1)
+        return self._native._check_configurations(numpy.ascontiguousarray(rows))
+
+    def check_configuration(self, q):
+        """:meth:`check_configurations` of one configuration."""
+        return self.check_configurations([q])[0]
 
 
 def verify(robot, environment, path, tolerance, mode="certified", offset="auto",

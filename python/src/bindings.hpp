@@ -146,6 +146,9 @@ using RobotClass = pybind11::class_<LoadedRobot, std::shared_ptr<LoadedRobot>>;
 RobotClass bind_model_loading(pybind11::module_& module);
 void bind_kinematics(RobotClass& robot);
 void bind_verification(pybind11::module_& module);
+using SessionClass = pybind11::class_<Session, std::shared_ptr<Session>>;
+/// Session._check_configurations and the classes of its answer.
+void bind_configuration_check(pybind11::module_& module, SessionClass& session);
 void bind_results(pybind11::module_& module);
 void bind_certificates(pybind11::module_& module);
 void bind_trajectories(pybind11::module_& module);

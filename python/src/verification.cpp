@@ -186,10 +186,11 @@ Session::Session(std::shared_ptr<LoadedRobot> robot,
 }
 
 void bind_verification(py::module_& module) {
-  py::class_<Session, std::shared_ptr<Session>>(
+  SessionClass session(
       module, "Session",
       "The prepared cell for one robot, environment, tolerance, mode and offset: built once, "
-      "then any number of paths verified against it (from any thread)")
+      "then any number of paths verified against it (from any thread)");
+  session
       .def(py::init<std::shared_ptr<LoadedRobot>, std::shared_ptr<LoadedEnvironment>, double,
                     const std::string&, const std::string&>(),
            py::arg("robot"), py::arg("environment"), py::arg("tolerance"),
@@ -233,6 +234,7 @@ void bind_verification(py::module_& module) {
       .def_property_readonly("offset", [](const Session& s) {
         return geometry::to_string(s.cell().offset_shape());
       });
+  bind_configuration_check(module, session);
 
   module.def("_activity", [] {
     std::lock_guard<std::mutex> lock(monitor().mutex);
