@@ -207,19 +207,24 @@ void CellProbe::collect_candidates(HullProbe& hull, HullState& state) {
   candidates_.clear();
   state.broadphase_margin = kInfinity;
   hull.expanded_placed = false;
-  if (obstacle_count <= kBroadphaseThreshold) {
+  // A verdict takes the boxes' answer in small cells too: a box apart settles an obstacle.
+  if (obstacle_count <= kBroadphaseThreshold && need_ == ProbeNeed::kClearance) {
     for (int o = 0; o < obstacle_count; ++o) candidates_.push_back(o);
   } else {
     // The offset's vertices are placed only if an obstacle is a candidate (decide_expanded).
     // proof: proofs/fast-path.md#placed-box-enclosure
-    state.broadphase_margin = 0.25 * cell.radii().radius(cell.radii().link_count() - 1, 0, 1);
+    const double room = 0.25 * cell.radii().radius(cell.radii().link_count() - 1, 0, 1);
+    // Obstacles beyond the margin raise the hull's radius by it; a verdict needs no radius, and
+    // a box apart from the hull's is strictly apart from it (margin 0).
+    // proof: proofs/configuration-check.md#lemma-configuration-verdict
+    state.broadphase_margin = need_ == ProbeNeed::kVerdict ? 0.0 : room;
     const geometry::Aabb query_W = geometry::placed_box_enclosure(hull.hull.expanded_box_L, hull.X_WL);
-    // The tree is walked for a box with a margin's room to move; while the hull's inflated box
-    // stays inside it, its answer holds every candidate and a filter gives the same list.
+    // The tree is walked for a box with room to move; while the hull's box inflated by the
+    // room stays inside it, its answer holds every candidate and a filter gives the same list.
     NearbyObstacles& nearby = nearby_obstacles_[static_cast<std::size_t>(hull.index)];
-    const geometry::Aabb inflated_W = query_W.inflated(state.broadphase_margin);
+    const geometry::Aabb inflated_W = query_W.inflated(room);
     if (!nearby.box_W.contains(inflated_W)) {  // the empty box of the first query contains none
-      nearby.box_W = inflated_W.inflated(state.broadphase_margin);
+      nearby.box_W = inflated_W.inflated(room);
       cell.obstacles().index().candidates(nearby.box_W, 0.0, nearby.obstacles);
     }
     cell.obstacles().index().candidates_among(nearby.obstacles, query_W, state.broadphase_margin,

@@ -3,6 +3,7 @@
 // configurations, and every slab a verdict rests on holding in rationals.
 #include "grpvss/certify/configuration_check.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <stdexcept>
@@ -13,6 +14,7 @@
 
 #include "certify/cell_probe.hpp"
 #include "certify/configuration_verdict.hpp"
+#include "grpvss/geometry/broadphase.hpp"
 #include "grpvss/kinematics/forward_kinematics.hpp"
 #include "support/exact_witness.hpp"
 #include "support/random_configurations.hpp"
@@ -111,7 +113,8 @@ PlacedHulls placed_hulls(const RobotCell& cell, const Eigen::VectorXd& q) {
 
 // Property: over configurations swept through the post and random ones, one warm verdict
 // probe (kept normals, any ball slab) finds exactly what a fresh clearance probe (closest
-// witnesses) finds, and every separation it claims holds in rationals on the placed hulls.
+// witnesses) finds, every separation it claims holds in rationals on the placed hulls, and
+// every obstacle it leaves without evidence has a box apart from the placed offset's.
 // It settles most terms without its closest witness: its radii are smaller.
 TEST(ConfigurationCheck, AVerdictProbeFindsWhatTheClearanceProbeFindsOnSlabsThatHoldExactly) {
   const cell::LoadedCell loaded = test::load_test_cell("ur5e-post.yaml");
@@ -123,7 +126,7 @@ TEST(ConfigurationCheck, AVerdictProbeFindsWhatTheClearanceProbeFindsOnSlabsThat
   for (int k = 0; k <= 80; ++k) qs.push_back(home_with(0, 1.25 * k));  // through the post and out
   std::mt19937_64 generator(20261127);
   for (int k = 0; k < 40; ++k) qs.push_back(test::random_configuration(loaded.robot, generator));
-  int clear = 0, not_clear = 0, smaller_radii = 0;
+  int clear = 0, not_clear = 0, smaller_radii = 0, settled_by_boxes = 0;
   ProbeResult by_verdict, by_clearance;
   for (std::size_t k = 0; k < qs.size(); ++k) {
     verdict_probe.probe(qs[k], false, by_verdict);
@@ -141,6 +144,18 @@ TEST(ConfigurationCheck, AVerdictProbeFindsWhatTheClearanceProbeFindsOnSlabsThat
                                               cell.obstacles().vertices_W(evidence.obstacle)))
           << "configuration " << k << " hull " << h << " obstacle " << evidence.obstacle;
     }
+    // (B): an obstacle without evidence has a box apart from the placed offset's box.
+    for (std::size_t h = 0; h < cell.hulls().size(); ++h) {
+      for (int o = 0; o < cell.obstacles().size(); ++o) {
+        const bool has_evidence = std::any_of(by_verdict.evidence.begin(), by_verdict.evidence.end(), [&](const PairEvidence& e) {
+          return e.hull_index == static_cast<int>(h) && e.obstacle == o;
+        });
+        if (has_evidence) continue;
+        ++settled_by_boxes;
+        EXPECT_FALSE(geometry::Aabb::of_points(placed.offset_W[h]).overlaps(geometry::Aabb::of_points(cell.obstacles().vertices_W(o))))
+            << "configuration " << k << " hull " << h << " obstacle " << o;
+      }
+    }
     for (std::size_t p = 0; p < cell.self_pairs().size(); ++p) {
       const SelfPairEvidence& evidence = by_verdict.self_pairs[p];
       if (!evidence.separated) continue;
@@ -156,6 +171,7 @@ TEST(ConfigurationCheck, AVerdictProbeFindsWhatTheClearanceProbeFindsOnSlabsThat
   EXPECT_GT(clear, 50);  // 63 of 121 when written
   EXPECT_GT(not_clear, 40);
   EXPECT_GT(smaller_radii, 250);  // 367 of 847 hull radii
+  EXPECT_GT(settled_by_boxes, 1000);  // 1,528 of 1,694 (hull, obstacle) pairs when written
 }
 
 }  // namespace
