@@ -60,6 +60,11 @@ CellProbe::CellProbe(const RobotCell& cell)
       last_centers_W_(cell.hulls().size()) {}
 
 void CellProbe::set_need(ProbeNeed need) {
+  // A kept proof answers the need it was made for (a verdict's radii are far below the
+  // closest): after a change every hull is decided again.
+  if (need != need_) {
+    for (UnmovedHull& kept : unmoved_hulls_) kept.valid = false;
+  }
   need_ = need;
   self_pairs_.set_need(need);
 }

@@ -18,6 +18,7 @@
 #include "grpvss/kinematics/forward_kinematics.hpp"
 #include "support/exact_witness.hpp"
 #include "support/random_configurations.hpp"
+#include "support/urdf_cell_oracle.hpp"
 #include "support/ur5e_self_run.hpp"
 
 namespace grpvss::certify {
@@ -172,6 +173,60 @@ TEST(ConfigurationCheck, AVerdictProbeFindsWhatTheClearanceProbeFindsOnSlabsThat
   EXPECT_GT(not_clear, 40);
   EXPECT_GT(smaller_radii, 250);  // 367 of 847 hull radii
   EXPECT_GT(settled_by_boxes, 1000);  // 1,528 of 1,694 (hull, obstacle) pairs when written
+}
+
+// Soundness against the independent URDF oracle (reference FK from the URDF text, exact
+// rational LP for contact; support/urdf_cell_oracle.hpp): over random UR5e configurations on
+// its table beside the post, no configuration where the oracle finds a contact (with the table,
+// the post or the robot itself) is CLEAR, and every COLLISION is one the oracle confirms or
+// finds within a micrometre.
+TEST(ConfigurationCheck, NoConfigurationTheOracleFindsInContactIsClear) {
+  const cell::LoadedCell loaded = test::load_test_cell("ur5e-post.yaml");
+  const RobotCell cell = test::certified_cell(loaded);
+  const test::UrdfCellOracle oracle(loaded);
+  ConfigurationCheck check(cell);
+  std::mt19937_64 generator(27112026);
+  int contacts = 0, self_contacts = 0, clear = 0;
+  for (int k = 0; k < 60; ++k) {
+    const Eigen::VectorXd q = test::random_configuration(loaded.robot, generator);
+    const ConfigurationVerdict verdict = check.check(q);
+    const test::UrdfOracleContact truth = oracle.check(q);
+    if (truth.contact) {
+      ++contacts;
+      self_contacts += truth.self;
+      EXPECT_NE(verdict.verdict, Verdict::kClear) << "configuration " << k;
+    }
+    if (verdict.verdict == Verdict::kClear) ++clear;
+    if (verdict.verdict == Verdict::kCollision) {
+      EXPECT_TRUE(truth.contact || std::min(truth.obstacle_distance, truth.self_distance) < 1e-6)
+          << "configuration " << k;
+    }
+  }
+  EXPECT_GT(contacts, 30);  // 41 of 60 when written, 8 of them self-contacts; 19 CLEAR
+  EXPECT_GT(self_contacts, 5);
+  EXPECT_GT(clear, 12);
+}
+
+// A probe keeps an unmoved hull's proof for the next configuration; a verdict's proof has
+// radii far below the closest, so a probe told a clearance after a verdict decides every hull
+// again and gives a fresh clearance probe's radii.
+TEST(ConfigurationCheck, AProbeToldAClearanceAfterAVerdictDecidesEveryHullAgain) {
+  const cell::LoadedCell loaded = test::load_test_cell("ur5e-post.yaml");
+  const RobotCell cell = test::certified_cell(loaded);
+  const Eigen::VectorXd q = home_with(0, 55.0);
+  CellProbe probe(cell);
+  probe.set_need(ProbeNeed::kVerdict);
+  ProbeResult by_verdict, after_verdict, fresh;
+  probe.probe(q, false, by_verdict);
+  probe.set_need(ProbeNeed::kClearance);
+  probe.probe(q, false, after_verdict);
+  CellProbe(cell).probe(q, false, fresh);
+  int verdict_radii_below = 0;
+  for (std::size_t i = 0; i < cell.hulls().size(); ++i) {
+    EXPECT_NEAR(after_verdict.hulls[i].radius, fresh.hulls[i].radius, 1e-9 * (1.0 + fresh.hulls[i].radius)) << "hull " << i;
+    verdict_radii_below += by_verdict.hulls[i].radius < fresh.hulls[i].radius;
+  }
+  EXPECT_GE(verdict_radii_below, 3);  // the kept proofs would have lowered these
 }
 
 }  // namespace
