@@ -217,6 +217,7 @@ void RobotCell::build_offsets(const std::vector<geometry::ConvexPolytope>& raw_p
     hulls_[i].raw_sphere_L = geometry::certified_sphere(hulls_[i].raw_L);
     hulls_[i].expanded_sphere_L = geometry::certified_sphere(hulls_[i].expanded_L);
     hulls_[i].expanded_box_L = geometry::Aabb::of_points(hulls_[i].expanded_L);
+    hulls_[i].raw_box_L = geometry::Aabb::of_points(hulls_[i].raw_L);
   }
   if (offsets != nullptr) {
     std::vector<std::vector<Eigen::Vector3d>> expanded_L;

@@ -8,6 +8,7 @@
 #include "grpvss/exact/certified_query.hpp"
 #include "grpvss/exact/placed_separation.hpp"
 #include "grpvss/geometry/directed_rounding.hpp"
+#include "grpvss/geometry/placed_box.hpp"
 #include "grpvss/kinematics/forward_kinematics.hpp"
 #include "sphere_slab.hpp"
 
@@ -26,6 +27,8 @@ SelfPairProbe::SelfPairProbe(const RobotCell& cell)
     : cell_(&cell),
       placed_raw_(cell.hulls().size()),
       is_placed_(cell.hulls().size(), 0),
+      placed_boxes_W_(cell.hulls().size()),
+      is_box_placed_(cell.hulls().size(), 0),
       warm_normals_(cell.self_pairs().size()),
       has_warm_normal_(cell.self_pairs().size(), 0),
       anchor_bounds_(cell.self_pairs().size(), 0.0),
@@ -117,6 +120,51 @@ const std::vector<Eigen::Vector3d>& SelfPairProbe::placed(
   return placed_raw_[h];
 }
 
+// proof: proofs/configuration-check.md#lemma-configuration-verdict (case W with an axis slab:
+// every computed placed point lies in its hull's placed box, proofs/fast-path.md#placed-box-enclosure)
+bool SelfPairProbe::settle_by_boxes(const SelfPairHulls& pair, const std::vector<Eigen::Isometry3d>& X_WL,
+                                    SelfPairEvidence& evidence) {
+  const auto box_W = [&](int hull) -> const geometry::Aabb& {
+    const auto h = static_cast<std::size_t>(hull);
+    if (!is_box_placed_[h]) {
+      const LinkHull& link_hull = cell_->hulls()[h];
+      placed_boxes_W_[h] = geometry::placed_box_enclosure(link_hull.raw_box_L,
+                                                          X_WL[static_cast<std::size_t>(link_hull.link)]);
+      is_box_placed_[h] = 1;
+    }
+    return placed_boxes_W_[h];
+  };
+  const geometry::Aabb& a = box_W(pair.a);
+  const geometry::Aabb& b = box_W(pair.b);
+  // The widest gap between the boxes along an axis: n = +-e_k, |n| = 1 exactly.
+  double best_gap = 0.0;
+  geometry::SeparationWitness witness;
+  for (int k = 0; k < 3; ++k) {
+    const double above = geometry::rounding::nearest_mode_sub_down(b.lo[k], a.hi[k]);  // b beyond a
+    const double below = geometry::rounding::nearest_mode_sub_down(a.lo[k], b.hi[k]);  // b before a
+    if (above > best_gap) {
+      best_gap = above;
+      witness.normal = Eigen::Vector3d::Unit(k);
+      witness.offset_a = a.hi[k];
+      witness.offset_b = b.lo[k];
+    }
+    if (below > best_gap) {
+      best_gap = below;
+      witness.normal = -Eigen::Vector3d::Unit(k);
+      witness.offset_a = -a.lo[k];
+      witness.offset_b = -b.hi[k];
+    }
+  }
+  if (!(best_gap > 0.0)) return false;
+  const double distance = exact_distance_lower_bound(best_gap, cell_->placement_error());
+  if (!(distance > 0.0)) return false;
+  evidence.separated = true;
+  evidence.witness = witness;
+  evidence.lower_bound = best_gap;
+  evidence.distance = distance;
+  return true;
+}
+
 bool SelfPairProbe::settle_by_balls(const SelfPairHulls& pair,
                                     const std::vector<Eigen::Isometry3d>& X_WL, double ample,
                                     SelfPairEvidence& evidence) const {
@@ -166,6 +214,7 @@ bool SelfPairProbe::probe(const std::vector<Eigen::Isometry3d>& X_WL,
   const std::vector<SelfPairHulls>& pairs = cell_->self_pairs();
   out.assign(pairs.size(), SelfPairEvidence{});
   std::fill(is_placed_.begin(), is_placed_.end(), 0);
+  std::fill(is_box_placed_.begin(), is_box_placed_.end(), 0);
   bool any_contact = false;
   // The distance a ball slab must prove to settle a pair: any positive one for a verdict, the
   // sum of the hulls' radii for a clearance; without radii the balls are not tried.
@@ -179,6 +228,8 @@ bool SelfPairProbe::probe(const std::vector<Eigen::Isometry3d>& X_WL,
       add_revolution_bound(pairs[p], X_WL, out[p]);
       continue;
     }
+    // Boxes apart where balls meet: long links side by side (a verdict only).
+    if (need_ == ProbeNeed::kVerdict && settle_by_boxes(pairs[p], X_WL, out[p])) continue;
     if (settle_by_kept_normal(p, X_WL, out[p]) || settle_by_templates(p, X_WL, out[p])) {
       add_revolution_bound(pairs[p], X_WL, out[p]);
       continue;

@@ -9,6 +9,7 @@
 
 #include "grpvss/certify/robot_cell.hpp"
 #include "grpvss/exact/certified_query.hpp"
+#include "grpvss/geometry/broadphase.hpp"
 #include "grpvss/geometry/gjk.hpp"
 #include "grpvss/geometry/placed_hull.hpp"
 #include "grpvss/geometry/separation_witness.hpp"
@@ -82,6 +83,10 @@ class SelfPairProbe {
   /// witness's normal, its side at hull b, and the placed solid's support on the other.
   void add_revolution_bound(const SelfPairHulls& pair, const std::vector<Eigen::Isometry3d>& X_WL,
                             SelfPairEvidence& evidence) const;
+  /// For a verdict: an axis slab between the two hulls' placed boxes, kept in `evidence` when
+  /// it proves a positive distance (false otherwise).
+  bool settle_by_boxes(const SelfPairHulls& pair, const std::vector<Eigen::Isometry3d>& X_WL,
+                       SelfPairEvidence& evidence);
   /// The slab of the two hulls' placed balls, kept in `evidence` when it proves at least
   /// `ample` (false otherwise).
   bool settle_by_balls(const SelfPairHulls& pair, const std::vector<Eigen::Isometry3d>& X_WL,
@@ -91,6 +96,8 @@ class SelfPairProbe {
   ProbeNeed need_ = ProbeNeed::kClearance;
   std::vector<std::vector<Eigen::Vector3d>> placed_raw_;  ///< [hull], this probe's
   std::vector<char> is_placed_;
+  std::vector<geometry::Aabb> placed_boxes_W_;  ///< [hull], this probe's (settle_by_boxes)
+  std::vector<char> is_box_placed_;
   std::vector<Eigen::Vector3d> warm_normals_;  ///< [pair]
   std::vector<char> has_warm_normal_;
   std::vector<double> anchor_bounds_;  ///< [pair]: the lower bound the kept normal was found with

@@ -114,8 +114,9 @@ PlacedHulls placed_hulls(const RobotCell& cell, const Eigen::VectorXd& q) {
 
 // Property: over configurations swept through the post and random ones, one warm verdict
 // probe (kept normals, any ball slab) finds exactly what a fresh clearance probe (closest
-// witnesses) finds, every separation it claims holds in rationals on the placed hulls, and
-// every obstacle it leaves without evidence has a box apart from the placed offset's.
+// witnesses) finds, every separation it claims holds in rationals on the placed hulls (the
+// self pairs' axis slabs between placed boxes included), and every obstacle it leaves without
+// evidence has a box apart from the placed offset's.
 // It settles most terms without its closest witness: its radii are smaller.
 TEST(ConfigurationCheck, AVerdictProbeFindsWhatTheClearanceProbeFindsOnSlabsThatHoldExactly) {
   const cell::LoadedCell loaded = test::load_test_cell("ur5e-post.yaml");
@@ -127,7 +128,7 @@ TEST(ConfigurationCheck, AVerdictProbeFindsWhatTheClearanceProbeFindsOnSlabsThat
   for (int k = 0; k <= 80; ++k) qs.push_back(home_with(0, 1.25 * k));  // through the post and out
   std::mt19937_64 generator(20261127);
   for (int k = 0; k < 40; ++k) qs.push_back(test::random_configuration(loaded.robot, generator));
-  int clear = 0, not_clear = 0, smaller_radii = 0, settled_by_boxes = 0;
+  int clear = 0, not_clear = 0, smaller_radii = 0, settled_by_boxes = 0, axis_slabs = 0;
   ProbeResult by_verdict, by_clearance;
   for (std::size_t k = 0; k < qs.size(); ++k) {
     verdict_probe.probe(qs[k], false, by_verdict);
@@ -164,6 +165,7 @@ TEST(ConfigurationCheck, AVerdictProbeFindsWhatTheClearanceProbeFindsOnSlabsThat
                                               placed.raw_W[static_cast<std::size_t>(cell.self_pairs()[p].a)],
                                               placed.raw_W[static_cast<std::size_t>(cell.self_pairs()[p].b)]))
           << "configuration " << k << " pair " << p;
+      axis_slabs += evidence.witness.normal.cwiseAbs().maxCoeff() == 1.0 && evidence.witness.normal.squaredNorm() == 1.0;
     }
     for (std::size_t i = 0; i < cell.hulls().size(); ++i) {
       smaller_radii += by_verdict.hulls[i].radius < by_clearance.hulls[i].radius - 1e-9;
@@ -173,6 +175,7 @@ TEST(ConfigurationCheck, AVerdictProbeFindsWhatTheClearanceProbeFindsOnSlabsThat
   EXPECT_GT(not_clear, 40);
   EXPECT_GT(smaller_radii, 250);  // 367 of 847 hull radii
   EXPECT_GT(settled_by_boxes, 1000);  // 1,528 of 1,694 (hull, obstacle) pairs when written
+  EXPECT_GT(axis_slabs, 100);  // self pairs settled by their placed boxes: 145 when written
 }
 
 // Soundness against the independent URDF oracle (reference FK from the URDF text, exact

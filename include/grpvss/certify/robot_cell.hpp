@@ -35,6 +35,7 @@ struct LinkHull {
   geometry::CertifiedSphere raw_sphere_L;
   geometry::CertifiedSphere expanded_sphere_L;
   geometry::Aabb expanded_box_L;  ///< box of expanded_L (the broadphase places it, O(1))
+  geometry::Aabb raw_box_L;       ///< box of raw_L (a verdict's self pairs place it, O(1))
   /// Whether raw_L is decided on its link-frame template rather than placed (128+ vertices,
   /// geometry::kTemplateClimbMinVertices), and its largest |coordinate| for that.
   /// proof: proofs/fast-path.md#placed-separation
