@@ -139,6 +139,7 @@ void BM_RobotConfigurationCheckGrpvss(benchmark::State& state) {
     for (const auto& q : qs) clear += check.check(q).verdict == grpvss::certify::Verdict::kClear;
   }
   if (clear != static_cast<int>(qs.size())) state.SkipWithError("a configuration of a certified-clear trajectory is not CLEAR");
+  state.counters["clear"] = clear;
   per_item(state, qs.size(), "per_config");
   robot_label(state);
 }
