@@ -5,6 +5,7 @@
 #include <limits>
 #include <optional>
 
+#include "grpvss/common/next_double.hpp"
 #include "grpvss/exact/certified_query.hpp"
 #include "grpvss/exact/placed_separation.hpp"
 #include "grpvss/geometry/directed_rounding.hpp"
@@ -220,7 +221,7 @@ bool SelfPairProbe::probe(const std::vector<Eigen::Isometry3d>& X_WL,
   // sum of the hulls' radii for a clearance; without radii the balls are not tried.
   const bool balls_may_settle = need_ == ProbeNeed::kVerdict || !hull_radius.empty();
   const auto ample = [&](const SelfPairHulls& pair) {
-    if (need_ == ProbeNeed::kVerdict) return std::numeric_limits<double>::denorm_min();
+    if (need_ == ProbeNeed::kVerdict) return next_up(0.0);  // not denorm_min: see next_up
     return hull_radius[static_cast<std::size_t>(pair.a)] + hull_radius[static_cast<std::size_t>(pair.b)];
   };
   for (std::size_t p = 0; p < pairs.size(); ++p) {
