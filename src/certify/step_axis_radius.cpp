@@ -126,21 +126,24 @@ double StepAxisRadii::motion_bound(int hull_index, const Eigen::VectorXd& increm
   const HullRadiusTable& radii = cell_->radii();
   const int moving = std::min(hull.link, joints_);
   const std::size_t row = static_cast<std::size_t>(hull_index) * static_cast<std::size_t>(joints_);
+  const std::vector<double>& R = radii.radii_of(hull.link, hull.hull);  // R_jh at j - 1, j <= link
   r::UpwardRoundingScope upward;
   // tail_j = sum_{j<m<=i} w_m V_m, accumulated from the hull's link down.
   double tail = 0.0;
   double bound = 0.0;
   for (int j = moving; j >= 1; --j) {
     const double increment = increments_up[j - 1];
+    double weight = 1.0;  // w_j: R_jh for a revolute joint, 1 for a prismatic one
     if (radii.joint_type(j) == JointType::kRevolute) {
+      weight = R[static_cast<std::size_t>(j - 1)];
       const double at_ends = std::min(distances_from[row + static_cast<std::size_t>(j - 1)],
                                       distances_to[row + static_cast<std::size_t>(j - 1)]);
-      const double rho = std::min(radii.radius(hull.link, hull.hull, j), r::add_up(at_ends, tail));
+      const double rho = std::min(weight, r::add_up(at_ends, tail));
       bound = r::add_up(bound, r::mul_up(increment, rho));
     } else {
       bound = r::add_up(bound, increment);
     }
-    tail = r::add_up(tail, r::mul_up(radii.motion_bound_weight(hull.link, hull.hull, j), increment));
+    tail = r::add_up(tail, r::mul_up(weight, increment));
   }
   return bound;
 }

@@ -33,6 +33,10 @@ class HullRadiusTable {
   /// joint-monotone motion with increments `dq` (library units).
   double hull_motion_bound(int link, int hull, const Eigen::VectorXd& dq) const;
 
+  /// R_jh of one hull for joints 1..link at index j-1, unchecked: for loops that already keep
+  /// j <= link (radius() checks every call, which the per-step sums paid for).
+  const std::vector<double>& radii_of(int link, int hull) const { return radius_[link][hull]; }
+
   /// The coefficient of |dq_j| in M_h: R_jh for a revolute joint j <= link, 1 for a
   /// prismatic one, 0 for joints after the link (joint 1-based).
   double motion_bound_weight(int link, int hull, int joint) const;
