@@ -22,7 +22,7 @@ inline double next_up(double x) {
   std::memcpy(&bits, &x, sizeof bits);
   // Either zero steps from +0's pattern to 1, the smallest subnormal, by the integer path: a
   // subnormal constant is what GCC loads through the x87 unit, and storing it as a double
-  // costs a microcode assist each time (19% of a UR5e trajectory, docs/performance.md).
+  // costs a microcode assist each time (19% of a UR5e trajectory: docs/performance.md#x87-subnormal).
   if (x == 0.0) bits = 0;
   bits = x >= 0.0 ? bits + 1 : bits - 1;  // a negative x moves toward zero
   std::memcpy(&x, &bits, sizeof bits);
