@@ -24,6 +24,7 @@
 #include "grpvss/report/input_digests.hpp"
 #include "grpvss/report/lower_bound_text.hpp"
 #include "grpvss/motion/joint_trajectory_source.hpp"
+#include "grpvss/common/file_label.hpp"
 #include "program_inputs.hpp"
 #include "start_option.hpp"
 #include "trajectory_inputs.hpp"
@@ -150,11 +151,6 @@ void print_json(const certify::CheckReport& report, const std::string& trajector
                                     {"failures", report.failures},
                                     {"motion_clearances", clearances}}
                          .dump(2));
-}
-
-std::string file_label(const std::string& path) {
-  const auto slash = path.find_last_of('/');
-  return slash == std::string::npos ? path : path.substr(slash + 1);
 }
 
 int run_check(const CheckArguments& args) {

@@ -29,6 +29,7 @@
 #include "grpvss/report/json_report_stream.hpp"
 #include "grpvss/report/scene_json.hpp"
 #include "grpvss/report/thesis_output.hpp"
+#include "grpvss/common/file_label.hpp"
 #include "interactive/verdict_summary.hpp"
 #include "output_paths.hpp"
 #include "program_inputs.hpp"
@@ -41,11 +42,6 @@
 
 namespace grpvss::app {
 namespace {
-
-std::string file_label(const std::string& path) {
-  const auto slash = path.find_last_of('/');
-  return slash == std::string::npos ? path : path.substr(slash + 1);
-}
 
 std::vector<RequestedOutput> requested_outputs(const VerifyArguments& args) {
   return {{"--out", args.out}, {"--json", args.json}, {"--html", args.html},

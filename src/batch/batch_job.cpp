@@ -22,17 +22,13 @@
 #include "grpvss/report/json_report.hpp"
 #include "grpvss/report/json_report_stream.hpp"
 #include "grpvss/report/thesis_output.hpp"
+#include "grpvss/common/file_label.hpp"
 
 namespace grpvss::batch {
 namespace {
 
 constexpr int kExitInputError = 2;
 constexpr int kExitInternalError = 70;
-
-std::string file_label(const std::string& path) {
-  const auto slash = path.find_last_of('/');
-  return slash == std::string::npos ? path : path.substr(slash + 1);
-}
 
 /// Counts the accepted steps (the run keeps none in memory).
 class StepCounter : public certify::VerificationObserver {

@@ -3,14 +3,10 @@
 #include "grpvss/common/input_error.hpp"
 #include "grpvss/io/robot_program_file.hpp"
 #include "grpvss/report/input_digests.hpp"
+#include "grpvss/common/file_label.hpp"
 
 namespace grpvss::batch {
 namespace {
-
-std::string file_label(const std::string& path) {
-  const auto slash = path.find_last_of('/');
-  return slash == std::string::npos ? path : path.substr(slash + 1);
-}
 
 Eigen::VectorXd home_of(const RobotModel& robot) {
   Eigen::VectorXd q(robot.joint_count());

@@ -15,13 +15,12 @@
 #include "grpvss/io/environment_file.hpp"
 #include "grpvss/io/mesh_file.hpp"
 #include "grpvss/kinematics/urdf_chain.hpp"
+#include "grpvss/common/unit_roundoff.hpp"
 
 namespace grpvss::cell {
 namespace {
 
 using kinematics::BoundedPoints;
-
-constexpr double kUnitRoundoff = std::numeric_limits<double>::epsilon() / 2;
 
 // The convex pieces of one obstacle in its own frame, model units, each with its error.
 struct ShapePieces {

@@ -9,14 +9,13 @@
 #include <Eigen/Geometry>
 
 #include "grpvss/kinematics/urdf_chain.hpp"
+#include "grpvss/common/unit_roundoff.hpp"
 
 namespace grpvss::cell {
 namespace {
 
 using kinematics::BoundedFactor;
 using kinematics::BoundedProduct;
-
-constexpr double kUnitRoundoff = std::numeric_limits<double>::epsilon() / 2;
 
 // The smallest double s with s^2 >= value (value >= 0, exact).
 double sqrt_upper(const mpq_class& value) {

@@ -11,6 +11,7 @@
 #include "grpvss/io/urdf_file.hpp"
 #include "grpvss/kinematics/kinematic_chain.hpp"
 #include "grpvss/kinematics/urdf_chain.hpp"
+#include "grpvss/common/unit_roundoff.hpp"
 
 namespace grpvss::cell {
 namespace {
@@ -18,8 +19,6 @@ namespace {
 using kinematics::BoundedFactor;
 using kinematics::BoundedPoints;
 using kinematics::BoundedProduct;
-
-constexpr double kUnitRoundoff = std::numeric_limits<double>::epsilon() / 2;
 
 // A chain joint's frames as the model stores them.
 JointFrames frames_of(const kinematics::ChainJoint& joint) {

@@ -12,6 +12,7 @@
 #include <gmpxx.h>
 
 #include "check_ledger.hpp"
+#include "exact_rational.hpp"
 #include "grpvss/evidence/certificate.hpp"
 #include "grpvss/geometry/revolution_solid.hpp"
 #include "grpvss/kinematics/kinematic_chain.hpp"
@@ -19,10 +20,6 @@
 #include "grpvss/model/robot_model.hpp"
 
 namespace grpvss::certify {
-
-using Rational = mpq_class;
-
-inline Rational exact(double value) { return Rational(value); }
 
 /// One link hull as the checker rebuilds it.
 struct CheckedHull {

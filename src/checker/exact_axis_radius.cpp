@@ -3,14 +3,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "exact_rational.hpp"
 #include "grpvss/geometry/rounded_bounds.hpp"
 
 namespace grpvss::certify {
 namespace {
 
-using Rational = mpq_class;
-
-Rational exact(double value) { return Rational(value); }
 Rational smaller(const Rational& a, const Rational& b) { return a < b ? a : b; }
 
 Rational exact_reach(const Joint& joint) {

@@ -5,13 +5,12 @@
 #include <system_error>
 
 #include "grpvss/common/input_error.hpp"
+#include "blank_char.hpp"
 
 namespace grpvss::io {
 namespace {
 
 constexpr std::size_t kMaxQuotedField = 40;
-
-bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
 
 /// The field as it appears in messages: quoted, cut to a readable length, control and
 /// non-ASCII bytes written as \xNN so a message is always printable.

@@ -7,6 +7,7 @@
 #include <system_error>
 
 #include "grpvss/common/input_error.hpp"
+#include "blank_char.hpp"
 
 namespace grpvss::io {
 namespace {
@@ -16,7 +17,6 @@ constexpr std::size_t kMaxQuoted = 40;
 bool is_letter(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; }
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
 bool is_name_char(char c) { return is_letter(c) || is_digit(c); }
-bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
 char upper(char c) { return (c >= 'a' && c <= 'z') ? char(c - 'a' + 'A') : c; }
 
 char comment_character(ProgramDialect dialect) {

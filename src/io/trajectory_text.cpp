@@ -3,13 +3,12 @@
 #include <fmt/format.h>
 
 #include "grpvss/common/input_error.hpp"
+#include "blank_char.hpp"
 
 namespace grpvss::io {
 namespace {
 
 constexpr std::size_t kMaxQuoted = 40;
-
-bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
 
 }  // namespace
 

@@ -32,7 +32,7 @@ std::string text_of(const Eigen::Vector3d& v) {
   return buffer;
 }
 
-std::string number_text(double x) {
+std::string round_trip_text(double x) {
   char buffer[64];
   std::snprintf(buffer, sizeof buffer, "%.17g", x);
   return buffer;
@@ -201,7 +201,7 @@ class DescriptionBuilder {
   void check_option_names() const {
     if (!(options_.default_acceleration > 0) || !std::isfinite(options_.default_acceleration)) {
       throw InputError(xml_.file(), 0, "a positive, finite default acceleration",
-                       number_text(options_.default_acceleration));
+                       round_trip_text(options_.default_acceleration));
     }
     for (const auto& [name, value] : options_.accelerations) {
       if (chain_names_.count(name) == 0) {
@@ -210,7 +210,7 @@ class DescriptionBuilder {
       }
       if (!(value > 0) || !std::isfinite(value)) {
         throw InputError(xml_.file(), joint_line(name),
-                         "a positive, finite acceleration for joint '" + name + "'", number_text(value));
+                         "a positive, finite acceleration for joint '" + name + "'", round_trip_text(value));
       }
     }
   }
@@ -369,7 +369,7 @@ class DescriptionBuilder {
     const double velocity = joint.limits->velocity;
     if (!is_accepted_magnitude(velocity) || velocity < 0) {
       throw InputError(xml_.file(), joint_line(joint.name),
-                       "a velocity limit >= 0 for joint '" + joint.name + "'", number_text(velocity));
+                       "a velocity limit >= 0 for joint '" + joint.name + "'", round_trip_text(velocity));
     }
     return velocity;
   }
@@ -412,7 +412,7 @@ class DescriptionBuilder {
   void require_positive(double x, const std::string& what, const std::string& owner, int line) const {
     if (!(x > 0) || !is_accepted_magnitude(x)) {
       throw InputError(xml_.file(), line, "a positive " + what + " in " + owner + " (at most 1e9)",
-                       number_text(x));
+                       round_trip_text(x));
     }
   }
 

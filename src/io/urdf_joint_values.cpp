@@ -7,15 +7,12 @@
 #include <vector>
 
 #include "grpvss/common/input_error.hpp"
+#include "grpvss/common/unit_roundoff.hpp"
 
 namespace grpvss::io {
 namespace {
 
-constexpr double kUnitRoundoff = std::numeric_limits<double>::epsilon() / 2;
-
-double gamma(int n) { return n * kUnitRoundoff / (1 - n * kUnitRoundoff); }
-
-std::string number_text(double x) {
+std::string round_trip_text(double x) {
   char buffer[64];
   std::snprintf(buffer, sizeof buffer, "%.17g", x);
   return buffer;
@@ -75,9 +72,9 @@ class SideJointResolver {
     // arithmetic on them stays clear of underflow (proofs/urdf-frames.md#setting).
     if (!is_accepted_magnitude(value.value) || value.value < lower || value.value > upper) {
       throw InputError(xml_.file(), line(joint.name),
-                       "a value within [" + number_text(lower) + ", " + number_text(upper) +
+                       "a value within [" + round_trip_text(lower) + ", " + round_trip_text(upper) +
                            "] for joint '" + joint.name + "'",
-                       number_text(value.value));
+                       round_trip_text(value.value));
     }
     values_[joint.name] = value;
     return value;
@@ -140,7 +137,7 @@ std::pair<double, double> joint_limits(const UrdfXml& xml, const urdf::Joint& jo
     throw InputError(xml.file(), line,
                      "limits lower <= upper for joint '" + joint.name +
                          "', each 0 or of magnitude within [1e-300, 1e9]",
-                     "lower " + number_text(lower) + ", upper " + number_text(upper));
+                     "lower " + round_trip_text(lower) + ", upper " + round_trip_text(upper));
   }
   return {lower, upper};
 }

@@ -9,14 +9,14 @@
 namespace grpvss::io {
 namespace {
 
-bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
+bool is_xml_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
 
 // Splits off the next blank-separated token; empty when none is left.
 std::string_view next_token(std::string_view& rest) {
   std::size_t begin = 0;
-  while (begin < rest.size() && is_blank(rest[begin])) ++begin;
+  while (begin < rest.size() && is_xml_space(rest[begin])) ++begin;
   std::size_t end = begin;
-  while (end < rest.size() && !is_blank(rest[end])) ++end;
+  while (end < rest.size() && !is_xml_space(rest[end])) ++end;
   const std::string_view token = rest.substr(begin, end - begin);
   rest.remove_prefix(end);
   return token;

@@ -5,12 +5,10 @@
 #include <limits>
 #include <stdexcept>
 
+#include "grpvss/common/unit_roundoff.hpp"
+
 namespace grpvss::kinematics {
 namespace {
-
-constexpr double kUnitRoundoff = std::numeric_limits<double>::epsilon() / 2;  // u = 2^-53
-
-double gamma(int n) { return n * kUnitRoundoff / (1 - n * kUnitRoundoff); }
 
 // One factor T_k = (R_k, t_k) of the left-to-right product: bounds on the stored rotation's
 // error (spectral norm), on the stored translation's error, and on the stored translation's norm.

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <limits>
 
+#include "grpvss/common/unit_roundoff.hpp"
+
 namespace grpvss::kinematics {
 namespace {
 
@@ -10,7 +12,6 @@ namespace {
 // entry is off by at most 4u, and a planar rotation block [[c,-s],[s,c]] perturbed by
 // (ec, es) has spectral-norm error sqrt(ec^2 + es^2) <= sqrt(2) * 4u.
 // proof: proofs/fk-rounding.md#trig-rounding
-constexpr double kUnitRoundoff = std::numeric_limits<double>::epsilon() / 2;
 const double kPlanarRotationError = std::sqrt(2.0) * 4 * kUnitRoundoff;
 
 // Rotation about z (axis 2) or x (axis 0) built entry by entry (no products, so the only

@@ -3,12 +3,10 @@
 #include <cmath>
 #include <limits>
 
+#include "grpvss/common/unit_roundoff.hpp"
+
 namespace grpvss::kinematics {
 namespace {
-
-constexpr double kUnitRoundoff = std::numeric_limits<double>::epsilon() / 2;  // u = 2^-53
-
-double gamma(int n) { return n * kUnitRoundoff / (1 - n * kUnitRoundoff); }
 
 double l1_norm(const Eigen::Vector3d& t) { return t.cwiseAbs().sum(); }  // >= Euclidean norm
 

@@ -6,12 +6,10 @@
 #include <stdexcept>
 #include <string>
 
+#include "grpvss/common/unit_roundoff.hpp"
+
 namespace grpvss::kinematics {
 namespace {
-
-constexpr double kUnitRoundoff = std::numeric_limits<double>::epsilon() / 2;  // u = 2^-53
-
-double gamma(int n) { return n * kUnitRoundoff / (1 - n * kUnitRoundoff); }
 
 // Multiplies by the rotation factor R unless it is an exact identity (a z axis), which would
 // only add rounding terms to the bound.

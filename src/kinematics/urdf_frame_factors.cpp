@@ -5,12 +5,10 @@
 
 #include "grpvss/kinematics/urdf_chain.hpp"
 
+#include "grpvss/common/unit_roundoff.hpp"
+
 namespace grpvss::kinematics {
 namespace {
-
-constexpr double kUnitRoundoff = std::numeric_limits<double>::epsilon() / 2;  // u = 2^-53
-
-double gamma(int n) { return n * kUnitRoundoff / (1 - n * kUnitRoundoff); }
 
 // Rotation by `angle` about coordinate axis `axis` (0 x, 1 y, 2 z), built entry by entry from
 // libm cos/sin. When the angle is the double nearest to a decimal (angle_is_rounded), the

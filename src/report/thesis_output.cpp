@@ -11,17 +11,11 @@
 
 #include "grpvss/report/atomic_output.hpp"
 #include "grpvss/report/file_units.hpp"
+#include "thesis_fixed2.hpp"
 
 namespace grpvss::report {
 
 namespace {
-
-/// `%.2f` as FORTRAN's F format printed it, without the "-0.00" a tiny negative would give.
-std::string fixed2(double value) {
-  std::string text = fmt::format("{:.2f}", value);
-  if (text == "-0.00") text = "0.00";
-  return text;
-}
 
 std::string joined(const std::vector<double>& values, const char* separator) {
   std::string text;

@@ -3,6 +3,7 @@
 #include "grpvss/motion/joint_trajectory_source.hpp"
 
 #include "grpvss/motion/profile_table.hpp"
+#include "thesis_fixed2.hpp"
 
 #include <cmath>
 
@@ -21,13 +22,6 @@ const char* segment_title(motion::SegmentKind kind) {
     case motion::SegmentKind::kTrajectoryPiece: return "TRAJECTORY PIECE";
   }
   return "?";
-}
-
-/// Two decimals as the thesis prints them, never "-0.00".
-std::string fixed2(double x) {
-  std::string text = fmt::format("{:.2f}", x);
-  if (text == "-0.00") text = "0.00";
-  return text;
 }
 
 // A length with two decimals when they show it exactly (0.50, the thesis's output), else with
