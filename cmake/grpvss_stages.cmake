@@ -38,6 +38,12 @@ function(grpvss_add_stage stage)
   target_compile_options(${target} ${public} -ffp-contract=off -frounding-math)
   if(sources)
     set_target_properties(${target} PROPERTIES POSITION_INDEPENDENT_CODE ON)
+    # Unity batches: most of a stage's compile time is parsing the same headers (Eigen, fmt,
+    # the stage's own); CI builds the library three times on 2 cores (docs/reliability.md#ci-time).
+    # Not the CGAL stage: its units are large already (~20 s, 1.5 GB each).
+    if(NOT stage STREQUAL "exact")
+      set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE 8)
+    endif()
     target_include_directories(${target} PRIVATE ${GRPVSS_ROOT}/src/${stage})
     target_link_libraries(${target} PRIVATE ${ARG_PRIVATE_LIBS})
     target_compile_options(${target} PRIVATE ${GRPVSS_WARNINGS})

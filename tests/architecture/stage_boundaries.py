@@ -2,7 +2,8 @@
 """The build enforces the stages' one-way data flow (docs/architecture.md).
 
 For each case, a probe that includes one header is compiled (-fsyntax-only) with the exact
-compile command CMake uses for a source of the given stage (from compile_commands.json). A
+compile command CMake uses for a source of the given stage (from compile_commands.json; a
+source compiled in a unity batch takes the batch's command). A
 header of a later stage, or another stage's internal header, must fail to compile ("No such
 file"); a header of an earlier stage must compile (the control: the probe itself is sound).
 
@@ -62,11 +63,33 @@ def probe_command(entry, probe):
     return out + ["-fsyntax-only", probe]
 
 
+def unity_members(entry):
+    """The sources a unity batch file (CMake UNITY_BUILD) #includes, as absolute paths."""
+    members = []
+    with open(entry["file"]) as handle:
+        for line in handle:
+            if line.startswith('#include "'):
+                members.append(line.split('"')[1])
+    return members
+
+
+def entries_by_source(database, root):
+    """Each source's compile entry; a source compiled inside a unity batch takes the batch's."""
+    by_file = {}
+    for entry in database:
+        if "/Unity/unity_" in entry["file"]:
+            for member in unity_members(entry):
+                by_file[os.path.relpath(member, root)] = entry
+        else:
+            by_file[os.path.relpath(entry["file"], root)] = entry
+    return by_file
+
+
 def main():
     database = json.load(open(sys.argv[1]))
     root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
     root = os.path.dirname(root)
-    by_file = {os.path.relpath(e["file"], root): e for e in database}
+    by_file = entries_by_source(database, root)
     failures = 0
     with tempfile.TemporaryDirectory() as directory:
         for index, (source, header, allowed) in enumerate(CASES):
