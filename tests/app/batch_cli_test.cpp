@@ -13,11 +13,12 @@
 #include <nlohmann/json.hpp>
 
 #include "support/cli_run.hpp"
+#include "support/data_paths.hpp"
 #include "support/text_files.hpp"
 
 namespace {
 
-const std::string kData = std::string(GRPVSS_SOURCE_DIR) + "/data/ibm7545/";
+using grpvss::test::kIbm7545Data;
 
 using grpvss::test::CliRun;
 using grpvss::test::run_cli;
@@ -27,9 +28,9 @@ class BatchCli : public ::testing::Test {
   void SetUp() override {
     directory_ = grpvss::test::make_temporary_directory("batch-cli");
     std::ofstream(directory_ + "/ptp.txt") << "1\n1\n50.,3.\n50.,3.\n4.,0.3\n50.,3.\n";
-    std::filesystem::copy_file(kData + "robot.txt", directory_ + "/robot.txt");
+    std::filesystem::copy_file(kIbm7545Data + "robot.txt", directory_ + "/robot.txt");
     for (const char* env : {"environment.txt", "bench-environment-near-miss.txt"}) {
-      std::filesystem::copy_file(kData + env, directory_ + "/" + env);
+      std::filesystem::copy_file(kIbm7545Data + env, directory_ + "/" + env);
     }
   }
   void TearDown() override { std::filesystem::remove_all(directory_); }

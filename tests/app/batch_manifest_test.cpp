@@ -13,7 +13,7 @@ namespace {
 using grpvss::batch::parse_batch_manifest;
 
 // The message of the InputError that parsing `text` as `file` throws ("" when none).
-std::string manifest_error(const std::string& text, const std::string& file = "cells/m.jsonl") {
+std::string manifest_parse_error(const std::string& text, const std::string& file = "cells/m.jsonl") {
   try {
     parse_batch_manifest(text, file);
   } catch (const grpvss::InputError& error) {
@@ -83,15 +83,15 @@ TEST(BatchManifest, YamlJobsAreTheSameJobsWithTheirLines) {
 }
 
 TEST(BatchManifest, UnknownKeysAreRefusedWithTheLineAndTheKnownKeys) {
-  EXPECT_EQ(manifest_error("{" + kJob + "}\n{" + kJob + R"(,"cel":"c.yaml"})"),
+  EXPECT_EQ(manifest_parse_error("{" + kJob + "}\n{" + kJob + R"(,"cel":"c.yaml"})"),
             "cells/m.jsonl:2: expected one of the job keys id, robot, env, cell, path, trajectory, program, "
             "tolerance, mode, offset, claim, timing, profile_table, ik, cp_speed, start, output, json, "
             "html, certificate, found `cel`");
-  EXPECT_EQ(manifest_error("jobs:\n  - robot: r.txt\n    robt: r.txt\n", "m.yml"),
+  EXPECT_EQ(manifest_parse_error("jobs:\n  - robot: r.txt\n    robt: r.txt\n", "m.yml"),
             "m.yml:2: expected one of the job keys id, robot, env, cell, path, trajectory, program, "
             "tolerance, mode, offset, claim, timing, profile_table, ik, cp_speed, start, output, json, "
             "html, certificate, found `robt`");
-  EXPECT_EQ(manifest_error("job:\n  - robot: r.txt\n", "m.yml"),
+  EXPECT_EQ(manifest_parse_error("job:\n  - robot: r.txt\n", "m.yml"),
             "m.yml:1: expected the top-level key `jobs`, found `job`");
 }
 
@@ -107,56 +107,56 @@ TEST(BatchManifest, ACellJobNeedsOnlyThePathAndNamesNoThesisFiles) {
   EXPECT_EQ(manifest.jobs[0].options.timing, "");      // unset: synchronized for a cell
   EXPECT_EQ(manifest.jobs[1].options.tolerance, 0.002);
   EXPECT_EQ(manifest.jobs[1].options.timing, "independent");
-  EXPECT_EQ(manifest_error(R"({"cell":"c.yaml","robot":"r.txt","path":"p"})"),
+  EXPECT_EQ(manifest_parse_error(R"({"cell":"c.yaml","robot":"r.txt","path":"p"})"),
             "cells/m.jsonl:1: expected either `cell`, or `robot` with `env`, not both");
-  EXPECT_EQ(manifest_error(R"({"cell":"c.yaml","tolerance":1})"),
+  EXPECT_EQ(manifest_parse_error(R"({"cell":"c.yaml","tolerance":1})"),
             "cells/m.jsonl:1: expected exactly one of `path`, `trajectory` and `program`, found neither");
-  EXPECT_EQ(manifest_error(R"({"cell":"c.yaml","path":"p","cp_speed":0})"),
+  EXPECT_EQ(manifest_parse_error(R"({"cell":"c.yaml","path":"p","cp_speed":0})"),
             "cells/m.jsonl:1: expected `cp_speed`: a finite number > 0, found 0");
-  EXPECT_EQ(manifest_error(R"({"env":"e.txt","path":"p","tolerance":1})"),
+  EXPECT_EQ(manifest_parse_error(R"({"env":"e.txt","path":"p","tolerance":1})"),
             "cells/m.jsonl:1: expected a job with the key `robot` (or a `cell`)");
-  EXPECT_EQ(manifest_error(R"({"robot":"r.txt","env":"e.txt","path":"p"})"),
+  EXPECT_EQ(manifest_parse_error(R"({"robot":"r.txt","env":"e.txt","path":"p"})"),
             "cells/m.jsonl:1: expected a job with the key `tolerance` (or a `cell`)");
 }
 
 TEST(BatchManifest, MissingKeysWrongTypesAndBadChoicesNameTheLine) {
-  EXPECT_EQ(manifest_error(R"({"robot":"r.txt","env":"e.txt","tolerance":1})"),
+  EXPECT_EQ(manifest_parse_error(R"({"robot":"r.txt","env":"e.txt","tolerance":1})"),
             "cells/m.jsonl:1: expected exactly one of `path`, `trajectory` and `program`, found neither");
-  EXPECT_EQ(manifest_error(R"({"robot":"r.txt","env":"e.txt","path":"p","tolerance":"1"})"),
+  EXPECT_EQ(manifest_parse_error(R"({"robot":"r.txt","env":"e.txt","path":"p","tolerance":"1"})"),
             "cells/m.jsonl:1: expected `tolerance`: a number, found a string");
-  EXPECT_EQ(manifest_error(R"({"robot":["r"],"env":"e.txt","path":"p","tolerance":1})"),
+  EXPECT_EQ(manifest_parse_error(R"({"robot":["r"],"env":"e.txt","path":"p","tolerance":1})"),
             "cells/m.jsonl:1: expected `robot`: a string, found an array");
-  EXPECT_EQ(manifest_error(R"({"robot":"r.txt","env":"e.txt","path":3,"tolerance":1})"),
+  EXPECT_EQ(manifest_parse_error(R"({"robot":"r.txt","env":"e.txt","path":3,"tolerance":1})"),
             "cells/m.jsonl:1: expected `path`: a string, found a number");
-  EXPECT_EQ(manifest_error("{" + kJob + "}\n{" + kJob + R"(,"tolerance":-1})"),
+  EXPECT_EQ(manifest_parse_error("{" + kJob + "}\n{" + kJob + R"(,"tolerance":-1})"),
             "cells/m.jsonl:2: expected `tolerance`: a finite number > 0, found -1");
-  EXPECT_EQ(manifest_error("{" + kJob + R"(,"mode":"fast"})"),
+  EXPECT_EQ(manifest_parse_error("{" + kJob + R"(,"mode":"fast"})"),
             "cells/m.jsonl:1: expected `mode`: certified or thesis, found 'fast'");
-  EXPECT_EQ(manifest_error("{" + kJob + R"(,"offset":"ball"})"),
+  EXPECT_EQ(manifest_parse_error("{" + kJob + R"(,"offset":"ball"})"),
             "cells/m.jsonl:1: expected `offset`: auto, cube or rhombicuboctahedron, found 'ball'");
-  EXPECT_EQ(manifest_error("{" + kJob + R"(,"ik":"magic"})"),
+  EXPECT_EQ(manifest_parse_error("{" + kJob + R"(,"ik":"magic"})"),
             "cells/m.jsonl:1: expected `ik`: auto, ibm7545, opw, ur, numeric or plugin:PATH.so, "
             "found 'magic'");
-  EXPECT_EQ(manifest_error("{" + kJob + R"(,"mode":"thesis","certificate":"c"})"),
+  EXPECT_EQ(manifest_parse_error("{" + kJob + R"(,"mode":"thesis","certificate":"c"})"),
             "cells/m.jsonl:1: expected `certificate` only with `mode: certified`, found mode "
             "'thesis'");
 }
 
 TEST(BatchManifest, MalformedDocumentsAreRefused) {
-  EXPECT_EQ(manifest_error("{" + kJob + "}\n[1, 2]\n"),
+  EXPECT_EQ(manifest_parse_error("{" + kJob + "}\n[1, 2]\n"),
             "cells/m.jsonl:2: expected a JSON object (one job per line), found an array");
-  const std::string broken = manifest_error("{" + kJob + "}\n{\"robot\": \n");
+  const std::string broken = manifest_parse_error("{" + kJob + "}\n{\"robot\": \n");
   EXPECT_EQ(broken.rfind("cells/m.jsonl:2: expected a JSON object (one job per line), found "
                          "[json.exception.parse_error.101]",
                          0),
             0u)
       << broken;
-  EXPECT_EQ(manifest_error("\n\n"), "cells/m.jsonl:0: expected at least one job, found none");
-  EXPECT_EQ(manifest_error("jobs: 3\n", "m.yaml"),
+  EXPECT_EQ(manifest_parse_error("\n\n"), "cells/m.jsonl:0: expected at least one job, found none");
+  EXPECT_EQ(manifest_parse_error("jobs: 3\n", "m.yaml"),
             "m.yaml:1: expected `jobs`: a sequence of jobs, found a scalar");
-  EXPECT_EQ(manifest_error("jobs:\n  - 3\n", "m.yaml"),
+  EXPECT_EQ(manifest_parse_error("jobs:\n  - 3\n", "m.yaml"),
             "m.yaml:2: expected a job (a mapping), found a scalar");
-  EXPECT_EQ(manifest_error("{}", "m.txt"),
+  EXPECT_EQ(manifest_parse_error("{}", "m.txt"),
             "m.txt:0: expected a manifest named *.jsonl, *.json, *.yaml or *.yml, found '.txt'");
 }
 

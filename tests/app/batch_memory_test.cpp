@@ -14,11 +14,12 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "support/data_paths.hpp"
 #include "support/text_files.hpp"
 
 namespace {
 
-const std::string kData = std::string(GRPVSS_SOURCE_DIR) + "/data/ibm7545/";
+using grpvss::test::kIbm7545Data;
 constexpr int kJobs = 10000;
 
 int run_shell(const std::string& command) {
@@ -40,7 +41,7 @@ std::string job_line(int i) {
   const std::string reports =
       i % 100 == 0 ? fmt::format(R"(,"json":"r/{}.json","output":"r/{}.out")", i, i) : "";
   return fmt::format(R"({{"id":"j{}","robot":"{}robot.txt","env":"{}{}","path":"p/{}.txt","tolerance":{}{}}})",
-                     i, kData, kData, env, i, i % 3 == 0 ? "1" : "0.5", reports) + "\n";
+                     i, kIbm7545Data, kIbm7545Data, env, i, i % 3 == 0 ? "1" : "0.5", reports) + "\n";
 }
 
 TEST(BatchMemory, TenThousandJobsStayUnder500MBAndAgreeWithVerify) {
@@ -84,7 +85,7 @@ TEST(BatchMemory, TenThousandJobsStayUnder500MBAndAgreeWithVerify) {
     const char* env = i % 2 == 0 ? "bench-environment-near-miss.txt" : "environment.txt";
     const int verify_code = run_shell(fmt::format(
         "cd {} && {} verify --robot {}robot.txt --env {}{} --path p/{}.txt --tolerance {} > {}",
-        directory, GRPVSS_CLI, kData, kData, env, i, i % 3 == 0 ? "1" : "0.5", out));
+        directory, GRPVSS_CLI, kIbm7545Data, kIbm7545Data, env, i, i % 3 == 0 ? "1" : "0.5", out));
     const std::string summary = grpvss::test::read_text_file(out);
     EXPECT_EQ(result["exit_code"], verify_code) << i;
     // The first line states the motion model, the second the verdict.

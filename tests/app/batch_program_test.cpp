@@ -16,12 +16,13 @@
 #include "grpvss/common/input_error.hpp"
 #include "grpvss/io/robot_program_file.hpp"
 #include "support/cli_run.hpp"
+#include "support/data_paths.hpp"
 #include "support/text_files.hpp"
 
 namespace {
 
-const std::string kCell = std::string(GRPVSS_SOURCE_DIR) + "/tests/data/cells/ur5e-post-no-self.yaml";
-const std::string kPrograms = std::string(GRPVSS_SOURCE_DIR) + "/tests/data/programs/";
+using grpvss::test::kUr5ePostNoSelfCell;
+using grpvss::test::kTestPrograms;
 
 using grpvss::test::CliRun;
 using grpvss::test::run_cli;
@@ -36,8 +37,8 @@ class BatchProgram : public ::testing::Test {
   std::string directory_;
 };
 
-std::string job(const std::string& id, const std::string& program, const std::string& extra) {
-  return "  - {id: " + id + ", cell: " + kCell + ", program: " + kPrograms + program + extra + "}\n";
+std::string program_job(const std::string& id, const std::string& program, const std::string& extra) {
+  return "  - {id: " + id + ", cell: " + kUr5ePostNoSelfCell + ", program: " + kTestPrograms + program + extra + "}\n";
 }
 
 using grpvss::test::summary_steps;
@@ -45,8 +46,8 @@ using grpvss::test::summary_steps;
 TEST_F(BatchProgram, ReportsCertificatesAndResultLinesAreThoseOfVerifyProgram) {
   std::ofstream(directory_ + "/m.yaml")
       << "jobs:\n"
-      << job("clear", "ur5e-clear.script", ", json: clear.json, certificate: clear.cert")
-      << job("post", "ur5e-through-post.script", ", json: post.json, certificate: post.cert");
+      << program_job("clear", "ur5e-clear.script", ", json: clear.json, certificate: clear.cert")
+      << program_job("post", "ur5e-through-post.script", ", json: post.json, certificate: post.cert");
   const CliRun batch = run_cli(directory_, "batch m.yaml -j 2");
   ASSERT_EQ(batch.exit_code, 1) << batch.out << batch.err;
   const auto lines = grpvss::test::split_lines(batch.out);
@@ -56,7 +57,7 @@ TEST_F(BatchProgram, ReportsCertificatesAndResultLinesAreThoseOfVerifyProgram) {
                     {"post", "ur5e-through-post.script", "COLLISION", 1, -1}};
   for (int i = 0; i < 2; ++i) {
     const std::string id = expected[i].id;
-    const CliRun verify = run_cli(directory_, "verify --cell " + kCell + " --program " + kPrograms +
+    const CliRun verify = run_cli(directory_, "verify --cell " + kUr5ePostNoSelfCell + " --program " + kTestPrograms +
                                                   expected[i].file + " --json v-" + id +
                                                   ".json --certificate v-" + id + ".cert --no-cache");
     ASSERT_EQ(verify.exit_code, expected[i].exit_code) << verify.err;
@@ -92,8 +93,8 @@ TEST_F(BatchProgram, ReportsCertificatesAndResultLinesAreThoseOfVerifyProgram) {
   const nlohmann::json certificate = nlohmann::json::parse(read("clear.cert"));
   EXPECT_EQ(certificate["inputs"]["program_language"], "URScript");
   EXPECT_FALSE(certificate["inputs"].contains("path"));
-  const CliRun check = run_cli(directory_, "check-certificate --cell " + kCell + " --program " +
-                                               kPrograms + "ur5e-clear.script clear.cert");
+  const CliRun check = run_cli(directory_, "check-certificate --cell " + kUr5ePostNoSelfCell + " --program " +
+                                               kTestPrograms + "ur5e-clear.script clear.cert");
   EXPECT_EQ(check.exit_code, 0) << check.out << check.err;
 }
 
@@ -103,12 +104,12 @@ TEST_F(BatchProgram, AStartAndThesisModeGiveVerifysOutputs) {
   const std::string start = "0.3,-1.5707963267948966,1.5707963267948966,0,0,0";
   std::ofstream(directory_ + "/m.yaml")
       << "jobs:\n"
-      << job("started", "ur5e-clear.script", ", start: \"" + start + "\", certificate: s.cert")
-      << job("thesis", "ur5e-clear.script", ", mode: thesis, output: t.txt");
+      << program_job("started", "ur5e-clear.script", ", start: \"" + start + "\", certificate: s.cert")
+      << program_job("thesis", "ur5e-clear.script", ", mode: thesis, output: t.txt");
   const CliRun batch = run_cli(directory_, "batch m.yaml");
   ASSERT_EQ(batch.exit_code, 0) << batch.out << batch.err;
-  const CliRun started = run_cli(directory_, "verify " + std::string("--cell ") + kCell +
-                                                 " --program " + kPrograms +
+  const CliRun started = run_cli(directory_, "verify " + std::string("--cell ") + kUr5ePostNoSelfCell +
+                                                 " --program " + kTestPrograms +
                                                  "ur5e-clear.script --start " + start +
                                                  " --certificate v-s.cert --no-cache");
   ASSERT_EQ(started.exit_code, 0) << started.err;
@@ -116,7 +117,7 @@ TEST_F(BatchProgram, AStartAndThesisModeGiveVerifysOutputs) {
   const nlohmann::json recorded_start = nlohmann::json::parse(read("s.cert"))["start"];
   ASSERT_TRUE(recorded_start.is_array());
   EXPECT_EQ(recorded_start[0].get<double>(), 0.3);
-  const CliRun thesis = run_cli(directory_, "verify --cell " + kCell + " --program " + kPrograms +
+  const CliRun thesis = run_cli(directory_, "verify --cell " + kUr5ePostNoSelfCell + " --program " + kTestPrograms +
                                                 "ur5e-clear.script --mode thesis --out v-t.txt "
                                                 "--no-cache");
   ASSERT_EQ(thesis.exit_code, 0) << thesis.err;
@@ -128,10 +129,10 @@ TEST_F(BatchProgram, AStartAndThesisModeGiveVerifysOutputs) {
 
 TEST_F(BatchProgram, ARefusedMotionIsThatJobsErrorWithVerifysMessage) {
   std::ofstream(directory_ + "/m.yaml") << "jobs:\n"
-                                        << job("movel", "ur5e-movel.script", "")
-                                        << job("clear", "ur5e-clear.script", "");
+                                        << program_job("movel", "ur5e-movel.script", "")
+                                        << program_job("clear", "ur5e-clear.script", "");
   const CliRun batch = run_cli(directory_, "batch m.yaml");
-  const CliRun verify = run_cli(directory_, "verify --cell " + kCell + " --program " + kPrograms +
+  const CliRun verify = run_cli(directory_, "verify --cell " + kUr5ePostNoSelfCell + " --program " + kTestPrograms +
                                                 "ur5e-movel.script --quiet");
   EXPECT_EQ(batch.exit_code, 2) << batch.err;
   const auto lines = grpvss::test::split_lines(batch.out);
@@ -139,13 +140,13 @@ TEST_F(BatchProgram, ARefusedMotionIsThatJobsErrorWithVerifysMessage) {
   const nlohmann::json movel = nlohmann::json::parse(lines[0]);
   EXPECT_TRUE(movel["verdict"].is_null());
   EXPECT_EQ(movel["exit_code"], 2);
-  EXPECT_EQ(movel["error"]["file"], kPrograms + "ur5e-movel.script");
+  EXPECT_EQ(movel["error"]["file"], kTestPrograms + "ur5e-movel.script");
   EXPECT_GT(movel["error"]["line"].get<int>(), 0);
   EXPECT_EQ("grpvss: error: " + movel["error"]["message"].get<std::string>() + "\n", verify.err);
   EXPECT_EQ(nlohmann::json::parse(lines[1])["verdict"], "CLEAR");
 }
 
-std::string manifest_error(const std::string& text) {
+std::string program_manifest_error(const std::string& text) {
   try {
     (void)grpvss::batch::parse_batch_manifest(text, "m.yaml");
   } catch (const grpvss::InputError& error) {
@@ -161,12 +162,12 @@ TEST(BatchProgramManifest, ExactlyOneMotionAndNoKeyThatContradictsTheProgram) {
   EXPECT_EQ(manifest.jobs[0].options.program_file, "cells/p.script");
   EXPECT_EQ(manifest.jobs[0].options.path_file, "");
   EXPECT_EQ(manifest.jobs[0].options.start, "0,0,0,0,0,0");
-  EXPECT_EQ(manifest_error("jobs:\n  - {cell: c.yaml, program: p, trajectory: t}\n"),
+  EXPECT_EQ(program_manifest_error("jobs:\n  - {cell: c.yaml, program: p, trajectory: t}\n"),
             "m.yaml:2: expected exactly one of `path`, `trajectory` and `program`, found several");
-  EXPECT_EQ(manifest_error("jobs:\n  - {cell: c.yaml, program: p, timing: independent}\n"),
+  EXPECT_EQ(program_manifest_error("jobs:\n  - {cell: c.yaml, program: p, timing: independent}\n"),
             "m.yaml:2: expected no `timing` with `program` (a program is verified as the "
             "controller runs it: synchronized PTP, exact stops), found `timing`");
-  EXPECT_EQ(manifest_error("jobs:\n  - {cell: c.yaml, program: p, profile_table: x.txt}\n"),
+  EXPECT_EQ(program_manifest_error("jobs:\n  - {cell: c.yaml, program: p, profile_table: x.txt}\n"),
             "m.yaml:2: expected no `profile_table` with `program` (a program is verified as the "
             "controller runs it: synchronized PTP, exact stops), found `profile_table`");
 }
@@ -177,7 +178,7 @@ TEST(BatchProgramManifest, ExactlyOneMotionAndNoKeyThatContradictsTheProgram) {
 // any job runs, and the file is left as it was.
 TEST_F(BatchProgram, AnOutputNamingAKrlProgramsDataFileIsRefused) {
   for (const char* name : {"sixaxis_ptp.src", "sixaxis_ptp.dat", "$config.dat"}) {
-    std::filesystem::copy_file(kPrograms + name, directory_ + "/" + name);
+    std::filesystem::copy_file(kTestPrograms + name, directory_ + "/" + name);
   }
   const std::string six_axis_cell = std::string(GRPVSS_SOURCE_DIR) + "/data/sixaxis/cell.yaml";
   for (const char* data_file : {"sixaxis_ptp.dat", "$config.dat"}) {
@@ -196,11 +197,11 @@ TEST_F(BatchProgram, AnOutputNamingAKrlProgramsDataFileIsRefused) {
 }
 
 TEST(RobotProgramFiles, AKrlSourceListsTheDataFilesBesideItAndOtherProgramsOnlyThemselves) {
-  EXPECT_EQ(grpvss::io::robot_program_files(kPrograms + "sixaxis_ptp.src"),
-            (std::vector<std::string>{kPrograms + "sixaxis_ptp.src", kPrograms + "$config.dat",
-                                      kPrograms + "sixaxis_ptp.dat"}));
-  EXPECT_EQ(grpvss::io::robot_program_files(kPrograms + "sixaxis_cptp.src"),
-            (std::vector<std::string>{kPrograms + "sixaxis_cptp.src", kPrograms + "$config.dat"}));
-  EXPECT_EQ(grpvss::io::robot_program_files(kPrograms + "ur5e-clear.script"),
-            (std::vector<std::string>{kPrograms + "ur5e-clear.script"}));
+  EXPECT_EQ(grpvss::io::robot_program_files(kTestPrograms + "sixaxis_ptp.src"),
+            (std::vector<std::string>{kTestPrograms + "sixaxis_ptp.src", kTestPrograms + "$config.dat",
+                                      kTestPrograms + "sixaxis_ptp.dat"}));
+  EXPECT_EQ(grpvss::io::robot_program_files(kTestPrograms + "sixaxis_cptp.src"),
+            (std::vector<std::string>{kTestPrograms + "sixaxis_cptp.src", kTestPrograms + "$config.dat"}));
+  EXPECT_EQ(grpvss::io::robot_program_files(kTestPrograms + "ur5e-clear.script"),
+            (std::vector<std::string>{kTestPrograms + "ur5e-clear.script"}));
 }

@@ -14,13 +14,22 @@
 #include "grpvss/batch/batch_result_json.hpp"
 #include "grpvss/batch/batch_runner.hpp"
 #include "grpvss/common/input_error.hpp"
+#include "support/data_paths.hpp"
 #include "support/text_files.hpp"
 
 namespace {
 
-using namespace grpvss::batch;
+using grpvss::batch::BatchManifest;
+using grpvss::batch::BatchOptions;
+using grpvss::batch::BatchStatistics;
+using grpvss::batch::JobResult;
+using grpvss::batch::job_result_json;
+using grpvss::batch::parse_batch_manifest;
+using grpvss::batch::run_batch;
+using grpvss::batch::verdict_exit_code;
+using grpvss::batch::worst_exit_code;
 
-const std::string kData = std::string(GRPVSS_SOURCE_DIR) + "/data/ibm7545/";
+using grpvss::test::kIbm7545Data;
 
 // The Table 3 PTP whose quill passes 0.62 in. above the post of bench-environment-near-miss.
 const char* const kShortPtp = "1\n1\n50.,3.\n50.,3.\n4.,0.3\n50.,3.\n";
@@ -36,7 +45,7 @@ class BatchRunner : public ::testing::Test {
   // One JSON line per job: `environment` and `path` relative to the data or the temp folder.
   std::string job(const std::string& environment, const std::string& path, double tolerance,
                   const std::string& extra = "") const {
-    return "{\"robot\":\"" + kData + "robot.txt\",\"env\":\"" + kData + environment +
+    return "{\"robot\":\"" + kIbm7545Data + "robot.txt\",\"env\":\"" + kIbm7545Data + environment +
            "\",\"path\":\"" + path + "\",\"tolerance\":" + std::to_string(tolerance) + extra +
            "}\n";
   }
@@ -64,7 +73,7 @@ class BatchRunner : public ::testing::Test {
 TEST_F(BatchRunner, ResultsComeInManifestOrderAndEqualOneThreadsWithTwo) {
   std::string lines;
   for (int i = 0; i < 6; ++i) {
-    lines += job("environment.txt", kData + "path.txt", 0.5);       // COLLISION, 32 steps
+    lines += job("environment.txt", kIbm7545Data + "path.txt", 0.5);       // COLLISION, 32 steps
     lines += job("bench-environment-near-miss.txt", "ptp.txt", 0.5);  // CLEAR, short
     lines += job("bench-environment-near-miss.txt", "ptp.txt", 1.0);  // WITHIN_TOLERANCE
   }
@@ -89,7 +98,7 @@ TEST_F(BatchRunner, ResultsComeInManifestOrderAndEqualOneThreadsWithTwo) {
 
 TEST_F(BatchRunner, EachDistinctCellIsBuiltOnceAndEachFileReadOnce) {
   const std::string copy = directory_ + "/robot-copy.txt";
-  std::filesystem::copy_file(kData + "robot.txt", copy);
+  std::filesystem::copy_file(kIbm7545Data + "robot.txt", copy);
   std::string lines;
   for (int i = 0; i < 4; ++i) {
     lines += job("environment.txt", "ptp.txt", 0.5);
@@ -97,7 +106,7 @@ TEST_F(BatchRunner, EachDistinctCellIsBuiltOnceAndEachFileReadOnce) {
   }
   lines += job("environment.txt", "ptp.txt", 1.0);                      // another tolerance
   lines += job("environment.txt", "ptp.txt", 0.5, ",\"offset\":\"cube\"");  // another shape
-  lines += "{\"robot\":\"robot-copy.txt\",\"env\":\"" + kData +
+  lines += "{\"robot\":\"robot-copy.txt\",\"env\":\"" + kIbm7545Data +
            "environment.txt\",\"path\":\"ptp.txt\",\"tolerance\":0.5}\n";  // same content
   BatchStatistics statistics;
   const auto results = run(manifest(lines), 2, &statistics);
@@ -236,7 +245,7 @@ TEST_F(BatchRunner, CellJobsVerifyAsVerifyDoesWithTheCellsDefaultsAndNames) {
 
 TEST_F(BatchRunner, ACellJobWithoutAToleranceAnywhereIsThatJobsError) {
   std::ofstream(directory_ + "/cell.yaml")
-      << "units: m\nrobot:\n  thesis: " << kData << "robot.txt\nobstacles:\n"
+      << "units: m\nrobot:\n  thesis: " << kIbm7545Data << "robot.txt\nobstacles:\n"
       << "  - {name: block, box: [1, 1, 1], pose: {xyz: [50, 0, 0]}}\n";
   const auto lines = run(manifest(R"({"cell":"cell.yaml","path":"ptp.txt"})" "\n"), 1);
   ASSERT_EQ(lines.size(), 1u);

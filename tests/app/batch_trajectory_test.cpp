@@ -15,12 +15,13 @@
 #include "grpvss/batch/batch_manifest.hpp"
 #include "grpvss/common/input_error.hpp"
 #include "support/cli_run.hpp"
+#include "support/data_paths.hpp"
 #include "support/text_files.hpp"
 
 namespace {
 
-const std::string kCell = std::string(GRPVSS_SOURCE_DIR) + "/tests/data/cells/ur5e-post-no-self.yaml";
-const std::string kTrajectories = std::string(GRPVSS_SOURCE_DIR) + "/tests/data/trajectories/";
+using grpvss::test::kUr5ePostNoSelfCell;
+using grpvss::test::kTestTrajectories;
 
 using grpvss::test::CliRun;
 using grpvss::test::run_cli;
@@ -35,8 +36,8 @@ class BatchTrajectory : public ::testing::Test {
   std::string directory_;
 };
 
-std::string job(const std::string& id, const std::string& trajectory, const std::string& extra) {
-  return "  - {id: " + id + ", cell: " + kCell + ", trajectory: " + kTrajectories + trajectory +
+std::string trajectory_job(const std::string& id, const std::string& trajectory, const std::string& extra) {
+  return "  - {id: " + id + ", cell: " + kUr5ePostNoSelfCell + ", trajectory: " + kTestTrajectories + trajectory +
          extra + "}\n";
 }
 
@@ -45,8 +46,8 @@ using grpvss::test::summary_steps;
 TEST_F(BatchTrajectory, ReportsCertificatesAndResultLinesAreThoseOfVerifyTrajectory) {
   std::ofstream(directory_ + "/m.yaml")
       << "jobs:\n"
-      << job("clear", "ur5e-clear.json", ", json: clear.json, certificate: clear.cert")
-      << job("post", "ur5e-through-post.csv", ", json: post.json, certificate: post.cert");
+      << trajectory_job("clear", "ur5e-clear.json", ", json: clear.json, certificate: clear.cert")
+      << trajectory_job("post", "ur5e-through-post.csv", ", json: post.json, certificate: post.cert");
   const CliRun batch = run_cli(directory_, "batch m.yaml -j 2");
   ASSERT_EQ(batch.exit_code, 1) << batch.out << batch.err;
   const auto lines = grpvss::test::split_lines(batch.out);
@@ -56,8 +57,8 @@ TEST_F(BatchTrajectory, ReportsCertificatesAndResultLinesAreThoseOfVerifyTraject
                     {"post", "ur5e-through-post.csv", "COLLISION", 1, 34}};
   for (int i = 0; i < 2; ++i) {
     const std::string id = expected[i].id;
-    const CliRun verify = run_cli(directory_, "verify --cell " + kCell + " --trajectory " +
-                                                  kTrajectories + expected[i].file + " --json v-" +
+    const CliRun verify = run_cli(directory_, "verify --cell " + kUr5ePostNoSelfCell + " --trajectory " +
+                                                  kTestTrajectories + expected[i].file + " --json v-" +
                                                   id + ".json --certificate v-" + id +
                                                   ".cert --no-cache");
     ASSERT_EQ(verify.exit_code, expected[i].exit_code) << verify.err;
@@ -89,25 +90,25 @@ TEST_F(BatchTrajectory, ReportsCertificatesAndResultLinesAreThoseOfVerifyTraject
   const nlohmann::json certificate = nlohmann::json::parse(read("clear.cert"));
   EXPECT_TRUE(certificate["inputs"].contains("trajectory"));
   EXPECT_FALSE(certificate["inputs"].contains("path"));
-  const CliRun check = run_cli(directory_, "check-certificate --cell " + kCell + " --trajectory " +
-                                               kTrajectories + "ur5e-clear.json clear.cert");
+  const CliRun check = run_cli(directory_, "check-certificate --cell " + kUr5ePostNoSelfCell + " --trajectory " +
+                                               kTestTrajectories + "ur5e-clear.json clear.cert");
   EXPECT_EQ(check.exit_code, 0) << check.out << check.err;
 }
 
 TEST_F(BatchTrajectory, ATrajectoryTheRobotCannotRunIsThatJobsErrorWithVerifysMessage) {
   std::ofstream(directory_ + "/m.yaml") << "jobs:\n"
-                                        << job("limit", "ur5e-elbow-limit.csv", "")
-                                        << job("clear", "ur5e-clear.json", "");
+                                        << trajectory_job("limit", "ur5e-elbow-limit.csv", "")
+                                        << trajectory_job("clear", "ur5e-clear.json", "");
   const CliRun batch = run_cli(directory_, "batch m.yaml");
-  const CliRun verify = run_cli(directory_, "verify --cell " + kCell + " --trajectory " +
-                                                kTrajectories + "ur5e-elbow-limit.csv");
+  const CliRun verify = run_cli(directory_, "verify --cell " + kUr5ePostNoSelfCell + " --trajectory " +
+                                                kTestTrajectories + "ur5e-elbow-limit.csv");
   EXPECT_EQ(batch.exit_code, 2) << batch.err;
   const auto lines = grpvss::test::split_lines(batch.out);
   ASSERT_EQ(lines.size(), 2u) << batch.out;
   const nlohmann::json limit = nlohmann::json::parse(lines[0]);
   EXPECT_TRUE(limit["verdict"].is_null());
   EXPECT_EQ(limit["exit_code"], 2);
-  EXPECT_EQ(limit["error"]["file"], kTrajectories + "ur5e-elbow-limit.csv");
+  EXPECT_EQ(limit["error"]["file"], kTestTrajectories + "ur5e-elbow-limit.csv");
   EXPECT_EQ(limit["error"]["line"], 3);
   EXPECT_EQ("grpvss: error: " + limit["error"]["message"].get<std::string>() + "\n", verify.err);
   EXPECT_EQ(nlohmann::json::parse(lines[1])["verdict"], "CLEAR");
@@ -117,19 +118,19 @@ TEST_F(BatchTrajectory, AThesisRobotJobWithATrajectoryIsRefusedAtTheTrajectorysJ
   const std::string data = std::string(GRPVSS_SOURCE_DIR) + "/data/ibm7545/";
   std::ofstream(directory_ + "/m.jsonl")
       << R"({"robot":")" << data << R"(robot.txt","env":")" << data
-      << R"(environment.txt","tolerance":0.5,"trajectory":")" << kTrajectories
+      << R"(environment.txt","tolerance":0.5,"trajectory":")" << kTestTrajectories
       << "ur5e-clear.json\"}\n";
   const CliRun batch = run_cli(directory_, "batch m.jsonl");
   EXPECT_EQ(batch.exit_code, 2) << batch.err;
   const nlohmann::json line = nlohmann::json::parse(batch.out);
   EXPECT_EQ(line["error"]["line"], 3);
   EXPECT_EQ(line["error"]["message"],
-            kTrajectories + "ur5e-clear.json:3: expected a robot with named joints (a URDF robot "
+            kTestTrajectories + "ur5e-clear.json:3: expected a robot with named joints (a URDF robot "
                             "in a cell, --cell): a trajectory's joints are matched by name, found "
                             "a robot file without joint names");
 }
 
-std::string manifest_error(const std::string& text) {
+std::string trajectory_manifest_error(const std::string& text) {
   try {
     (void)grpvss::batch::parse_batch_manifest(text, "m.yaml");
   } catch (const grpvss::InputError& error) {
@@ -143,26 +144,26 @@ TEST(BatchTrajectoryManifest, ExactlyOneMotionAndNoKeyThatContradictsTheTrajecto
       "jobs:\n  - {cell: c.yaml, trajectory: t.csv, json: r.json}\n", "cells/m.yaml");
   EXPECT_EQ(manifest.jobs[0].options.trajectory_file, "cells/t.csv");
   EXPECT_EQ(manifest.jobs[0].options.path_file, "");
-  EXPECT_EQ(manifest_error("jobs:\n  - {cell: c.yaml}\n  - {cell: c.yaml, path: p, trajectory: t}\n"),
+  EXPECT_EQ(trajectory_manifest_error("jobs:\n  - {cell: c.yaml}\n  - {cell: c.yaml, path: p, trajectory: t}\n"),
             "m.yaml:2: expected exactly one of `path`, `trajectory` and `program`, found neither");
-  EXPECT_EQ(manifest_error("jobs:\n  - {cell: c.yaml, path: p}\n  - {cell: c.yaml, path: p, trajectory: t}\n"),
+  EXPECT_EQ(trajectory_manifest_error("jobs:\n  - {cell: c.yaml, path: p}\n  - {cell: c.yaml, path: p, trajectory: t}\n"),
             "m.yaml:3: expected exactly one of `path`, `trajectory` and `program`, found several");
-  EXPECT_EQ(manifest_error("jobs:\n  - {cell: c.yaml, trajectory: t, timing: independent}\n"),
+  EXPECT_EQ(trajectory_manifest_error("jobs:\n  - {cell: c.yaml, trajectory: t, timing: independent}\n"),
             "m.yaml:2: expected no `timing` with `trajectory` (the trajectory's waypoint times "
             "and interpolation are the motion), found `timing`");
-  EXPECT_EQ(manifest_error("jobs:\n  - {cell: c.yaml, trajectory: t, cp_speed: 1}\n"),
+  EXPECT_EQ(trajectory_manifest_error("jobs:\n  - {cell: c.yaml, trajectory: t, cp_speed: 1}\n"),
             "m.yaml:2: expected no `cp_speed` with `trajectory` (the trajectory's waypoint times "
             "and interpolation are the motion), found `cp_speed`");
-  EXPECT_EQ(manifest_error("jobs:\n  - {cell: c.yaml, trajectory: t, profile_table: x.txt}\n"),
+  EXPECT_EQ(trajectory_manifest_error("jobs:\n  - {cell: c.yaml, trajectory: t, profile_table: x.txt}\n"),
             "m.yaml:2: expected no `profile_table` with `trajectory` (the trajectory's waypoint "
             "times and interpolation are the motion), found `profile_table`");
-  EXPECT_EQ(manifest_error("jobs:\n  - {cell: c.yaml, trajectory: t, start: \"0,0,0,0,0,0\"}\n"),
+  EXPECT_EQ(trajectory_manifest_error("jobs:\n  - {cell: c.yaml, trajectory: t, start: \"0,0,0,0,0,0\"}\n"),
             "m.yaml:2: expected no `start` with `trajectory` (a trajectory starts at its first "
             "waypoint), found `start`");
-  EXPECT_EQ(manifest_error("jobs:\n  - {cell: c.yaml, trajectory: t, output: o.txt}\n"),
+  EXPECT_EQ(trajectory_manifest_error("jobs:\n  - {cell: c.yaml, trajectory: t, output: o.txt}\n"),
             "m.yaml:2: expected no `output` with `trajectory` (the thesis output file describes "
             "path programs; use `json`), found `output`");
-  EXPECT_EQ(manifest_error("jobs:\n  - {cell: c.yaml, trajectory: t, mode: thesis}\n"),
+  EXPECT_EQ(trajectory_manifest_error("jobs:\n  - {cell: c.yaml, trajectory: t, mode: thesis}\n"),
             "m.yaml:2: expected no `mode: thesis` with `trajectory` (the thesis step rule is "
             "defined for PTP and CP segments), found mode 'thesis'");
 }

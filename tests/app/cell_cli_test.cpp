@@ -14,11 +14,12 @@
 
 #include "app/exit_codes.hpp"
 #include "support/cli_run.hpp"
+#include "support/data_paths.hpp"
 #include "support/text_files.hpp"
 
 namespace {
 
-const std::string kCells = std::string(GRPVSS_SOURCE_DIR) + "/tests/data/cells/";
+using grpvss::test::kTestCells;
 
 using grpvss::test::CliRun;
 using grpvss::test::run_cli;
@@ -36,7 +37,7 @@ class CellCli : public ::testing::Test {
 };
 
 TEST_F(CellCli, AClearUr5ePathIsClearAndItsCertificateIsAccepted) {
-  const std::string inputs = "--cell " + kCells + "ur5e-post.yaml --path " + kCells + "ur5e-clear.txt";
+  const std::string inputs = "--cell " + kTestCells + "ur5e-post.yaml --path " + kTestCells + "ur5e-clear.txt";
   const CliRun verify = run_cli(dir(), "verify " + inputs + " --certificate c.json");
   ASSERT_EQ(verify.exit_code, grpvss::app::kExitOk) << verify.out << verify.err;
   EXPECT_NE(verify.out.find("verdict: CLEAR"), std::string::npos) << verify.out;
@@ -51,8 +52,8 @@ TEST_F(CellCli, AClearUr5ePathIsClearAndItsCertificateIsAccepted) {
 }
 
 TEST_F(CellCli, AUr5ePathThroughThePostIsACollisionOfTheForearmWithThePost) {
-  const CliRun verify = run_cli(dir(), "verify --cell " + kCells + "ur5e-post.yaml --path " +
-                                           kCells + "ur5e-through-post.txt");
+  const CliRun verify = run_cli(dir(), "verify --cell " + kTestCells + "ur5e-post.yaml --path " +
+                                           kTestCells + "ur5e-through-post.txt");
   ASSERT_EQ(verify.exit_code, grpvss::app::kExitFinding) << verify.out << verify.err;
   EXPECT_NE(verify.out.find("verdict: COLLISION"), std::string::npos) << verify.out;
   EXPECT_NE(verify.out.find("interference: forearm_link hull 0 / post, "), std::string::npos)
@@ -60,9 +61,9 @@ TEST_F(CellCli, AUr5ePathThroughThePostIsACollisionOfTheForearmWithThePost) {
 }
 
 TEST_F(CellCli, ACellWithThesisRobotFilesIsRefusedBeforeAnyWork) {
-  const CliRun verify = run_cli(dir(), "verify --cell " + kCells + "ur5e-post.yaml --robot " +
+  const CliRun verify = run_cli(dir(), "verify --cell " + kTestCells + "ur5e-post.yaml --robot " +
                                            GRPVSS_SOURCE_DIR "/data/ibm7545/robot.txt --path " +
-                                           kCells + "ur5e-clear.txt");
+                                           kTestCells + "ur5e-clear.txt");
   EXPECT_EQ(verify.exit_code, grpvss::app::kExitInputError) << verify.out << verify.err;
   EXPECT_NE(verify.err.find("either --cell or --robot with --env, not both"), std::string::npos)
       << verify.err;
@@ -83,7 +84,7 @@ namespace {
 // A copy of ur5e-bolted.yaml in `directory` without its allowed_contacts (its relative paths
 // made absolute).
 std::string cell_without_allowed_contacts(const std::string& directory) {
-  std::string text = grpvss::test::read_text_file(kCells + "ur5e-bolted.yaml");
+  std::string text = grpvss::test::read_text_file(kTestCells + "ur5e-bolted.yaml");
   text = text.substr(0, text.find("allowed_contacts:")) + "tolerance: 0.005\n";
   for (std::size_t at = text.find("../../../../"); at != std::string::npos;
        at = text.find("../../../../")) {
@@ -96,7 +97,7 @@ std::string cell_without_allowed_contacts(const std::string& directory) {
 
 TEST_F(CellCli, ARobotBoltedToItsTableIsClearWithTheAllowedContactAndItsCertificateSaysSo) {
   const std::string inputs =
-      "--cell " + kCells + "ur5e-bolted.yaml --path " + kCells + "ur5e-clear.txt";
+      "--cell " + kTestCells + "ur5e-bolted.yaml --path " + kTestCells + "ur5e-clear.txt";
   const CliRun verify = run_cli(dir(), "verify " + inputs + " --certificate c.json");
   ASSERT_EQ(verify.exit_code, grpvss::app::kExitOk) << verify.out << verify.err;
   EXPECT_NE(verify.out.find("allowed contacts (not verified): base_link hull 0 (base_link_inertia) / table\n"),
@@ -121,7 +122,7 @@ TEST_F(CellCli, ARobotBoltedToItsTableIsClearWithTheAllowedContactAndItsCertific
 TEST_F(CellCli, WithoutTheAllowedContactTheBaseOnTheTableIsACollision) {
   const std::string cell = cell_without_allowed_contacts(dir());
   const CliRun verify =
-      run_cli(dir(), "verify --cell " + cell + " --path " + kCells + "ur5e-clear.txt");
+      run_cli(dir(), "verify --cell " + cell + " --path " + kTestCells + "ur5e-clear.txt");
   EXPECT_EQ(verify.exit_code, grpvss::app::kExitFinding) << verify.out << verify.err;
   EXPECT_NE(verify.out.find("interference: base_link hull 0 (base_link_inertia) / table, "), std::string::npos)
       << verify.out;
@@ -129,7 +130,7 @@ TEST_F(CellCli, WithoutTheAllowedContactTheBaseOnTheTableIsACollision) {
 
 TEST_F(CellCli, AUr5eFoldingItsWristIntoItsUpperArmIsASelfCollisionNamingBothLinks) {
   const std::string inputs =
-      "--cell " + kCells + "ur5e-self.yaml --path " + kCells + "ur5e-fold.txt";
+      "--cell " + kTestCells + "ur5e-self.yaml --path " + kTestCells + "ur5e-fold.txt";
   const CliRun verify =
       run_cli(dir(), "verify " + inputs + " --certificate c.json --json r.json");
   ASSERT_EQ(verify.exit_code, grpvss::app::kExitFinding) << verify.out << verify.err;

@@ -14,6 +14,7 @@
 
 #include "app/exit_codes.hpp"
 #include "support/cli_run.hpp"
+#include "support/data_paths.hpp"
 #include "support/json_structure_check.hpp"
 #include "support/text_files.hpp"
 
@@ -23,8 +24,8 @@ using grpvss::test::CliRun;
 using grpvss::test::run_cli;
 using nlohmann::json;
 
-const std::string kSource = GRPVSS_SOURCE_DIR;
-const std::string kSixAxis = kSource + "/data/sixaxis/";
+using grpvss::test::kSourceDir;
+const std::string kSixAxis = kSourceDir + "/data/sixaxis/";
 
 class CellNamesCli : public ::testing::Test {
  protected:
@@ -77,7 +78,7 @@ TEST_F(CellNamesCli, TheCertificateNamesTheCellsLinksAndObstaclesAndTheCheckerCo
 }
 
 TEST_F(CellNamesCli, ThesisFilesCertificatesHaveNoNames) {
-  const std::string ibm = kSource + "/data/ibm7545/";
+  const std::string ibm = kSourceDir + "/data/ibm7545/";
   const CliRun verify =
       run_cli(dir(), "verify --robot " + ibm + "robot.txt --env " + ibm + "environment.txt --path " +
                          ibm + "path.txt --tolerance 0.5 --certificate c.json --quiet");
@@ -89,14 +90,14 @@ TEST_F(CellNamesCli, TheThesisOutputFileNamesEachInterferencePointsPair) {
   const CliRun verify = run_cli(dir(), "verify " + kCellInputs + " --out out.txt --quiet");
   ASSERT_EQ(verify.exit_code, grpvss::app::kExitFinding) << verify.out << verify.err;
   EXPECT_EQ(read("out.txt"),
-            grpvss::test::read_text_file(kSource + "/tests/app/golden/sixaxis-path-collision.out"));
+            grpvss::test::read_text_file(kSourceDir + "/tests/app/golden/sixaxis-path-collision.out"));
 }
 
 TEST_F(CellNamesCli, TheJsonReportValidatesAndTheSvgTitlesLinksAndObstacles) {
   const CliRun verify = run_cli(dir(), "verify " + kCellInputs + " --json r.json --quiet");
   ASSERT_EQ(verify.exit_code, grpvss::app::kExitFinding) << verify.out << verify.err;
   const json report = json::parse(read("r.json"));
-  const json schema = json::parse(grpvss::test::read_text_file(kSource + "/docs/report.schema.json"));
+  const json schema = json::parse(grpvss::test::read_text_file(kSourceDir + "/docs/report.schema.json"));
   EXPECT_EQ(grpvss::test::check_json_structure(report, schema), std::vector<std::string>{});
   ASSERT_TRUE(report["collision_step"].is_number_integer());
   const int step = report["collision_step"].get<int>();

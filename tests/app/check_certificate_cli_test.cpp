@@ -12,15 +12,16 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "support/data_paths.hpp"
 #include "support/text_files.hpp"
 
 namespace {
 
-const std::string kData = std::string(GRPVSS_SOURCE_DIR) + "/data/ibm7545/";
-const std::string kInputs = "--robot " + kData + "robot.txt --env " + kData +
-                            "environment.txt --path " + kData + "path.txt";
+using grpvss::test::kIbm7545Data;
+const std::string kInputs = "--robot " + kIbm7545Data + "robot.txt --env " + kIbm7545Data +
+                            "environment.txt --path " + kIbm7545Data + "path.txt";
 
-int run(const std::string& arguments) {
+int run_certificate_cli(const std::string& arguments) {
   const int status =
       std::system((std::string(GRPVSS_CLI) + " " + arguments + " > /dev/null 2>&1").c_str());
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -37,21 +38,21 @@ class CheckCertificateCli : public ::testing::Test {
  protected:
   void SetUp() override {
     directory_ = grpvss::test::make_temporary_directory("check-certificate");
-    ASSERT_EQ(run("verify " + kInputs + " --tolerance 0.5 --quiet --certificate " + path("c.json")), 1);
+    ASSERT_EQ(run_certificate_cli("verify " + kInputs + " --tolerance 0.5 --quiet --certificate " + path("c.json")), 1);
     document_ = nlohmann::json::parse(grpvss::test::read_text_file(path("c.json")));
   }
   void TearDown() override { std::filesystem::remove_all(directory_); }
   std::string path(const std::string& name) const { return directory_ + "/" + name; }
   int check(const nlohmann::json& document) const {
     std::ofstream(path("t.json")) << document.dump(1) << "\n";
-    return run("check-certificate " + kInputs + " " + path("t.json"));
+    return run_certificate_cli("check-certificate " + kInputs + " " + path("t.json"));
   }
   std::string directory_;
   nlohmann::json document_;
 };
 
 TEST_F(CheckCertificateCli, AcceptsTheCertificateVerifyWrote) {
-  EXPECT_EQ(run("check-certificate " + kInputs + " " + path("c.json")), 0);
+  EXPECT_EQ(run_certificate_cli("check-certificate " + kInputs + " " + path("c.json")), 0);
 }
 
 TEST_F(CheckCertificateCli, RejectsAnInflatedRadiusInTheLastSegment) {
@@ -70,7 +71,7 @@ TEST_F(CheckCertificateCli, RejectsARemovedStep) {
 TEST_F(CheckCertificateCli, ATruncatedFileIsAnInputError) {
   const std::string text = grpvss::test::read_text_file(path("c.json"));
   std::ofstream(path("t.json")) << text.substr(0, text.size() / 2);
-  EXPECT_EQ(run("check-certificate " + kInputs + " " + path("t.json")), 2);
+  EXPECT_EQ(run_certificate_cli("check-certificate " + kInputs + " " + path("t.json")), 2);
 }
 
 TEST_F(CheckCertificateCli, PrintsTheMotionModelItChecked) {
@@ -100,7 +101,7 @@ TEST_F(CheckCertificateCli, RefusesATimingThatContradictsTheCertificate) {
   EXPECT_EQ(text,
             "grpvss: error: --timing:0: expected the timing the certificate was made with "
             "(independent); it certifies nothing about synchronized timing, found synchronized\n");
-  EXPECT_EQ(run("check-certificate " + kInputs + " --timing independent " + path("c.json")), 0);
+  EXPECT_EQ(run_certificate_cli("check-certificate " + kInputs + " --timing independent " + path("c.json")), 0);
 }
 
 // The claim (docs/certificate.md#claim): printed as checked; a contradicting --claim is refused;
@@ -120,7 +121,7 @@ TEST_F(CheckCertificateCli, PrintsTheClaimItCheckedAndRefusesAnother) {
   EXPECT_EQ(refusal,
             "grpvss: error: --claim:0: expected the claim the certificate was made with "
             "(motion), found steps\n");
-  EXPECT_EQ(run("check-certificate " + kInputs + " --claim motion " + path("c.json")), 0);
+  EXPECT_EQ(run_certificate_cli("check-certificate " + kInputs + " --claim motion " + path("c.json")), 0);
   nlohmann::json old = document_;
   old.erase("clear_claim");
   std::ofstream(path("old.json")) << old.dump(1) << "\n";

@@ -14,6 +14,7 @@
 
 #include "app/exit_codes.hpp"
 #include "support/cli_run.hpp"
+#include "support/data_paths.hpp"
 #include "support/json_structure_check.hpp"
 #include "support/text_files.hpp"
 
@@ -23,8 +24,8 @@ using grpvss::test::CliRun;
 using grpvss::test::run_cli;
 using nlohmann::json;
 
-const std::string kSource = GRPVSS_SOURCE_DIR;
-const std::string kCells = kSource + "/tests/data/cells/";
+using grpvss::test::kSourceDir;
+using grpvss::test::kTestCells;
 
 class ClaimMotionSelfPairCli : public ::testing::Test {
  protected:
@@ -39,8 +40,8 @@ class ClaimMotionSelfPairCli : public ::testing::Test {
 };
 
 TEST_F(ClaimMotionSelfPairCli, TheSummaryAndTheJsonNameBothLinksOfThePair) {
-  const CliRun verify = run_cli(directory_, "verify --cell " + kCells + "panda-self.yaml --path " +
-                                                kCells + "panda-grazing-fold.txt --json r.json");
+  const CliRun verify = run_cli(directory_, "verify --cell " + kTestCells + "panda-self.yaml --path " +
+                                                kTestCells + "panda-grazing-fold.txt --json r.json");
   ASSERT_EQ(verify.exit_code, grpvss::app::kExitWithinTolerance) << verify.out << verify.err;
   EXPECT_NE(verify.out.find("verdict: WITHIN_TOLERANCE\n"), std::string::npos) << verify.out;
   EXPECT_NE(verify.out.find("claim motion not met: panda_link2 / panda_hand_tcp keeps only 0.0049 "
@@ -48,7 +49,7 @@ TEST_F(ClaimMotionSelfPairCli, TheSummaryAndTheJsonNameBothLinksOfThePair) {
             std::string::npos)
       << verify.out;
   const json report = json::parse(grpvss::test::read_text_file(directory_ + "/r.json"));
-  const json schema = json::parse(grpvss::test::read_text_file(kSource + "/docs/report.schema.json"));
+  const json schema = json::parse(grpvss::test::read_text_file(kSourceDir + "/docs/report.schema.json"));
   EXPECT_EQ(grpvss::test::check_json_structure(report, schema), std::vector<std::string>{});
   const json& shortfall = report.at("tolerance_shortfall");
   EXPECT_EQ(shortfall.at("step"), 30);
@@ -57,8 +58,8 @@ TEST_F(ClaimMotionSelfPairCli, TheSummaryAndTheJsonNameBothLinksOfThePair) {
   EXPECT_TRUE(shortfall.at("obstacle").is_null());
   EXPECT_LT(shortfall.at("motion_clearance").get<double>(), 0.005);
 
-  const CliRun steps = run_cli(directory_, "verify --cell " + kCells + "panda-self.yaml --path " +
-                                               kCells + "panda-grazing-fold.txt --claim steps");
+  const CliRun steps = run_cli(directory_, "verify --cell " + kTestCells + "panda-self.yaml --path " +
+                                               kTestCells + "panda-grazing-fold.txt --claim steps");
   EXPECT_EQ(steps.exit_code, grpvss::app::kExitOk) << steps.out << steps.err;
   EXPECT_NE(steps.out.find("verdict: CLEAR\n"), std::string::npos) << steps.out;
 }

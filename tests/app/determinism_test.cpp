@@ -9,21 +9,22 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "support/data_paths.hpp"
 #include "support/text_files.hpp"
 
 namespace {
 
-const std::string kData = std::string(GRPVSS_SOURCE_DIR) + "/data/ibm7545/";
+using grpvss::test::kIbm7545Data;
 
 /// Runs `grpvss ARGUMENTS` quietly; returns the exit code (-1 when it did not exit).
-int run_cli(const std::string& arguments) {
+int run_cli_exit_code(const std::string& arguments) {
   const std::string command = std::string(GRPVSS_CLI) + " " + arguments + " >/dev/null 2>&1";
   const int status = std::system(command.c_str());
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
 std::string inputs(const std::string& path_file) {
-  return "--robot " + kData + "robot.txt --env " + kData + "environment.txt --path " + kData +
+  return "--robot " + kIbm7545Data + "robot.txt --env " + kIbm7545Data + "environment.txt --path " + kIbm7545Data +
          path_file;
 }
 
@@ -46,7 +47,7 @@ RunOutputs verify_into(const std::string& directory, const std::string& argument
   std::string command = "verify " + arguments + " --out " + directory + "/out.txt --json " +
                         directory + "/report.json";
   if (with_certificate) command += " --certificate " + directory + "/certificate.json";
-  outputs.exit_code = run_cli(command);
+  outputs.exit_code = run_cli_exit_code(command);
   outputs.thesis_output = grpvss::test::read_text_file(directory + "/out.txt");
   outputs.report = report_without_time_stamp(directory + "/report.json");
   if (with_certificate) {
@@ -86,9 +87,9 @@ TEST(Determinism, ReportsDifferOnlyInTheTimeStampField) {
   // The comparison above is only meaningful if the two reports are the whole documents minus
   // generated_at: check that the field is a UTC time stamp, the only varying key.
   const std::string directory = grpvss::test::make_temporary_directory("determinism-stamp");
-  ASSERT_EQ(run_cli("verify " + inputs("path.txt") + " --tolerance 0.5 --mode thesis --json " +
+  ASSERT_EQ(run_cli_exit_code("verify " + inputs("path.txt") + " --tolerance 0.5 --mode thesis --json " +
                     directory + "/r.json"),
-            run_cli("verify " + inputs("path.txt") + " --tolerance 0.5 --mode thesis --json " +
+            run_cli_exit_code("verify " + inputs("path.txt") + " --tolerance 0.5 --mode thesis --json " +
                     directory + "/s.json"));
   const auto r = nlohmann::json::parse(grpvss::test::read_text_file(directory + "/r.json"));
   const auto s = nlohmann::json::parse(grpvss::test::read_text_file(directory + "/s.json"));

@@ -13,11 +13,12 @@
 
 #include "app/exit_codes.hpp"
 #include "support/cli_run.hpp"
+#include "support/data_paths.hpp"
 #include "support/text_files.hpp"
 
 namespace {
 
-const std::string kData = std::string(GRPVSS_SOURCE_DIR) + "/data/ibm7545/";
+using grpvss::test::kIbm7545Data;
 
 using grpvss::test::CliRun;
 using grpvss::test::run_cli;
@@ -25,7 +26,7 @@ using grpvss::test::run_cli;
 // `verify` of `path` (a file in `directory`, or a full path) in `environment` at `tolerance`.
 std::string verify_arguments(const std::string& environment, const std::string& path,
                              const std::string& tolerance) {
-  return "verify --robot " + kData + "robot.txt --env " + kData + environment + " --path " +
+  return "verify --robot " + kIbm7545Data + "robot.txt --env " + kIbm7545Data + environment + " --path " +
          path + " --tolerance " + tolerance;
 }
 
@@ -57,7 +58,7 @@ TEST_F(ExitCodesCli, ClearCollisionWithinToleranceAndNotQualifiedExitWithTheirCo
   EXPECT_NE(clear.out.find("CLEAR"), std::string::npos) << clear.out;
 
   const CliRun collision =
-      run_cli(directory_, verify_arguments("environment.txt", kData + "path.txt", "0.5"));
+      run_cli(directory_, verify_arguments("environment.txt", kIbm7545Data + "path.txt", "0.5"));
   EXPECT_EQ(collision.exit_code, 1) << collision.out << collision.err;
   EXPECT_NE(collision.out.find("COLLISION"), std::string::npos) << collision.out;
 
@@ -71,7 +72,7 @@ TEST_F(ExitCodesCli, ClearCollisionWithinToleranceAndNotQualifiedExitWithTheirCo
   // The sample path's CP line makes the joints jump (error 7) before anything collides with
   // the lowered post: the path is not qualified.
   const CliRun error = run_cli(
-      directory_, verify_arguments("bench-environment-near-miss.txt", kData + "path.txt", "0.5"));
+      directory_, verify_arguments("bench-environment-near-miss.txt", kIbm7545Data + "path.txt", "0.5"));
   EXPECT_EQ(error.exit_code, 4) << error.out << error.err;
   EXPECT_NE(error.out.find("verdict: ERROR\n"), std::string::npos) << error.out;
   EXPECT_NE(error.out.find("error 7 (segment 3, step 21)"), std::string::npos) << error.out;

@@ -21,7 +21,7 @@ struct CommandResult {
 };
 
 /// Runs the built CLI with \p arguments (stderr discarded) and captures stdout.
-CommandResult run_cli(const std::string& arguments) {
+CommandResult run_audit_cli(const std::string& arguments) {
   const std::string command = std::string(GRPVSS_CLI) + " " + arguments + " 2>/dev/null";
   CommandResult result;
   FILE* pipe = popen(command.c_str(), "r");
@@ -38,7 +38,7 @@ const std::string kRobot = std::string(GRPVSS_SOURCE_DIR) + "/data/ibm7545/robot
 
 nlohmann::json audit_json(const std::string& tolerance) {
   const CommandResult r =
-      run_cli("expansion-audit --robot " + kRobot + " --tolerance " + tolerance + " --json");
+      run_audit_cli("expansion-audit --robot " + kRobot + " --tolerance " + tolerance + " --json");
   EXPECT_EQ(r.exit_code, 0);
   return nlohmann::json::parse(r.out);
 }
@@ -178,7 +178,7 @@ TEST(ExpansionAuditCli, ThesisVerdictsPerHullAsDocumented) {
 }
 
 TEST(ExpansionAuditCli, TextTableHasOneBlockPerHullAndFlagsTheMisses) {
-  const CommandResult r = run_cli("expansion-audit --robot " + kRobot + " --tolerance 0.5");
+  const CommandResult r = run_audit_cli("expansion-audit --robot " + kRobot + " --tolerance 0.5");
   ASSERT_EQ(r.exit_code, 0);
   auto count = [&](const std::string& needle) {
     int n = 0;
@@ -199,20 +199,20 @@ TEST(ExpansionAuditCli, TextTableHasOneBlockPerHullAndFlagsTheMisses) {
 }
 
 TEST(ExpansionAuditCli, BadRobotFileIsAnInputError) {
-  EXPECT_EQ(run_cli("expansion-audit --robot /nonexistent/robot.txt --tolerance 0.5").exit_code,
+  EXPECT_EQ(run_audit_cli("expansion-audit --robot /nonexistent/robot.txt --tolerance 0.5").exit_code,
             2);
   const auto path = std::filesystem::temp_directory_path() / "grpvss_expansion_audit_bad.txt";
   {
     std::ofstream(path) << "4\n0\n0.0,25.5,oops\n";
   }
-  EXPECT_EQ(run_cli("expansion-audit --robot " + path.string() + " --tolerance 0.5").exit_code,
+  EXPECT_EQ(run_audit_cli("expansion-audit --robot " + path.string() + " --tolerance 0.5").exit_code,
             2);
   std::filesystem::remove(path);
 }
 
 TEST(ExpansionAuditCli, NonPositiveOrNonNumericToleranceIsAnInputError) {
   for (const std::string tolerance : {"0", "-0.5", "abc", "0.5x", "nan", "inf"}) {
-    EXPECT_EQ(run_cli("expansion-audit --robot " + kRobot + " --tolerance " + tolerance).exit_code,
+    EXPECT_EQ(run_audit_cli("expansion-audit --robot " + kRobot + " --tolerance " + tolerance).exit_code,
               2)
         << tolerance;
   }
@@ -222,7 +222,7 @@ TEST(ExpansionAuditCli, NonPositiveOrNonNumericToleranceIsAnInputError) {
 // TCP, at the cell's tolerance (0.005 m) unless --tolerance says otherwise; hulls name their link.
 TEST(ExpansionAuditCli, ACellsRobotIsAuditedAtTheCellsToleranceWithLinkNames) {
   const std::string cell = std::string(GRPVSS_SOURCE_DIR) + "/data/sixaxis/cell.yaml";
-  const CommandResult r = run_cli("expansion-audit --cell " + cell + " --json");
+  const CommandResult r = run_audit_cli("expansion-audit --cell " + cell + " --json");
   ASSERT_EQ(r.exit_code, 0);
   const nlohmann::json audit = nlohmann::json::parse(r.out);
   EXPECT_EQ(audit.at("tolerance").get<double>(), 0.005);
@@ -238,9 +238,9 @@ TEST(ExpansionAuditCli, ACellsRobotIsAuditedAtTheCellsToleranceWithLinkNames) {
     EXPECT_TRUE(expansion(hull, "rhombicuboctahedron").at("contains_ball_sum").get<bool>());
   }
   const nlohmann::json at_one_centimetre = nlohmann::json::parse(
-      run_cli("expansion-audit --cell " + cell + " --tolerance 0.01 --json").out);
+      run_audit_cli("expansion-audit --cell " + cell + " --tolerance 0.01 --json").out);
   EXPECT_EQ(at_one_centimetre.at("tolerance").get<double>(), 0.01);
-  EXPECT_EQ(run_cli("expansion-audit --cell " + cell + " --robot " + kRobot).exit_code, 2);
+  EXPECT_EQ(run_audit_cli("expansion-audit --cell " + cell + " --robot " + kRobot).exit_code, 2);
 }
 
 }  // namespace

@@ -18,12 +18,13 @@
 
 #include "app/exit_codes.hpp"
 #include "support/cli_run.hpp"
+#include "support/data_paths.hpp"
 #include "support/text_files.hpp"
 
 namespace {
 
-const std::string kCell = std::string(GRPVSS_SOURCE_DIR) + "/tests/data/cells/ur5e-post-no-self.yaml";
-const std::string kTrajectories = std::string(GRPVSS_SOURCE_DIR) + "/tests/data/trajectories/";
+using grpvss::test::kUr5ePostNoSelfCell;
+using grpvss::test::kTestTrajectories;
 
 using grpvss::test::CliRun;
 using grpvss::test::run_cli;
@@ -38,7 +39,7 @@ class JointTrajectoryCli : public ::testing::Test {
   void TearDown() override { std::filesystem::remove_all(directory_); }
   std::string dir() const { return directory_.string(); }
   static std::string inputs(const std::string& trajectory) {
-    return "--cell " + kCell + " --trajectory " + kTrajectories + trajectory;
+    return "--cell " + kUr5ePostNoSelfCell + " --trajectory " + kTestTrajectories + trajectory;
   }
   std::filesystem::path directory_;
 };
@@ -135,8 +136,8 @@ TEST_F(JointTrajectoryCli, ACubicOvershootBetweenClearWaypointsHitsThePostTheLin
 
 std::string certificate_of(const std::string& directory, const std::string& trajectory,
                            const std::string& name, int exit_code = grpvss::app::kExitOk) {
-  const CliRun verify = run_cli(directory, "verify --cell " + kCell + " --trajectory " +
-                                               kTrajectories + trajectory + " --certificate " +
+  const CliRun verify = run_cli(directory, "verify --cell " + kUr5ePostNoSelfCell + " --trajectory " +
+                                               kTestTrajectories + trajectory + " --certificate " +
                                                name + " --quiet");
   EXPECT_EQ(verify.exit_code, exit_code) << verify.err;
   return directory + "/" + name;
@@ -151,7 +152,7 @@ TEST_F(JointTrajectoryCli, ACertificateCheckedWithAnotherTrajectoryOrTamperedIsR
   EXPECT_TRUE(contains(other.out, "  - the trajectory file differs from the one certified\n"))
       << other.out;
   // A certificate of a trajectory checked as a path program is rejected too.
-  const CliRun as_path = run_cli(dir(), "check-certificate --cell " + kCell + " --path " +
+  const CliRun as_path = run_cli(dir(), "check-certificate --cell " + kUr5ePostNoSelfCell + " --path " +
                                             GRPVSS_SOURCE_DIR "/tests/data/cells/ur5e-clear.txt c.json");
   EXPECT_EQ(as_path.exit_code, grpvss::app::kExitFinding) << as_path.out << as_path.err;
   EXPECT_TRUE(contains(as_path.out, "the certificate was made for a joint trajectory "
@@ -193,14 +194,14 @@ TEST_F(JointTrajectoryCli, ALinearCertificatePassedOffAsTheCubicOvershootIsRejec
 TEST_F(JointTrajectoryCli, JointNameMismatchesAndLimitViolationsAreRefusedWithTheirExactText) {
   const CliRun names = run_cli(dir(), "verify " + inputs("ur5e-names-mismatch.csv"));
   EXPECT_EQ(names.exit_code, grpvss::app::kExitInputError);
-  EXPECT_EQ(names.err, "grpvss: error: " + kTrajectories +
+  EXPECT_EQ(names.err, "grpvss: error: " + kTestTrajectories +
                            "ur5e-names-mismatch.csv:1: expected the robot's joints, each once: "
                            "shoulder_pan_joint, shoulder_lift_joint, elbow_joint, wrist_1_joint, "
                            "wrist_2_joint, wrist_3_joint, found missing wrist_3_joint; extra "
                            "gripper_joint\n");
   const CliRun limit = run_cli(dir(), "verify " + inputs("ur5e-elbow-limit.csv"));
   EXPECT_EQ(limit.exit_code, grpvss::app::kExitInputError);
-  EXPECT_EQ(limit.err, "grpvss: error: " + kTrajectories +
+  EXPECT_EQ(limit.err, "grpvss: error: " + kTestTrajectories +
                            "ur5e-elbow-limit.csv:3: expected joint positions and speeds within the "
                            "robot's limits along the interpolated motion, found joint 'elbow_joint' (3) "
                            "is above its upper position limit 3.141592653589793 at t = 3 s: 3.3 "
@@ -243,14 +244,14 @@ TEST_F(JointTrajectoryCli, SpeedsBeyondTheUrdfVelocityLimitAreRefusedNamingJoint
   // Cubic, at rest at both waypoints: the pan's speed peaks mid-piece at 1.5 * 1.1 / 0.5 = 3.3.
   const CliRun cubic = run_cli(dir(), "verify " + inputs("ur5e-pan-too-fast.csv"));
   EXPECT_EQ(cubic.exit_code, grpvss::app::kExitInputError);
-  EXPECT_EQ(cubic.err, "grpvss: error: " + kTrajectories + "ur5e-pan-too-fast.csv:2: expected joint positions and speeds within the robot's "
+  EXPECT_EQ(cubic.err, "grpvss: error: " + kTestTrajectories + "ur5e-pan-too-fast.csv:2: expected joint positions and speeds within the robot's "
                         "limits along the interpolated motion, found joint 'shoulder_pan_joint' "
                         "(1) is faster than its speed limit 3.141592653589793 at t = 0.25 s: "
                         "3.3000000000000003 (piece 1, between line 2 and line 3)\n");
   // Linear: the second piece's slope (0.6 - 0.2) / 0.1 = 4 rad/s.
   const CliRun linear = run_cli(dir(), "trajectory " + inputs("ur5e-pan-too-fast-linear.csv"));
   EXPECT_EQ(linear.exit_code, grpvss::app::kExitInputError);
-  EXPECT_EQ(linear.err, "grpvss: error: " + kTrajectories + "ur5e-pan-too-fast-linear.csv:3: expected joint positions and speeds within the "
+  EXPECT_EQ(linear.err, "grpvss: error: " + kTestTrajectories + "ur5e-pan-too-fast-linear.csv:3: expected joint positions and speeds within the "
                          "robot's limits along the interpolated motion, found joint "
                          "'shoulder_pan_joint' (1) is faster than its speed limit "
                          "3.141592653589793 at t = 1 s: 3.999999999999996 (piece 2, between "
@@ -269,13 +270,13 @@ TEST_F(JointTrajectoryCli, OptionsThatContradictTheTrajectoryAreRefused) {
   const CliRun thesis = run_cli(dir(), "verify " + inputs("ur5e-clear.json") + " --mode thesis");
   EXPECT_EQ(thesis.exit_code, grpvss::app::kExitInputError);
   EXPECT_TRUE(contains(thesis.err, "expected no --mode thesis with --trajectory")) << thesis.err;
-  const CliRun neither = run_cli(dir(), "verify --cell " + kCell);
+  const CliRun neither = run_cli(dir(), "verify --cell " + kUr5ePostNoSelfCell);
   EXPECT_EQ(neither.exit_code, grpvss::app::kExitInputError);
   EXPECT_EQ(neither.err, "grpvss: error: --path:0: expected exactly one of --path, "
                          "--trajectory and --program, found none\n");
   const CliRun thesis_robot = run_cli(
       dir(), "verify --robot " GRPVSS_SOURCE_DIR "/data/ibm7545/robot.txt --env " GRPVSS_SOURCE_DIR
-             "/data/ibm7545/environment.txt --tolerance 0.5 --trajectory " + kTrajectories +
+             "/data/ibm7545/environment.txt --tolerance 0.5 --trajectory " + kTestTrajectories +
                  "ur5e-clear.json");
   EXPECT_EQ(thesis_robot.exit_code, grpvss::app::kExitInputError);
   EXPECT_TRUE(contains(thesis_robot.err, "ur5e-clear.json:3: expected a robot with named joints "

@@ -12,14 +12,15 @@
 
 #include "app/exit_codes.hpp"
 #include "support/cli_run.hpp"
+#include "support/data_paths.hpp"
 #include "support/text_files.hpp"
 
 namespace {
 
-const std::string kIbm = std::string(GRPVSS_SOURCE_DIR) + "/data/ibm7545/";
-const std::string kCells = std::string(GRPVSS_SOURCE_DIR) + "/tests/data/cells/";
-const std::string kSample = "--robot " + kIbm + "robot.txt --env " + kIbm +
-                            "environment.txt --path " + kIbm + "path.txt --tolerance 0.5";
+using grpvss::test::kIbm7545Data;
+using grpvss::test::kTestCells;
+const std::string kSample = "--robot " + kIbm7545Data + "robot.txt --env " + kIbm7545Data +
+                            "environment.txt --path " + kIbm7545Data + "path.txt --tolerance 0.5";
 const std::string kClaim = "claim: CLEAR = robot + tolerance clear along the whole motion";
 const std::string kStepsClaim =
     "claim: CLEAR = robot clear along the whole motion and robot + tolerance clear at every step";
@@ -69,8 +70,8 @@ TEST_F(MotionLineCli, TimingTableCpSpeedAndModeChangeTheirParts) {
 }
 
 TEST_F(MotionLineCli, ACellRunStatesSynchronizedTimingTheUrIkAndItsCpSpeed) {
-  const CliRun verify = run_cli(dir(), "verify --cell " + kCells + "ur5e-post-no-self.yaml --path " +
-                                           kCells + "ur5e-clear.txt");
+  const CliRun verify = run_cli(dir(), "verify --cell " + kTestCells + "ur5e-post-no-self.yaml --path " +
+                                           kTestCells + "ur5e-clear.txt");
   ASSERT_EQ(verify.exit_code, grpvss::app::kExitOk) << verify.err;
   EXPECT_EQ(first_line(verify.out),
             "motion: path ur5e-clear.txt, synchronized PTP timing (trapezoid profiles, straight "
@@ -79,9 +80,9 @@ TEST_F(MotionLineCli, ACellRunStatesSynchronizedTimingTheUrIkAndItsCpSpeed) {
 }
 
 TEST_F(MotionLineCli, BatchReportsStateTheSameLine) {
-  std::filesystem::copy_file(kIbm + "path.txt", dir() + "/path.txt");
-  std::ofstream(dir() + "/m.jsonl") << R"({"robot": ")" << kIbm << R"(robot.txt", "env": ")"
-                                    << kIbm << R"(environment.txt", "path": "path.txt", )"
+  std::filesystem::copy_file(kIbm7545Data + "path.txt", dir() + "/path.txt");
+  std::ofstream(dir() + "/m.jsonl") << R"({"robot": ")" << kIbm7545Data << R"(robot.txt", "env": ")"
+                                    << kIbm7545Data << R"(environment.txt", "path": "path.txt", )"
                                     << R"("tolerance": 0.5, "json": "b.json"})" << "\n";
   const CliRun batch = run_cli(dir(), "batch m.jsonl --quiet");
   ASSERT_EQ(batch.exit_code, grpvss::app::kExitFinding) << batch.err;
@@ -103,9 +104,9 @@ TEST_F(MotionLineCli, ClaimStepsStatesTheClaimAtTheSteps) {
 }
 
 TEST_F(MotionLineCli, BatchKeyClaimStatesTheSameLineAsVerify) {
-  std::filesystem::copy_file(kIbm + "path.txt", dir() + "/path.txt");
-  std::ofstream(dir() + "/m.jsonl") << R"({"robot": ")" << kIbm << R"(robot.txt", "env": ")"
-                                    << kIbm << R"(environment.txt", "path": "path.txt", )"
+  std::filesystem::copy_file(kIbm7545Data + "path.txt", dir() + "/path.txt");
+  std::ofstream(dir() + "/m.jsonl") << R"({"robot": ")" << kIbm7545Data << R"(robot.txt", "env": ")"
+                                    << kIbm7545Data << R"(environment.txt", "path": "path.txt", )"
                                     << R"("tolerance": 0.5, "claim": "steps", "json": "b.json"})"
                                     << "\n";
   const CliRun batch = run_cli(dir(), "batch m.jsonl --quiet");

@@ -18,6 +18,7 @@
 #include "grpvss/kinematics/forward_kinematics.hpp"
 #include "grpvss/kinematics/kinematic_chain.hpp"
 #include "support/cli_run.hpp"
+#include "support/data_paths.hpp"
 #include "support/text_files.hpp"
 
 namespace {
@@ -25,7 +26,7 @@ namespace {
 using grpvss::test::CliRun;
 using grpvss::test::run_cli;
 
-const std::string kCells = std::string(GRPVSS_SOURCE_DIR) + "/tests/data/cells/";
+using grpvss::test::kTestCells;
 
 class PandaCell : public ::testing::Test {
  protected:
@@ -36,7 +37,7 @@ class PandaCell : public ::testing::Test {
 
 TEST_F(PandaCell, AClearPathIsClearAndItsCertificateIsAccepted) {
   const std::string inputs =
-      "--cell " + kCells + "panda-shelf.yaml --path " + kCells + "panda-clear.txt";
+      "--cell " + kTestCells + "panda-shelf.yaml --path " + kTestCells + "panda-clear.txt";
   const CliRun verify = run_cli(directory_, "verify " + inputs + " --certificate c.json");
   ASSERT_EQ(verify.exit_code, grpvss::app::kExitOk) << verify.out << verify.err;
   EXPECT_NE(verify.out.find("verdict: CLEAR\nmode: certified  tolerance: 0.005  steps: 2 "),
@@ -54,7 +55,7 @@ TEST_F(PandaCell, AClearPathIsClearAndItsCertificateIsAccepted) {
 
 TEST_F(PandaCell, APathIntoTheShelfIsACollisionOfTheHandWithTheShelf) {
   const std::string inputs =
-      "--cell " + kCells + "panda-shelf.yaml --path " + kCells + "panda-into-shelf.txt";
+      "--cell " + kTestCells + "panda-shelf.yaml --path " + kTestCells + "panda-into-shelf.txt";
   const CliRun verify = run_cli(directory_, "verify " + inputs + " --certificate c.json");
   ASSERT_EQ(verify.exit_code, grpvss::app::kExitFinding) << verify.out << verify.err;
   // Step 29 (86 before the step's axis distances, proofs/motion-bound.md#lemma-axis-distance-along-step).
@@ -87,11 +88,11 @@ double highest_point_z(const grpvss::RobotModel& robot, const Eigen::VectorXd& q
 // Turning joint 1 about the vertical keeps every height: the panel's gap to the arm's highest
 // vertex is the true clearance throughout, 3 mm.
 TEST_F(PandaCell, APanelThreeMillimetresAboveTheArmGrazesIt) {
-  const grpvss::cell::LoadedCell loaded = grpvss::cell::load_cell(kCells + "panda-shelf.yaml");
+  const grpvss::cell::LoadedCell loaded = grpvss::cell::load_cell(kTestCells + "panda-shelf.yaml");
   Eigen::VectorXd home(7);
   home << 0, -0.785, 0, -2.356, 0, 1.571, 0.785;
   const double panel_bottom = highest_point_z(loaded.robot, home) + 0.003;
-  std::string cell = grpvss::test::read_text_file(kCells + "panda-shelf.yaml");
+  std::string cell = grpvss::test::read_text_file(kTestCells + "panda-shelf.yaml");
   const std::string shared = std::string(GRPVSS_SOURCE_DIR) + "/../shared/robots/franka_panda";
   for (const std::string relative : {"../../../../shared/robots/franka_panda"}) {
     for (std::size_t at = cell.find(relative); at != std::string::npos; at = cell.find(relative)) {

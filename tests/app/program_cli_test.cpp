@@ -23,14 +23,15 @@
 
 #include "app/exit_codes.hpp"
 #include "support/cli_run.hpp"
+#include "support/data_paths.hpp"
 #include "support/text_files.hpp"
 
 namespace {
 
-const std::string kSource = GRPVSS_SOURCE_DIR;
-const std::string kCell = kSource + "/tests/data/cells/ur5e-post-no-self.yaml";
-const std::string kSixAxisCell = kSource + "/data/sixaxis/cell.yaml";
-const std::string kPrograms = kSource + "/tests/data/programs/";
+using grpvss::test::kSourceDir;
+using grpvss::test::kUr5ePostNoSelfCell;
+const std::string kSixAxisCell = kSourceDir + "/data/sixaxis/cell.yaml";
+using grpvss::test::kTestPrograms;
 
 using grpvss::test::CliRun;
 using grpvss::test::run_cli;
@@ -57,7 +58,7 @@ void expect_summary_starts_with(const CliRun& run, const std::string& lines) {
 }
 
 std::string ur5e(const std::string& program) {
-  return "--cell " + kCell + " --program " + kPrograms + program;
+  return "--cell " + kUr5ePostNoSelfCell + " --program " + kTestPrograms + program;
 }
 
 // "file:line q1 ... q6" entries of the certificate's program_targets, as numbers.
@@ -114,8 +115,8 @@ TEST_F(ProgramCli, AUrScriptMovejProgramIsClearAndItsCertificateAccepted) {
 }
 
 TEST_F(ProgramCli, AnEditedProgramIsRejectedByTheCheck) {
-  std::filesystem::copy_file(kPrograms + "ur5e-clear.script", dir() + "/p.script");
-  const std::string inputs = "--cell " + kCell + " --program p.script";
+  std::filesystem::copy_file(kTestPrograms + "ur5e-clear.script", dir() + "/p.script");
+  const std::string inputs = "--cell " + kUr5ePostNoSelfCell + " --program p.script";
   ASSERT_EQ(run_cli(dir(), "verify " + inputs + " --certificate c.json").exit_code,
             grpvss::app::kExitOk);
   std::string text = grpvss::test::read_text_file(dir() + "/p.script");
@@ -127,7 +128,7 @@ TEST_F(ProgramCli, AnEditedProgramIsRejectedByTheCheck) {
   EXPECT_TRUE(contains(check.out, "REJECTED: claim CLEAR")) << check.out;
   EXPECT_TRUE(contains(check.out, "  - the program file differs from the one certified\n")) << check.out;
   // A program's certificate checked as a path program is rejected too.
-  const CliRun as_path = run_cli(dir(), "check-certificate --cell " + kCell + " --path " + kSource +
+  const CliRun as_path = run_cli(dir(), "check-certificate --cell " + kUr5ePostNoSelfCell + " --path " + kSourceDir +
                                             "/tests/data/cells/ur5e-clear.txt c.json");
   EXPECT_EQ(as_path.exit_code, grpvss::app::kExitFinding) << as_path.out << as_path.err;
 }
@@ -142,7 +143,7 @@ TEST_F(ProgramCli, AProgramAndItsEquivalentTrajectoryGiveTheSameCollision) {
   EXPECT_TRUE(contains(program.out, "interference: forearm_link hull 0 / post, steps 16-37 "
                                     "(1.359-2.082 s), unexpanded collides at steps 23-37"))
       << program.out;
-  const CliRun trajectory = run_cli(dir(), "verify --cell " + kCell + " --trajectory " + kSource +
+  const CliRun trajectory = run_cli(dir(), "verify --cell " + kUr5ePostNoSelfCell + " --trajectory " + kSourceDir +
                                                "/tests/data/trajectories/ur5e-through-post.csv "
                                                "--json t.json");
   ASSERT_EQ(trajectory.exit_code, grpvss::app::kExitFinding) << trajectory.out;
@@ -167,7 +168,7 @@ TEST_F(ProgramCli, AProgramAndItsEquivalentTrajectoryGiveTheSameCollision) {
 }
 
 TEST_F(ProgramCli, AKrlE6posWithStatusAndTurnResolvesToTheJointsItWasComputedFrom) {
-  const CliRun verify = run_cli(dir(), "verify --cell " + kSixAxisCell + " --program " + kPrograms +
+  const CliRun verify = run_cli(dir(), "verify --cell " + kSixAxisCell + " --program " + kTestPrograms +
                                            "sixaxis_ptp.src --certificate c.json");
   ASSERT_EQ(verify.exit_code, grpvss::app::kExitOk) << verify.out << verify.err;
   expect_summary_starts_with(verify, "motion: program sixaxis_ptp.src (KUKA KRL), synchronized PTP, 3 "
@@ -182,14 +183,14 @@ TEST_F(ProgramCli, AKrlE6posWithStatusAndTurnResolvesToTheJointsItWasComputedFro
   for (std::size_t j = 0; j < 6; ++j) EXPECT_NEAR(targets[1][j], expected[j], 5e-6) << j;
   EXPECT_NEAR(targets[0][0], 20.0 * M_PI / 180.0, 1e-12);
   const CliRun check = run_cli(dir(), "check-certificate --cell " + kSixAxisCell + " --program " +
-                                          kPrograms + "sixaxis_ptp.src c.json");
+                                          kTestPrograms + "sixaxis_ptp.src c.json");
   EXPECT_EQ(check.exit_code, grpvss::app::kExitOk) << check.out << check.err;
 }
 
 TEST_F(ProgramCli, AnotherStatusNamesAConfigurationTheTargetDoesNotHave) {
-  std::filesystem::copy_file(kPrograms + "sixaxis_ptp.src", dir() + "/s.src");
-  std::filesystem::copy_file(kPrograms + "$config.dat", dir() + "/$config.dat");
-  std::string data = grpvss::test::read_text_file(kPrograms + "sixaxis_ptp.dat");
+  std::filesystem::copy_file(kTestPrograms + "sixaxis_ptp.src", dir() + "/s.src");
+  std::filesystem::copy_file(kTestPrograms + "$config.dat", dir() + "/$config.dat");
+  std::string data = grpvss::test::read_text_file(kTestPrograms + "sixaxis_ptp.dat");
   data.replace(data.find("S 6,T 18"), 8, "S 2,T 18");
   std::ofstream(dir() + "/s.dat") << data;
   const CliRun verify = run_cli(dir(), "verify --cell " + kSixAxisCell + " --program s.src");
@@ -228,7 +229,7 @@ TEST_F(ProgramCli, AMovelAndItsEquivalentCpLinePathGiveTheSameCollision) {
       run_cli(dir(), "verify " + ur5e("ur5e-movel-post.script") + " --json p.json --certificate c.json");
   ASSERT_EQ(program.exit_code, grpvss::app::kExitFinding) << program.out << program.err;
   EXPECT_TRUE(contains(program.out, "verdict: COLLISION\n")) << program.out;
-  const CliRun path = run_cli(dir(), "verify --cell " + kCell + " --path " + kSource +
+  const CliRun path = run_cli(dir(), "verify --cell " + kUr5ePostNoSelfCell + " --path " + kSourceDir +
                                          "/tests/data/cells/ur5e-movel-post.txt --cp-speed 0.25 "
                                          "--json t.json");
   ASSERT_EQ(path.exit_code, grpvss::app::kExitFinding) << path.out << path.err;
@@ -255,7 +256,7 @@ TEST_F(ProgramCli, AMovelAndItsEquivalentCpLinePathGiveTheSameCollision) {
 
 TEST_F(ProgramCli, AKrlLinAndARapidMoveLAreVerifiedAndTheirCertificatesAccepted) {
   for (const std::string program : {"sixaxis_lin.src", "sixaxis_movel.mod"}) {
-    const std::string inputs = "--cell " + kSixAxisCell + " --program " + kPrograms + program;
+    const std::string inputs = "--cell " + kSixAxisCell + " --program " + kTestPrograms + program;
     const std::string certificate_file = program + ".cert";
     const CliRun verify = run_cli(dir(), "verify " + inputs + " --certificate " + certificate_file);
     ASSERT_EQ(verify.exit_code, grpvss::app::kExitOk) << verify.out << verify.err;
@@ -275,9 +276,9 @@ TEST_F(ProgramCli, AKrlLinAndARapidMoveLAreVerifiedAndTheirCertificatesAccepted)
 }
 
 TEST_F(ProgramCli, ALinWhoseStatusTheLineDoesNotReachIsAnError) {
-  std::filesystem::copy_file(kPrograms + "sixaxis_lin.src", dir() + "/s.src");
-  std::filesystem::copy_file(kPrograms + "$config.dat", dir() + "/$config.dat");
-  std::string data = grpvss::test::read_text_file(kPrograms + "sixaxis_lin.dat");
+  std::filesystem::copy_file(kTestPrograms + "sixaxis_lin.src", dir() + "/s.src");
+  std::filesystem::copy_file(kTestPrograms + "$config.dat", dir() + "/$config.dat");
+  std::string data = grpvss::test::read_text_file(kTestPrograms + "sixaxis_lin.dat");
   data.replace(data.rfind("S 6,T 18"), 8, "S 2,T 18");  // XBACK only
   std::ofstream(dir() + "/s.dat") << data;
   const CliRun verify = run_cli(dir(), "verify --cell " + kSixAxisCell + " --program s.src");
@@ -302,16 +303,16 @@ TEST_F(ProgramCli, TurningLinesUnderAnotherToolCircularAndBlendedMotionsAreRefus
                               "it is proven; use an exact stop (UR r=0, KUKA without "
                               "C_PTP/C_DIS/C_VEL/C_ORI, ABB fine)";
   const std::vector<Refusal> refusals{
-      {kCell, "ur5e-movel.script",
+      {kUr5ePostNoSelfCell, "ur5e-movel.script",
        "ur5e-movel.script:5: expected a movel whose TCP is the cell's end effector E, or one that "
        "keeps the tool's orientation: a straight TCP line that turns is no straight line of E "
        "under another tool; set the cell's `tool` to the program's tool, found tool "
        "set_tcp(p[0, 0, 0.1, 0, 0, 0]) with its TCP at (0, 0, 100) mm in the flange, the cell's E at (0, 0, 0) mm, and the orientation "
        "turning by "},
-      {kCell, "ur5e-movec.script",
+      {kUr5ePostNoSelfCell, "ur5e-movec.script",
        "ur5e-movec.script:5: " + joint + "movec: circular moves are not modelled"},
-      {kCell, "ur5e-blend.script", "ur5e-blend.script:4: " + joint + "blend radius r = 0.05 m" + blended},
-      {kCell, "ur5e-zone.mod",
+      {kUr5ePostNoSelfCell, "ur5e-blend.script", "ur5e-blend.script:4: " + joint + "blend radius r = 0.05 m" + blended},
+      {kUr5ePostNoSelfCell, "ur5e-zone.mod",
        "ur5e-zone.mod:6: expected a joint motion (MoveJ or MoveAbsJ) ending in an exact stop: the "
        "verifier models a program as synchronized PTP motions, found zone z10" + blended},
       {kSixAxisCell, "sixaxis_cptp.src",
@@ -321,7 +322,7 @@ TEST_F(ProgramCli, TurningLinesUnderAnotherToolCircularAndBlendedMotionsAreRefus
   for (const Refusal& refusal : refusals) {
     for (const std::string command : {"verify", "trajectory"}) {
       const CliRun run = run_cli(dir(), command + " --cell " + refusal.cell + " --program " +
-                                            kPrograms + refusal.program);
+                                            kTestPrograms + refusal.program);
       EXPECT_EQ(run.exit_code, grpvss::app::kExitInputError) << refusal.program << run.out;
       EXPECT_TRUE(contains(run.err, refusal.message)) << run.err;
     }
@@ -345,12 +346,12 @@ TEST_F(ProgramCli, OptionsThatContradictTheProgramAreRefused) {
                                    "is verified as the controller runs it: synchronized PTP, "
                                    "exact stops), found --timing"))
       << timing.err;
-  const CliRun both = run_cli(dir(), "verify " + ur5e("ur5e-clear.script") + " --path " + kSource +
+  const CliRun both = run_cli(dir(), "verify " + ur5e("ur5e-clear.script") + " --path " + kSourceDir +
                                          "/tests/data/cells/ur5e-clear.txt");
   EXPECT_EQ(both.exit_code, grpvss::app::kExitInputError) << both.err;
-  const CliRun thesis = run_cli(dir(), "verify --robot " + kSource + "/data/ibm7545/robot.txt --env " +
-                                           kSource + "/data/ibm7545/environment.txt --program " +
-                                           kPrograms + "ur5e-clear.script");
+  const CliRun thesis = run_cli(dir(), "verify --robot " + kSourceDir + "/data/ibm7545/robot.txt --env " +
+                                           kSourceDir + "/data/ibm7545/environment.txt --program " +
+                                           kTestPrograms + "ur5e-clear.script");
   EXPECT_EQ(thesis.exit_code, grpvss::app::kExitInputError);
   EXPECT_TRUE(contains(thesis.err, "a URDF robot in a cell (--cell)")) << thesis.err;
 }

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "support/cli_run.hpp"
+#include "support/data_paths.hpp"
 #include "support/json_structure_check.hpp"
 #include "support/text_files.hpp"
 
@@ -19,9 +20,9 @@ using grpvss::test::CliRun;
 using grpvss::test::run_cli;
 using nlohmann::json;
 
-const std::string kSource = GRPVSS_SOURCE_DIR;
-const std::string kCells = kSource + "/tests/data/cells/";
-const std::string kIbm = kSource + "/data/ibm7545/";
+using grpvss::test::kSourceDir;
+using grpvss::test::kTestCells;
+using grpvss::test::kIbm7545Data;
 
 class ReportUnits : public ::testing::Test {
  protected:
@@ -32,7 +33,7 @@ class ReportUnits : public ::testing::Test {
     const CliRun verify = run_cli(directory_, "verify " + inputs + " --json r.json --force --quiet");
     EXPECT_NE(verify.exit_code, 2) << verify.out << verify.err;
     const json report = json::parse(grpvss::test::read_text_file(directory_ + "/r.json"));
-    const json schema = json::parse(grpvss::test::read_text_file(kSource + "/docs/report.schema.json"));
+    const json schema = json::parse(grpvss::test::read_text_file(kSourceDir + "/docs/report.schema.json"));
     EXPECT_EQ(grpvss::test::check_json_structure(report, schema), std::vector<std::string>{});
     return report.at("units").at("length").get<std::string>();
   }
@@ -40,30 +41,30 @@ class ReportUnits : public ::testing::Test {
 };
 
 TEST_F(ReportUnits, AUrdfCellInMetresSaysMetres) {
-  EXPECT_EQ(length_unit("--cell " + kCells + "ur5e-post.yaml --path " + kCells + "ur5e-clear.txt"), "m");
+  EXPECT_EQ(length_unit("--cell " + kTestCells + "ur5e-post.yaml --path " + kTestCells + "ur5e-clear.txt"), "m");
 }
 
 TEST_F(ReportUnits, AUrdfRobotInACellInMillimetresIsStillReportedInMetres) {
-  const std::string robots = kSource + "/../shared/robots/ur5e";
+  const std::string robots = kSourceDir + "/../shared/robots/ur5e";
   std::ofstream(directory_ + "/mm.yaml")
       << "units: mm\nrobot:\n  urdf: " << robots << "/ur5e.urdf\n  package_paths: [" << robots
       << "]\n  tip: tool0\n  base: {xyz: [0, 0, 800]}\n  home: [0, -1.5708, 1.5708, 0, 0, 0]\n"
       << "obstacles:\n  - {name: post, box: [100, 100, 100], pose: {xyz: [2000, 0, 0]}}\ntolerance: 5\n";
-  EXPECT_EQ(length_unit("--cell mm.yaml --path " + kCells + "ur5e-clear.txt"), "m");
+  EXPECT_EQ(length_unit("--cell mm.yaml --path " + kTestCells + "ur5e-clear.txt"), "m");
 }
 
 TEST_F(ReportUnits, AThesisRobotInACellTakesTheCellsUnit) {
   std::ofstream(directory_ + "/p.txt") << "1\n1\n10.,30.\n10.,30.\n1.,1.\n10.,30.\n";
   for (const std::string unit : {"in", "mm"}) {
     std::ofstream(directory_ + "/" + unit + ".yaml")
-        << "units: " << unit << "\nrobot:\n  thesis: " << kIbm << "robot.txt\n"
+        << "units: " << unit << "\nrobot:\n  thesis: " << kIbm7545Data << "robot.txt\n"
         << "obstacles:\n  - {name: far, box: [1, 1, 1], pose: {xyz: [900, 900, 900]}}\ntolerance: 0.5\n";
     EXPECT_EQ(length_unit("--cell " + unit + ".yaml --path p.txt"), unit);
   }
 }
 
 TEST_F(ReportUnits, ThesisFilesKeepTheirWording) {
-  EXPECT_EQ(length_unit("--robot " + kIbm + "robot.txt --env " + kIbm + "environment.txt --path " + kIbm +
+  EXPECT_EQ(length_unit("--robot " + kIbm7545Data + "robot.txt --env " + kIbm7545Data + "environment.txt --path " + kIbm7545Data +
                         "path.txt --tolerance 0.5"),
             "unit of the input files");
 }

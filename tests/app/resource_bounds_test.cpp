@@ -20,11 +20,12 @@
 
 #include <gtest/gtest.h>
 
+#include "support/data_paths.hpp"
 #include "support/text_files.hpp"
 
 namespace {
 
-const std::string kData = std::string(GRPVSS_SOURCE_DIR) + "/data/ibm7545/";
+using grpvss::test::kIbm7545Data;
 
 constexpr int kFarObstacles = 10'000;
 constexpr int kSegments = 100'000;
@@ -39,7 +40,7 @@ constexpr long kCheckPeakResidentBoundKiB = 64L * 1024;
 /// The sample environment's two obstacles plus kFarObstacles 1x1x2 boxes on a grid at
 /// x in [300, 800): far outside the IBM 7545's reach (about 60 inches).
 std::string many_obstacle_environment() {
-  const std::string sample = grpvss::test::read_text_file(kData + "environment.txt");
+  const std::string sample = grpvss::test::read_text_file(kIbm7545Data + "environment.txt");
   std::string text = "90.\n1.\n" + std::to_string(kFarObstacles + 2) + "\n";
   // Skip the sample's three header lines, keep its two 16-point hulls.
   std::size_t start = 0;
@@ -76,7 +77,7 @@ struct ChildRun {
 
 /// Runs `grpvss ARGS...` as a child with stdout to `stdout_file`; the child's own peak RSS
 /// comes from wait4's rusage.
-ChildRun run_cli(const std::vector<std::string>& arguments, const std::string& stdout_file) {
+ChildRun run_child_cli(const std::vector<std::string>& arguments, const std::string& stdout_file) {
   std::vector<char*> argv;
   std::string program = GRPVSS_CLI;
   argv.push_back(program.data());
@@ -120,7 +121,7 @@ TEST(ResourceBounds, TenThousandObstaclesAndHundredThousandStepsWithEveryOutputS
   const RemovedAtExit cleanup{directory};
   std::ofstream(directory + "/environment.txt") << many_obstacle_environment();
   std::ofstream(directory + "/path.txt") << long_path(kSegments);
-  const ChildRun run = run_cli({"verify", "--robot", kData + "robot.txt", "--env",
+  const ChildRun run = run_child_cli({"verify", "--robot", kIbm7545Data + "robot.txt", "--env",
                                 directory + "/environment.txt", "--path", directory + "/path.txt",
                                 "--tolerance", "0.5", "--out", directory + "/out.txt", "--json",
                                 directory + "/report.json", "--certificate",
@@ -150,20 +151,20 @@ TEST(ResourceBounds, CheckCertificateReadsOneSegmentAtATime) {
   const std::string directory = grpvss::test::make_temporary_directory("resource-bounds-check");
   const RemovedAtExit cleanup{directory};
   std::ofstream(directory + "/path.txt") << long_path(kCheckedSegments);
-  const std::vector<std::string> inputs = {"--robot", kData + "robot.txt", "--env",
-                                           kData + "environment.txt", "--path",
+  const std::vector<std::string> inputs = {"--robot", kIbm7545Data + "robot.txt", "--env",
+                                           kIbm7545Data + "environment.txt", "--path",
                                            directory + "/path.txt"};
   std::vector<std::string> verify = {"verify"};
   verify.insert(verify.end(), inputs.begin(), inputs.end());
   for (const char* argument : {"--tolerance", "0.5", "--quiet", "--certificate"}) verify.push_back(argument);
   verify.push_back(directory + "/certificate.json");
-  ASSERT_EQ(run_cli(verify, directory + "/verify.txt").exit_code, 0);
+  ASSERT_EQ(run_child_cli(verify, directory + "/verify.txt").exit_code, 0);
   const auto certificate_size = std::filesystem::file_size(directory + "/certificate.json");
   EXPECT_GT(certificate_size, 100'000'000u);
   std::vector<std::string> check = {"check-certificate"};
   check.insert(check.end(), inputs.begin(), inputs.end());
   check.push_back(directory + "/certificate.json");
-  const ChildRun run = run_cli(check, directory + "/check.txt");
+  const ChildRun run = run_child_cli(check, directory + "/check.txt");
   EXPECT_EQ(run.exit_code, 0) << grpvss::test::read_text_file(directory + "/check.txt");
   EXPECT_EQ(grpvss::test::read_text_file(directory + "/check.txt").rfind("ACCEPTED: claim CLEAR", 0), 0u);
   RecordProperty("check_peak_rss_kib", std::to_string(run.peak_resident_kib));

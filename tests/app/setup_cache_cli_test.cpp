@@ -12,15 +12,16 @@
 
 #include <gtest/gtest.h>
 
+#include "support/data_paths.hpp"
 #include "support/text_files.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kData = std::string(GRPVSS_SOURCE_DIR) + "/data/ibm7545/";
+using grpvss::test::kIbm7545Data;
 
-struct CliRun {
+struct CacheCliRun {
   int exit_code = -1;
   std::string err;
 };
@@ -32,16 +33,16 @@ class SetupCacheCli : public ::testing::Test {
 
   // `verify` of the thesis sample writing <tag>.json, <tag>.cert and <tag>.out; `environment`
   // is prepended (e.g. "HOME=... ").
-  CliRun verify(const std::string& tag, const std::string& options,
+  CacheCliRun verify(const std::string& tag, const std::string& options,
                 const std::string& environment = "") const {
     const std::string err = directory_ + "/" + tag + ".stderr";
     const std::string command =
-        "cd " + directory_ + " && " + environment + GRPVSS_CLI + " verify --robot " + kData +
-        "robot.txt --env " + kData + "environment.txt --path " + kData +
+        "cd " + directory_ + " && " + environment + GRPVSS_CLI + " verify --robot " + kIbm7545Data +
+        "robot.txt --env " + kIbm7545Data + "environment.txt --path " + kIbm7545Data +
         "path.txt --tolerance 0.5 --json " + tag + ".json --certificate " + tag +
         ".cert --out " + tag + ".out " + options + " > /dev/null 2> " + err;
     const int status = std::system(command.c_str());
-    CliRun run;
+    CacheCliRun run;
     run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     run.err = grpvss::test::read_text_file(err);
     return run;
@@ -73,9 +74,9 @@ class SetupCacheCli : public ::testing::Test {
 };
 
 TEST_F(SetupCacheCli, AWarmCacheGivesByteIdenticalOutputs) {
-  const CliRun uncached = verify("uncached", "--no-cache");
-  const CliRun cold = verify("cold", "--cache-dir cache");
-  const CliRun warm = verify("warm", "--cache-dir cache");
+  const CacheCliRun uncached = verify("uncached", "--no-cache");
+  const CacheCliRun cold = verify("cold", "--cache-dir cache");
+  const CacheCliRun warm = verify("warm", "--cache-dir cache");
   EXPECT_EQ(uncached.exit_code, 1);  // the sample collides
   EXPECT_EQ(cold.exit_code, 1);
   EXPECT_EQ(warm.exit_code, 1);
@@ -93,13 +94,13 @@ TEST_F(SetupCacheCli, ACorruptEntryIsRebuiltWithANote) {
   std::string text = grpvss::test::read_text_file(entry);
   text[text.size() / 2] ^= 1;
   std::ofstream(entry, std::ios::binary | std::ios::trunc) << text;
-  const CliRun rebuilt = verify("rebuilt", "--cache-dir cache");
+  const CacheCliRun rebuilt = verify("rebuilt", "--cache-dir cache");
   EXPECT_EQ(rebuilt.exit_code, 1);
   EXPECT_EQ(rebuilt.err, "set-up cache: entry " + std::string("cache/") +
                              entries(directory_ + "/cache").at(0) +
                              " is corrupt (bad checksum); rebuilt\n");
   expect_same_outputs("cold", "rebuilt");
-  const CliRun again = verify("again", "--cache-dir cache");
+  const CacheCliRun again = verify("again", "--cache-dir cache");
   EXPECT_EQ(again.err, "");  // the rebuilt entry was written back
 }
 
@@ -121,7 +122,7 @@ TEST_F(SetupCacheCli, NoCacheWritesNothingAndTheDefaultIsXdgCacheHome) {
 TEST_F(SetupCacheCli, ADirectoryThatCannotBeCreatedWarnsAndVerifiesAsUsual) {
   std::ofstream(directory_ + "/plain-file") << "x\n";
   verify("uncached", "--no-cache");
-  const CliRun run = verify("warned", "--cache-dir plain-file/cache");
+  const CacheCliRun run = verify("warned", "--cache-dir plain-file/cache");
   EXPECT_EQ(run.exit_code, 1);
   EXPECT_EQ(run.err.rfind("set-up cache: cannot use the directory plain-file/cache (", 0), 0u)
       << run.err;
@@ -133,15 +134,15 @@ TEST_F(SetupCacheCli, ProcessesSharingAnEmptyDirectoryLeaveOneWholeEntry) {
   verify("uncached", "--no-cache");
   std::string command = "cd " + directory_ + " && (";
   for (int i = 0; i < 4; ++i) {
-    command += std::string(GRPVSS_CLI) + " verify --robot " + kData + "robot.txt --env " + kData +
-               "environment.txt --path " + kData + "path.txt --tolerance 0.5 --json p" +
+    command += std::string(GRPVSS_CLI) + " verify --robot " + kIbm7545Data + "robot.txt --env " + kIbm7545Data +
+               "environment.txt --path " + kIbm7545Data + "path.txt --tolerance 0.5 --json p" +
                std::to_string(i) + ".json --cache-dir shared --quiet & ";
   }
   command += "wait)";
   ASSERT_EQ(std::system(command.c_str()), 0);
   ASSERT_EQ(entries(directory_ + "/shared").size(), 1u);  // no temporary file left
   for (int i = 0; i < 4; ++i) EXPECT_EQ(report("uncached"), report("p" + std::to_string(i)));
-  const CliRun warm = verify("warm", "--cache-dir shared");
+  const CacheCliRun warm = verify("warm", "--cache-dir shared");
   EXPECT_EQ(warm.err, "");
   expect_same_outputs("uncached", "warm");
 }

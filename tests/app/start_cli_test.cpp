@@ -15,15 +15,16 @@
 
 #include "app/exit_codes.hpp"
 #include "support/cli_run.hpp"
+#include "support/data_paths.hpp"
 #include "support/text_files.hpp"
 
 namespace {
 
-const std::string kCells = std::string(GRPVSS_SOURCE_DIR) + "/tests/data/cells/";
-const std::string kCell = kCells + "ur5e-post-no-self.yaml";
-const std::string kPath = kCells + "ur5e-clear.txt";  // one PTP to (-30,-90,90,0,0,0) deg
-const std::string kTrajectories = std::string(GRPVSS_SOURCE_DIR) + "/tests/data/trajectories/";
-const std::string kIbm = std::string(GRPVSS_SOURCE_DIR) + "/data/ibm7545/";
+using grpvss::test::kTestCells;
+using grpvss::test::kUr5ePostNoSelfCell;
+const std::string kPath = kTestCells + "ur5e-clear.txt";  // one PTP to (-30,-90,90,0,0,0) deg
+using grpvss::test::kTestTrajectories;
+using grpvss::test::kIbm7545Data;
 // Pan turned by 0.2 rad from the cell's home (0, -1.5708, 1.5708, 0, 0, 0).
 const std::string kStart = "0.2,-1.5708,1.5708,0,0,0";
 
@@ -39,7 +40,7 @@ class StartCli : public ::testing::Test {
   }
   void TearDown() override { std::filesystem::remove_all(directory_); }
   std::string dir() const { return directory_.string(); }
-  static std::string cell_path() { return "--cell " + kCell + " --path " + kPath; }
+  static std::string cell_path() { return "--cell " + kUr5ePostNoSelfCell + " --path " + kPath; }
   nlohmann::json read_json(const std::string& name) const {
     return nlohmann::json::parse(grpvss::test::read_text_file(dir() + "/" + name));
   }
@@ -116,7 +117,7 @@ TEST_F(StartCli, AWrongCountOrAValueBeyondItsLimitIsRefusedNamingTheJoint) {
 }
 
 TEST_F(StartCli, ThesisFilesTakeTheStartInDegrees) {
-  const std::string robot = "--robot " + kIbm + "robot.txt --path " + kIbm + "path.txt";
+  const std::string robot = "--robot " + kIbm7545Data + "robot.txt --path " + kIbm7545Data + "path.txt";
   const CliRun planned = run_cli(dir(), "trajectory " + robot + " --start 10,20,1,30 --json");
   ASSERT_EQ(planned.exit_code, grpvss::app::kExitOk) << planned.err;
   const nlohmann::json document = nlohmann::json::parse(planned.out);
@@ -135,7 +136,7 @@ TEST_F(StartCli, ThesisFilesTakeTheStartInDegrees) {
 }
 
 TEST_F(StartCli, ATrajectoryStartsAtItsFirstPointAndAnotherStartIsRefused) {
-  const std::string trajectory = "--cell " + kCell + " --trajectory " + kTrajectories + "ur5e-clear.json";
+  const std::string trajectory = "--cell " + kUr5ePostNoSelfCell + " --trajectory " + kTestTrajectories + "ur5e-clear.json";
   // ur5e-clear.json starts at (lift -1.5708, pan 0, elbow 1.5708, 0, 0, 0): the robot's order.
   EXPECT_EQ(run_cli(dir(), "verify " + trajectory + " --start 0,-1.5708,1.5708,0,0,0 --quiet")
                 .exit_code,

@@ -10,11 +10,12 @@
 
 #include <gtest/gtest.h>
 
+#include "support/data_paths.hpp"
 #include "support/text_files.hpp"
 
 namespace {
 
-const std::string kData = std::string(GRPVSS_SOURCE_DIR) + "/data/ibm7545/";
+using grpvss::test::kIbm7545Data;
 
 int run(const std::string& arguments) {
   const int status =
@@ -24,8 +25,8 @@ int run(const std::string& arguments) {
 
 TEST(StreamedHtml, VerifyWritesThePageAnimateRendersFromTheWholeReport) {
   const std::string directory = grpvss::test::make_temporary_directory("streamed-html");
-  const std::string inputs = "--robot " + kData + "robot.txt --env " + kData +
-                             "environment.txt --path " + kData + "path.txt --tolerance 0.5";
+  const std::string inputs = "--robot " + kIbm7545Data + "robot.txt --env " + kIbm7545Data +
+                             "environment.txt --path " + kIbm7545Data + "path.txt --tolerance 0.5";
   ASSERT_EQ(run("verify " + inputs + " --json " + directory + "/r.json --html " + directory +
                 "/verify.html"),
             1);  // COLLISION
@@ -39,8 +40,8 @@ TEST(StreamedHtml, VerifyWritesThePageAnimateRendersFromTheWholeReport) {
 
 TEST(StreamedHtml, APageWithoutAReportFileIsTheSame) {
   const std::string directory = grpvss::test::make_temporary_directory("streamed-html");
-  const std::string inputs = "--robot " + kData + "robot.txt --env " + kData +
-                             "environment.txt --path " + kData + "path.txt --tolerance 0.5";
+  const std::string inputs = "--robot " + kIbm7545Data + "robot.txt --env " + kIbm7545Data +
+                             "environment.txt --path " + kIbm7545Data + "path.txt --tolerance 0.5";
   ASSERT_EQ(run("verify " + inputs + " --html " + directory + "/only.html"), 1);
   ASSERT_EQ(run("verify " + inputs + " --json " + directory + "/r.json"), 1);
   ASSERT_EQ(run("animate " + directory + "/r.json --html " + directory + "/animate.html"), 0);

@@ -8,18 +8,20 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "support/data_paths.hpp"
+
 namespace {
 
-const std::string kData = std::string(GRPVSS_SOURCE_DIR) + "/data/ibm7545/";
+using grpvss::test::kIbm7545Data;
 
-struct CliRun {
+struct TrajectoryRun {
   int exit_code = -1;
   std::string out;
 };
 
-CliRun run(const std::string& arguments) {
+TrajectoryRun run_trajectory(const std::string& arguments) {
   const std::string command = std::string(GRPVSS_CLI) + " trajectory " + arguments + " 2>/dev/null";
-  CliRun result;
+  TrajectoryRun result;
   FILE* pipe = popen(command.c_str(), "r");
   if (!pipe) return result;
   char buffer[4096];
@@ -31,11 +33,11 @@ CliRun run(const std::string& arguments) {
 }
 
 std::string sample_args() {
-  return "--robot " + kData + "robot.txt --path " + kData + "path-output-sample.txt";
+  return "--robot " + kIbm7545Data + "robot.txt --path " + kIbm7545Data + "path-output-sample.txt";
 }
 
 TEST(TrajectoryCli, TextOutputOfTheThesisSample) {
-  const CliRun r = run(sample_args() + " --at 1.025,2.503,3.5,4.483");
+  const TrajectoryRun r = run_trajectory(sample_args() + " --at 1.025,2.503,3.5,4.483");
   EXPECT_EQ(r.exit_code, 1);  // segment 4 is refused: a thesis error
   EXPECT_NE(r.out.find("ENDING JOINT VALUES     61.16    79.90     2.45   171.06"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("ENDING JOINT VALUES    166.68    75.16     8.45   -58.16"), std::string::npos) << r.out;
@@ -52,7 +54,7 @@ TEST(TrajectoryCli, TextOutputOfTheThesisSample) {
 }
 
 TEST(TrajectoryCli, JsonDocumentCarriesSegmentsSamplesAndErrors) {
-  const CliRun r = run(sample_args() + " --json --step 10 --timing synchronized");
+  const TrajectoryRun r = run_trajectory(sample_args() + " --json --step 10 --timing synchronized");
   ASSERT_EQ(r.exit_code, 1);
   const nlohmann::json doc = nlohmann::json::parse(r.out);
   EXPECT_EQ(doc["format"], "grpvss-trajectory");
@@ -75,7 +77,7 @@ TEST(TrajectoryCli, JsonDocumentCarriesSegmentsSamplesAndErrors) {
 }
 
 TEST(TrajectoryCli, PathWithoutErrorsExitsZero) {
-  const CliRun r = run("--robot " + kData + "robot.txt --path " + kData + "path.txt --json");
+  const TrajectoryRun r = run_trajectory("--robot " + kIbm7545Data + "robot.txt --path " + kIbm7545Data + "path.txt --json");
   EXPECT_EQ(r.exit_code, 0);
   const nlohmann::json doc = nlohmann::json::parse(r.out);
   EXPECT_EQ(doc["qualified"], true);
@@ -90,13 +92,13 @@ std::string write_temp(const std::string& name, const std::string& text) {
 
 TEST(TrajectoryCli, UnknownSegmentTypeIsAnInputError) {
   const std::string path = write_temp("grpvss_bad_ind_path.txt", "1\n7\n0.,20.,8.,0.,0.,-1.,30.\n");
-  EXPECT_EQ(run("--robot " + kData + "robot.txt --path " + path).exit_code, 2);
+  EXPECT_EQ(run_trajectory("--robot " + kIbm7545Data + "robot.txt --path " + path).exit_code, 2);
 }
 
 TEST(TrajectoryCli, ZeroLengthCpIsError4) {
   // Home puts the end effector at (25.6, 0, 10.45): a CP "to" that point does not move.
   const std::string path = write_temp("grpvss_zero_cp_path.txt", "1\n3\n25.6,0.,10.45,0.,0.,1.,0.\n");
-  const CliRun r = run("--robot " + kData + "robot.txt --path " + path);
+  const TrajectoryRun r = run_trajectory("--robot " + kIbm7545Data + "robot.txt --path " + path);
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.out.find("THE ERROR IS TYPE 4 IN SEGMENT 1\nThe movement of the end effector in the CP "
                        "operation of motion segment 1 in the input path file is zero."),
@@ -106,15 +108,15 @@ TEST(TrajectoryCli, ZeroLengthCpIsError4) {
 
 TEST(TrajectoryCli, BadProfileTableAndBadIkAreInputErrors) {
   const std::string table = write_temp("grpvss_bad_table.txt", "joints 4\n0 0 0 0 0 0 0 0 0\n");
-  EXPECT_EQ(run(sample_args() + " --profile-table " + table).exit_code, 2);
-  EXPECT_EQ(run(sample_args() + " --ik nonsense").exit_code, 2);
-  EXPECT_EQ(run(sample_args() + " --timing sometimes").exit_code, 2);
+  EXPECT_EQ(run_trajectory(sample_args() + " --profile-table " + table).exit_code, 2);
+  EXPECT_EQ(run_trajectory(sample_args() + " --ik nonsense").exit_code, 2);
+  EXPECT_EQ(run_trajectory(sample_args() + " --timing sometimes").exit_code, 2);
 }
 
 TEST(TrajectoryCli, EveryIkChoiceGivesTheSampleEndJoints) {
   for (const std::string& ik : {std::string("ibm7545"), std::string("numeric"),
                                 std::string("plugin:") + GRPVSS_IK_PLUGIN_GOOD}) {
-    const CliRun r = run(sample_args() + " --json --ik " + ik);
+    const TrajectoryRun r = run_trajectory(sample_args() + " --json --ik " + ik);
     ASSERT_EQ(r.exit_code, 1) << ik;
     const nlohmann::json doc = nlohmann::json::parse(r.out);
     ASSERT_EQ(doc["segments"].size(), 3u) << ik;
@@ -124,19 +126,19 @@ TEST(TrajectoryCli, EveryIkChoiceGivesTheSampleEndJoints) {
         EXPECT_NEAR(doc["segments"][i]["end_joints"][j].get<double>(), expected[i][j], 0.01) << ik;
     EXPECT_EQ(doc["errors"][0]["code"], 3) << ik;
   }
-  EXPECT_EQ(run(sample_args() + " --ik plugin:" + GRPVSS_IK_PLUGIN_WRONG_ABI).exit_code, 2);
+  EXPECT_EQ(run_trajectory(sample_args() + " --ik plugin:" + GRPVSS_IK_PLUGIN_WRONG_ABI).exit_code, 2);
 }
 
 TEST(TrajectoryCli, BadTimesAreInputErrors) {
-  EXPECT_EQ(run(sample_args() + " --at 1,-2").exit_code, 2);
-  EXPECT_EQ(run(sample_args() + " --step 0").exit_code, 2);
-  EXPECT_EQ(run(sample_args() + " --step 1e-9").exit_code, 2);  // more than 10^6 samples
-  EXPECT_EQ(run(sample_args() + " --cp-speed 0").exit_code, 2);
-  EXPECT_EQ(run("--path " + kData + "path.txt").exit_code, 2);  // --robot missing
+  EXPECT_EQ(run_trajectory(sample_args() + " --at 1,-2").exit_code, 2);
+  EXPECT_EQ(run_trajectory(sample_args() + " --step 0").exit_code, 2);
+  EXPECT_EQ(run_trajectory(sample_args() + " --step 1e-9").exit_code, 2);  // more than 10^6 samples
+  EXPECT_EQ(run_trajectory(sample_args() + " --cp-speed 0").exit_code, 2);
+  EXPECT_EQ(run_trajectory("--path " + kIbm7545Data + "path.txt").exit_code, 2);  // --robot missing
 }
 
 TEST(TrajectoryCli, ProfileTableChangesTheTiming) {
-  const CliRun r = run(sample_args() + " --json --profile-table " + std::string(GRPVSS_SOURCE_DIR) +
+  const TrajectoryRun r = run_trajectory(sample_args() + " --json --profile-table " + std::string(GRPVSS_SOURCE_DIR) +
                     "/data/motion/example-table.txt");
   ASSERT_EQ(r.exit_code, 1);
   const nlohmann::json doc = nlohmann::json::parse(r.out);

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "support/cli_run.hpp"
+#include "support/data_paths.hpp"
 #include "support/text_files.hpp"
 
 namespace {
@@ -17,9 +18,9 @@ namespace {
 using grpvss::test::CliRun;
 using grpvss::test::run_cli;
 
-const std::string kSource = GRPVSS_SOURCE_DIR;
-const std::string kCells = kSource + "/tests/data/cells/";
-const std::string kIbm = kSource + "/data/ibm7545/";
+using grpvss::test::kSourceDir;
+using grpvss::test::kTestCells;
+using grpvss::test::kIbm7545Data;
 
 class TrajectoryCpSpacing : public ::testing::Test {
  protected:
@@ -37,7 +38,7 @@ class TrajectoryCpSpacing : public ::testing::Test {
 };
 
 TEST_F(TrajectoryCpSpacing, AUrdfRobotWithoutACellSpacingGetsHalfAnInchInMetres) {
-  const std::string inputs = "--cell " + kCells + "ur5e-post.yaml --path " + kCells + "ur5e-clear.txt";
+  const std::string inputs = "--cell " + kTestCells + "ur5e-post.yaml --path " + kTestCells + "ur5e-clear.txt";
   EXPECT_EQ(json_spacing(inputs), 0.5 * 0.0254);
   const CliRun text = trajectory(inputs);
   ASSERT_EQ(text.exit_code, 0) << text.out << text.err;
@@ -47,22 +48,22 @@ TEST_F(TrajectoryCpSpacing, AUrdfRobotWithoutACellSpacingGetsHalfAnInchInMetres)
 
 TEST_F(TrajectoryCpSpacing, TheCellsMotionCpSpacingIsTheDefault) {
   // ur5e-fixture.yaml: motion: {cp_speed: 0.25, cp_spacing: 0.01}, units m.
-  const std::string inputs = "--cell " + kCells + "ur5e-fixture.yaml --path " + kCells + "ur5e-clear.txt";
+  const std::string inputs = "--cell " + kTestCells + "ur5e-fixture.yaml --path " + kTestCells + "ur5e-clear.txt";
   EXPECT_EQ(json_spacing(inputs), 0.01);
   // A thesis robot in a cell in inches with its own spacing.
-  std::ofstream(directory_ + "/in.yaml") << "units: in\nrobot:\n  thesis: " << kIbm
+  std::ofstream(directory_ + "/in.yaml") << "units: in\nrobot:\n  thesis: " << kIbm7545Data
                                           << "robot.txt\nmotion: {cp_spacing: 0.25}\n";
   std::ofstream(directory_ + "/p.txt") << "1\n1\n10.,30.\n10.,30.\n1.,1.\n10.,30.\n";
   EXPECT_EQ(json_spacing("--cell in.yaml --path p.txt"), 0.25);
 }
 
 TEST_F(TrajectoryCpSpacing, TheCommandLineOverridesTheDefault) {
-  const std::string inputs = "--cell " + kCells + "ur5e-fixture.yaml --path " + kCells + "ur5e-clear.txt";
+  const std::string inputs = "--cell " + kTestCells + "ur5e-fixture.yaml --path " + kTestCells + "ur5e-clear.txt";
   EXPECT_EQ(json_spacing(inputs + " --cp-spacing 0.002"), 0.002);
 }
 
 TEST_F(TrajectoryCpSpacing, AThesisRobotInACellInMillimetresGetsHalfAnInchInMillimetres) {
-  std::ofstream(directory_ + "/mm.yaml") << "units: mm\nrobot:\n  thesis: " << kIbm << "robot.txt\n";
+  std::ofstream(directory_ + "/mm.yaml") << "units: mm\nrobot:\n  thesis: " << kIbm7545Data << "robot.txt\n";
   std::ofstream(directory_ + "/p.txt") << "1\n1\n10.,30.\n10.,30.\n1.,1.\n10.,30.\n";
   EXPECT_EQ(json_spacing("--cell mm.yaml --path p.txt"), 0.5 * 25.4);
   const CliRun text = trajectory("--cell mm.yaml --path p.txt");
@@ -70,7 +71,7 @@ TEST_F(TrajectoryCpSpacing, AThesisRobotInACellInMillimetresGetsHalfAnInchInMill
 }
 
 TEST_F(TrajectoryCpSpacing, ThesisFilesKeepHalfAUnitAndTheirText) {
-  const std::string inputs = "--robot " + kIbm + "robot.txt --path " + kIbm + "path.txt";
+  const std::string inputs = "--robot " + kIbm7545Data + "robot.txt --path " + kIbm7545Data + "path.txt";
   EXPECT_EQ(json_spacing(inputs), 0.5);
   const CliRun text = trajectory(inputs);
   EXPECT_NE(text.out.find("CP SEGMENTS: NOMINAL SPEED 1.00 PER S, SAMPLE SPACING 0.50\n"), std::string::npos)

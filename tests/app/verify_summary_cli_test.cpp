@@ -9,19 +9,20 @@
 
 #include <gtest/gtest.h>
 
+#include "support/data_paths.hpp"
 #include "support/text_files.hpp"
 
 namespace {
 
-const std::string kData = std::string(GRPVSS_SOURCE_DIR) + "/data/ibm7545/";
+using grpvss::test::kIbm7545Data;
 
 // Runs `grpvss verify` on robot.txt with `environment_file` and `path`, tolerance 0.5, and
 // `extra` options; returns its exit code and its standard output (with standard error) in `text`.
 int run_verify(const std::string& environment_file, const std::string& path,
                const std::string& directory, std::string& text, const std::string& extra = "") {
   const std::string out = directory + "/stdout.txt";
-  const int status = std::system((std::string(GRPVSS_CLI) + " verify --robot " + kData +
-                                  "robot.txt --env " + kData + environment_file + " --path " +
+  const int status = std::system((std::string(GRPVSS_CLI) + " verify --robot " + kIbm7545Data +
+                                  "robot.txt --env " + kIbm7545Data + environment_file + " --path " +
                                   path + " --tolerance 0.5 " + extra + " > " + out + " 2>&1")
                                      .c_str());
   text = grpvss::test::read_text_file(out);
@@ -31,7 +32,7 @@ int run_verify(const std::string& environment_file, const std::string& path,
 TEST(VerifySummaryCli, TheSamplesEpisodesArePrintedBetweenTheFirstCollisionAndTheClearances) {
   const std::string directory = grpvss::test::make_temporary_directory("verify-summary");
   std::string text;
-  EXPECT_EQ(run_verify("environment.txt", kData + "path.txt", directory, text), 1);
+  EXPECT_EQ(run_verify("environment.txt", kIbm7545Data + "path.txt", directory, text), 1);
   std::filesystem::remove_all(directory);
   const std::string expected =
       "first collision at step 4\n"
@@ -60,7 +61,7 @@ TEST(VerifySummaryCli, AClearRunStatesTheClearanceProvenAlongTheMotion) {
                        "--claim steps --certificate " + directory + "/c.json"),
             0);
   const std::string checked = directory + "/checked.txt";
-  const std::string inputs = " --robot " + kData + "robot.txt --env " + kData +
+  const std::string inputs = " --robot " + kIbm7545Data + "robot.txt --env " + kIbm7545Data +
                              "bench-environment-near-miss.txt --path " + path + " ";
   EXPECT_EQ(std::system((std::string(GRPVSS_CLI) + " check-certificate" + inputs + directory +
                          "/c.json > " + checked + " 2>&1")

@@ -18,11 +18,12 @@
 #include "grpvss/kinematics/forward_kinematics.hpp"
 #include "grpvss/kinematics/kinematic_chain.hpp"
 #include "support/cli_run.hpp"
+#include "support/data_paths.hpp"
 #include "support/text_files.hpp"
 
 namespace {
 
-const std::string kCell = std::string(GRPVSS_SOURCE_DIR) + "/tests/data/cells/ur5e-post-no-self.yaml";
+using grpvss::test::kUr5ePostNoSelfCell;
 const double kDeg = std::acos(-1.0) / 180.0;
 
 using grpvss::test::CliRun;
@@ -36,7 +37,7 @@ class YamlPathCli : public ::testing::Test {
     std::ofstream(directory_ + "/" + name) << text;
   }
   nlohmann::json verify(const std::string& path, const std::string& name) const {
-    const CliRun run = run_cli(directory_, "verify --cell " + kCell + " --path " + path + " --json " +
+    const CliRun run = run_cli(directory_, "verify --cell " + kUr5ePostNoSelfCell + " --path " + path + " --json " +
                                                name + ".json --certificate " + name + ".cert --no-cache");
     EXPECT_EQ(run.exit_code, 0) << run.out << run.err;
     return nlohmann::json::parse(grpvss::test::read_text_file(directory_ + "/" + name + ".json"));
@@ -46,7 +47,7 @@ class YamlPathCli : public ::testing::Test {
 
 // X_WE of the cell's robot at q (rad), by the library's forward kinematics.
 Eigen::Isometry3d pose_at(const std::vector<double>& q_deg) {
-  const grpvss::cell::ModelInputs model = grpvss::cell::load_model_inputs({"", "", kCell, {}});
+  const grpvss::cell::ModelInputs model = grpvss::cell::load_model_inputs({"", "", kUr5ePostNoSelfCell, {}});
   Eigen::VectorXd q(6);
   for (int j = 0; j < 6; ++j) q[j] = q_deg[static_cast<std::size_t>(j)] * kDeg;
   return grpvss::kinematics::end_effector_pose(grpvss::kinematics::make_chain(model.robot), q);
@@ -80,7 +81,7 @@ TEST_F(YamlPathCli, APoseTargetInTheWorldOrTheBaseEndsWhereTheJointsWere) {
     EXPECT_EQ(report["segments"][0]["target_orientation"], "absolute");
     const std::vector<double> reached = end_joints(report, 0);
     for (std::size_t j = 0; j < 6; ++j) EXPECT_NEAR(reached[j], q1[j], 1e-6) << name << " joint " << j;
-    const CliRun check = run_cli(directory_, "check-certificate --cell " + kCell + " --path " +
+    const CliRun check = run_cli(directory_, "check-certificate --cell " + kUr5ePostNoSelfCell + " --path " +
                                                  name + ".yaml " + name + ".cert");
     EXPECT_EQ(check.exit_code, 0) << check.out << check.err;
     EXPECT_EQ(check.out.rfind("ACCEPTED", 0), 0u) << check.out;
@@ -88,7 +89,7 @@ TEST_F(YamlPathCli, APoseTargetInTheWorldOrTheBaseEndsWhereTheJointsWere) {
   // The certificate binds the YAML file: an edited target is rejected.
   write("world.yaml", "units: {length: m, angle: deg}\nsegments:\n  - ptp: {pose: {" +
                           xyz_quaternion(X_WE, 1.0) + "}, speed: 31}\n");
-  const CliRun edited = run_cli(directory_, "check-certificate --cell " + kCell +
+  const CliRun edited = run_cli(directory_, "check-certificate --cell " + kUr5ePostNoSelfCell +
                                                 " --path world.yaml world.cert");
   EXPECT_EQ(edited.exit_code, 1) << edited.out << edited.err;
 }

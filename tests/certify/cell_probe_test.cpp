@@ -16,6 +16,7 @@
 #include "grpvss/io/environment_file.hpp"
 #include "grpvss/kinematics/forward_kinematics.hpp"
 #include "grpvss/io/robot_file.hpp"
+#include "support/data_paths.hpp"
 #include "support/exact_witness.hpp"
 #include "support/random_configurations.hpp"
 #include "support/ur5e_self_run.hpp"
@@ -23,9 +24,7 @@
 namespace grpvss::certify {
 namespace {
 
-std::string data(const std::string& name) {
-  return std::string(GRPVSS_SOURCE_DIR) + "/data/ibm7545/" + name;
-}
+using grpvss::test::ibm7545_file;
 
 void expect_same_points(const std::vector<InterferencePoint>& expected,
                         const std::vector<InterferencePoint>& actual, int configuration) {
@@ -43,10 +42,10 @@ void expect_same_points(const std::vector<InterferencePoint>& expected,
 // sample cells (tolerance 0.5).
 template <class Visit>
 void for_random_configurations(std::uint64_t seed, Visit visit) {
-  const RobotModel robot = io::read_robot_file(data("robot.txt"));
+  const RobotModel robot = io::read_robot_file(ibm7545_file("robot.txt"));
   std::mt19937_64 rng(seed);
   for (const char* environment_file : {"environment.txt", "bench-environment.txt"}) {
-    const Environment environment = io::read_environment_file(data(environment_file));
+    const Environment environment = io::read_environment_file(ibm7545_file(environment_file));
     CellSettings options;
     options.tolerance = 0.5;
     const RobotCell cell(robot, environment, options);
@@ -349,7 +348,7 @@ TEST(CellProbe, ALooseTermIsProvenOnItsKeptNormalWhileItKeepsMostOfItsLastCloses
 // quill offset's extreme vertex in x, so the pair touches there only (in that vertex, or along
 // the vertical edge through it: the joints turn about z).
 TEST(CellProbe, APairTouchingOnlyInTheWorldFrameStillHasItsPoint) {
-  const RobotModel robot = io::read_robot_file(data("robot.txt"));
+  const RobotModel robot = io::read_robot_file(ibm7545_file("robot.txt"));
   const CellSettings options{0.5, geometry::OffsetShape::kCube};
   const std::size_t quill = 10;  // link 4 hull 0, the last of the IBM 7545's 11 hulls
   std::mt19937_64 rng(7545);

@@ -16,21 +16,20 @@
 #include "grpvss/io/path_file.hpp"
 #include "grpvss/io/robot_file.hpp"
 #include "grpvss/motion/kinematics_adapter.hpp"
+#include "support/data_paths.hpp"
 #include "support/text_files.hpp"
 
 namespace grpvss::certify {
 namespace {
 
-std::string data(const std::string& name) {
-  return std::string(GRPVSS_SOURCE_DIR) + "/data/ibm7545/" + name;
-}
+using grpvss::test::ibm7545_file;
 
 struct Sample {
-  RobotModel robot = io::read_robot_file(data("robot.txt"));
-  Environment environment = io::read_environment_file(data("environment.txt"));
-  PathProgram program = io::read_path_file(data("path.txt"), robot);
+  RobotModel robot = io::read_robot_file(ibm7545_file("robot.txt"));
+  Environment environment = io::read_environment_file(ibm7545_file("environment.txt"));
+  PathProgram program = io::read_path_file(ibm7545_file("path.txt"), robot);
   motion::KinematicsAccess kinematics =
-      motion::make_kinematics_access(robot, motion::select_ik({}, robot, data("robot.txt")));
+      motion::make_kinematics_access(robot, motion::select_ik({}, robot, ibm7545_file("robot.txt")));
 
   nlohmann::json certificate_document() const {
     SetupRequest request;

@@ -19,6 +19,7 @@
 #include "grpvss/io/path_file.hpp"
 #include "grpvss/io/robot_file.hpp"
 #include "grpvss/motion/kinematics_adapter.hpp"
+#include "support/data_paths.hpp"
 #include "support/text_files.hpp"
 
 namespace grpvss::certify {
@@ -26,16 +27,14 @@ namespace {
 
 using nlohmann::json;
 
-std::string data(const std::string& name) {
-  return std::string(GRPVSS_SOURCE_DIR) + "/data/ibm7545/" + name;
-}
+using grpvss::test::ibm7545_file;
 
 /// The certificate of the sample path (COLLISION, several segments), with an "inputs" object
 /// as verify writes it.
 json sample_certificate() {
-  const RobotModel robot = io::read_robot_file(data("robot.txt"));
-  const Environment environment = io::read_environment_file(data("environment.txt"));
-  const PathProgram program = io::read_path_file(data("path.txt"), robot);
+  const RobotModel robot = io::read_robot_file(ibm7545_file("robot.txt"));
+  const Environment environment = io::read_environment_file(ibm7545_file("environment.txt"));
+  const PathProgram program = io::read_path_file(ibm7545_file("path.txt"), robot);
   SetupRequest options;
   options.tolerance = 0.5;
   const VerificationRun run = verify(

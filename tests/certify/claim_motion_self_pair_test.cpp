@@ -23,7 +23,6 @@
 namespace grpvss::certify {
 namespace {
 
-
 using test::PandaSelfRun;
 
 // As `grpvss verify --cell panda-self.yaml --path panda-grazing-fold.txt --claim <claim>`.
@@ -31,7 +30,7 @@ PandaSelfRun run_grazing_fold(ClearClaim claim) {
   return test::run_panda_self("panda-grazing-fold.txt", claim);
 }
 
-CheckReport check(const PandaSelfRun& r, const Certificate& certificate) {
+CheckReport check_self_pair_certificate(const PandaSelfRun& r, const Certificate& certificate) {
   return test::check_panda_self(r, certificate);
 }
 
@@ -71,7 +70,7 @@ TEST(ClaimMotionSelfPair, TheHandPassingWithinTheToleranceOfTheUpperArmIsWithinT
   EXPECT_GT(closest, 0.0035);
   EXPECT_LT(closest, r.cell.tolerance);
   EXPECT_EQ(r.verified.certificate.claim, Verdict::kWithinTolerance);
-  const CheckReport report = check(r, r.verified.certificate);
+  const CheckReport report = check_self_pair_certificate(r, r.verified.certificate);
   EXPECT_TRUE(report.accepted) << first_failure(report);
   EXPECT_EQ(report.claim, Verdict::kWithinTolerance);
   // The oracle's own FK and exact LP: the last configuration touches nothing.
@@ -85,7 +84,7 @@ TEST(ClaimMotionSelfPair, WithTheClaimStepsTheGrazingFoldIsClear) {
   ASSERT_EQ(result.verdict, Verdict::kClear);
   EXPECT_FALSE(result.tolerance_shortfall.has_value());
   EXPECT_EQ(result.steps.size(), 12u);
-  const CheckReport report = check(r, r.verified.certificate);
+  const CheckReport report = check_self_pair_certificate(r, r.verified.certificate);
   EXPECT_TRUE(report.accepted) << first_failure(report);
   EXPECT_EQ(report.claim, Verdict::kClear);
 }
@@ -97,7 +96,7 @@ TEST(ClaimMotionSelfPair, TheCheckerRejectsAClearMotionCertificateWhosePairKeeps
   ASSERT_EQ(r.verified.certificate.claim, Verdict::kClear);
   Certificate relabelled = r.verified.certificate;
   relabelled.clear_claim = ClearClaim::kMotion;
-  const CheckReport report = check(r, relabelled);
+  const CheckReport report = check_self_pair_certificate(r, relabelled);
   EXPECT_FALSE(report.accepted);
   ASSERT_FALSE(report.failures.empty());
   int self_pair_failures = 0;

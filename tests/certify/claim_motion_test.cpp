@@ -27,7 +27,7 @@ double smallest_motion_clearance(const VerificationResult& result) {
   return smallest;
 }
 
-CheckReport check(const test::Ibm7545Run& cell, const Certificate& certificate) {
+CheckReport check_ibm7545_certificate(const test::Ibm7545Run& cell, const Certificate& certificate) {
   return check_certificate(cell.robot, cell.environment, cell.program, cell.kinematics,
                            certificate);
 }
@@ -43,7 +43,7 @@ TEST(ClaimMotion, TheNearMissIsClearAlongTheMotion) {
   EXPECT_FALSE(result.tolerance_shortfall.has_value());
   EXPECT_GE(smallest_motion_clearance(result), kIbm7545Tolerance);
   EXPECT_EQ(cell.run.certificate.clear_claim, ClearClaim::kMotion);
-  const CheckReport report = check(cell, cell.run.certificate);
+  const CheckReport report = check_ibm7545_certificate(cell, cell.run.certificate);
   EXPECT_TRUE(report.accepted) << (report.failures.empty() ? "" : report.failures.front());
   EXPECT_EQ(report.clear_claim, ClearClaim::kMotion);
   for (const CheckedMotionClearance& link : report.motion_clearances) {
@@ -74,7 +74,7 @@ TEST(ClaimMotion, ThePassBelowTheToleranceIsWithinTolerance) {
   EXPECT_FALSE(result.interference_episodes.front().first_collision_step.has_value());
   EXPECT_FALSE(result.tolerance_shortfall.has_value());  // the interference says it already
   EXPECT_EQ(motion.run.certificate.claim, Verdict::kWithinTolerance);
-  EXPECT_TRUE(check(motion, motion.run.certificate).accepted);
+  EXPECT_TRUE(check_ibm7545_certificate(motion, motion.run.certificate).accepted);
 }
 
 // Where the steps cannot shrink towards g >= Delta (a certified step floor of 1/4 of the
@@ -98,7 +98,7 @@ TEST(ClaimMotion, ATransitionMeetingOnlyTheNominalRuleIsAShortfall) {
   EXPECT_EQ(result.tolerance_shortfall->obstacle, 0);
   EXPECT_LT(result.tolerance_shortfall->motion_clearance, kIbm7545Tolerance);
   EXPECT_GE(result.tolerance_shortfall->step, 1);
-  EXPECT_TRUE(check(cell, cell.run.certificate).accepted);
+  EXPECT_TRUE(check_ibm7545_certificate(cell, cell.run.certificate).accepted);
 }
 
 // A CLEAR certificate made with the claim `steps` whose claim is relabelled `motion` is
@@ -107,10 +107,10 @@ TEST(ClaimMotion, TheCheckerRejectsACertificateWhoseTransitionsKeepLessThanDelta
   const test::Ibm7545Run steps = test::verify_ibm7545(
       "bench-environment-within-tolerance.txt", test::kTable3PtpPath, ClearClaim::kSteps);
   ASSERT_EQ(steps.run.certificate.claim, Verdict::kClear);
-  EXPECT_TRUE(check(steps, steps.run.certificate).accepted);
+  EXPECT_TRUE(check_ibm7545_certificate(steps, steps.run.certificate).accepted);
   Certificate relabelled = steps.run.certificate;
   relabelled.clear_claim = ClearClaim::kMotion;
-  const CheckReport report = check(steps, relabelled);
+  const CheckReport report = check_ibm7545_certificate(steps, relabelled);
   EXPECT_FALSE(report.accepted);
   ASSERT_FALSE(report.failures.empty());
   bool named = false;

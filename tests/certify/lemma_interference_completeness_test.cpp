@@ -22,14 +22,14 @@ Q3 cross(const Q3& a, const Q3& b) {
 Q dot(const Q3& a, const Q3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 bool is_zero(const Q3& a) { return a[0] == 0 && a[1] == 0 && a[2] == 0; }
 
-struct Plane {
+struct CompletenessPlane {
   Q3 n;
   Q c;  // n.x <= c on the polytope
 };
 
 struct Polytope {
   std::vector<Q3> vertices;
-  std::vector<Plane> facets;
+  std::vector<CompletenessPlane> facets;
   std::vector<std::array<Q3, 2>> edges;
 };
 
@@ -82,7 +82,7 @@ bool make_polytope(const std::vector<Q3>& pts_in, Polytope& out) {
   }
   auto facet_normals_at = [&](const std::vector<Q3>& on) {
     std::vector<Q3> normals;
-    for (const Plane& f : out.facets) {
+    for (const CompletenessPlane& f : out.facets) {
       bool all = true;
       for (const Q3& p : on) all = all && dot(f.n, p) == f.c;
       if (all) normals.push_back(f.n);
@@ -99,19 +99,19 @@ bool make_polytope(const std::vector<Q3>& pts_in, Polytope& out) {
 }
 
 bool contains(const Polytope& k, const Q3& x) {
-  for (const Plane& f : k.facets)
+  for (const CompletenessPlane& f : k.facets)
     if (dot(f.n, x) > f.c) return false;
   return true;
 }
 
 // Does segment [p, q] meet the facet plane f of polytope k at a point of k (i.e. meet the facet)?
-bool segment_meets_facet(const Q3& p, const Q3& q, const Plane& f, const Polytope& k) {
+bool segment_meets_facet(const Q3& p, const Q3& q, const CompletenessPlane& f, const Polytope& k) {
   const Q3 d = sub(q, p);
   const Q sp = dot(f.n, p) - f.c, sq = dot(f.n, q) - f.c;
   if ((sp > 0 && sq > 0) || (sp < 0 && sq < 0)) return false;
   Q lo = 0, hi = 1;
   if (sp == sq) {  // the segment lies in the plane: clip [0,1] by every facet of k
-    for (const Plane& g : k.facets) {
+    for (const CompletenessPlane& g : k.facets) {
       const Q alpha = dot(g.n, d), beta = g.c - dot(g.n, p);  // alpha t <= beta
       if (alpha == 0) {
         if (beta < 0) return false;
@@ -130,10 +130,10 @@ bool segment_meets_facet(const Q3& p, const Q3& q, const Plane& f, const Polytop
 // The thesis's test (Section 3.2.4 B): edges of each against faces of the other.
 bool edge_face_test(const Polytope& a, const Polytope& b) {
   for (const auto& e : a.edges)
-    for (const Plane& f : b.facets)
+    for (const CompletenessPlane& f : b.facets)
       if (segment_meets_facet(e[0], e[1], f, b)) return true;
   for (const auto& e : b.edges)
-    for (const Plane& f : a.facets)
+    for (const CompletenessPlane& f : a.facets)
       if (segment_meets_facet(e[0], e[1], f, a)) return true;
   return false;
 }
@@ -151,8 +151,8 @@ enum class Verdict { kSeparated, kTouching, kOverlapping };
 // proofs/interference-completeness.md#lemma-sat-three-way
 Verdict sat_three_way(const Polytope& a, const Polytope& b) {
   std::vector<Q3> axes;
-  for (const Plane& f : a.facets) axes.push_back(f.n);
-  for (const Plane& f : b.facets) axes.push_back(f.n);
+  for (const CompletenessPlane& f : a.facets) axes.push_back(f.n);
+  for (const CompletenessPlane& f : b.facets) axes.push_back(f.n);
   for (const auto& ea : a.edges)
     for (const auto& eb : b.edges) {
       const Q3 n = cross(sub(ea[1], ea[0]), sub(eb[1], eb[0]));

@@ -17,13 +17,13 @@ using lemma_ref::Q;
 using lemma_ref::Vec3;
 using Q3 = std::array<Q, 3>;
 
-struct Plane {
+struct OffsetPlane {
   Q3 n;
   Q c;  // n.x <= c
 };
 
 // proofs/offset-containment.md#lemma-ball-in-polytope: c >= Delta |n|, decided exactly.
-bool plane_contains_ball(const Plane& f, const Q& delta) {
+bool plane_contains_ball(const OffsetPlane& f, const Q& delta) {
   return f.c >= 0 && f.c * f.c >= delta * delta * lemma_ref::dot_q(f.n, f.n);
 }
 
@@ -51,7 +51,7 @@ TEST(LemmaOffsetContainment, PassingPlanesContainSampledBallPoints) {
     const Vec3 n{u(rng), u(rng), u(rng)};
     // Offsets around Delta |n|: exactly rounded, slightly above, slightly below.
     const double factor = (trial % 3 == 0) ? 1.0 : (trial % 3 == 1 ? 1.0 + 1e-9 : 1.0 - 1e-9);
-    const Plane f{lemma_ref::exact(n), Q(delta * lemma_ref::norm(n) * factor)};
+    const OffsetPlane f{lemma_ref::exact(n), Q(delta * lemma_ref::norm(n) * factor)};
     if (plane_contains_ball(f, Q(delta))) {
       ++passing;
       for (int k = 0; k < 300; ++k) {
@@ -80,7 +80,7 @@ TEST(LemmaOffsetContainment, CubeOfHalfSideDeltaPassesAndSlightlySmallerFails) {
       bool all_pass = true;
       for (int axis = 0; axis < 3; ++axis) {
         for (int sign : {-1, 1}) {
-          Plane f{{Q(0), Q(0), Q(0)}, Q(half_side)};
+          OffsetPlane f{{Q(0), Q(0), Q(0)}, Q(half_side)};
           f.n[axis] = sign;
           all_pass = all_pass && plane_contains_ball(f, Q(delta));
         }
@@ -93,7 +93,7 @@ TEST(LemmaOffsetContainment, CubeOfHalfSideDeltaPassesAndSlightlySmallerFails) {
 const std::array<Vec3, 8> kCubeCorners{{{-1, -1, -1}, {1, -1, -1}, {-1, 1, -1}, {1, 1, -1},
                                         {-1, -1, 1}, {1, -1, 1}, {-1, 1, 1}, {1, 1, 1}}};
 
-std::vector<Vec3> random_points(std::mt19937& rng, int count, const Vec3& centre, double spread) {
+std::vector<Vec3> random_offset_points(std::mt19937& rng, int count, const Vec3& centre, double spread) {
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   std::vector<Vec3> pts;
   for (int k = 0; k < count; ++k)
@@ -101,7 +101,7 @@ std::vector<Vec3> random_points(std::mt19937& rng, int count, const Vec3& centre
   return pts;
 }
 
-Vec3 random_in_hull(std::mt19937& rng, const std::vector<Vec3>& pts) {
+Vec3 random_in_offset_hull(std::mt19937& rng, const std::vector<Vec3>& pts) {
   std::uniform_real_distribution<double> u01(0.0, 1.0);
   std::vector<double> w(pts.size());
   double sum = 0.0;
@@ -117,9 +117,9 @@ TEST(LemmaOffsetContainment, ExpandedSeparationGivesDistanceAtLeastDeltaPlusMarg
   int certified = 0;
   for (int trial = 0; trial < 300; ++trial) {
     const double delta = 0.05 + 0.5 * u01(rng);
-    const auto a_pts = random_points(rng, 6, {0, 0, 0}, 1.0);
+    const auto a_pts = random_offset_points(rng, 6, {0, 0, 0}, 1.0);
     const Vec3 offset = lemma_ref::scale(random_unit(rng), 2.0 + 2.0 * u01(rng));
-    const auto o_pts = random_points(rng, 6, offset, 1.0);
+    const auto o_pts = random_offset_points(rng, 6, offset, 1.0);
     // A (+) P with P the cube of half-side delta: vertices a + delta * corner.
     std::vector<Vec3> expanded;
     for (const Vec3& a : a_pts)
@@ -141,17 +141,17 @@ TEST(LemmaOffsetContainment, ExpandedSeparationGivesDistanceAtLeastDeltaPlusMarg
       for (const Vec3& o : o_pts) sampled_min = std::min(sampled_min, lemma_ref::norm(lemma_ref::sub(a, o)));
     for (int k = 0; k < 2000; ++k)
       sampled_min = std::min(sampled_min,
-                             lemma_ref::norm(lemma_ref::sub(random_in_hull(rng, a_pts), random_in_hull(rng, o_pts))));
+                             lemma_ref::norm(lemma_ref::sub(random_in_offset_hull(rng, a_pts), random_in_offset_hull(rng, o_pts))));
     EXPECT_GE(sampled_min, delta + c - 1e-12) << "trial " << trial;
   }
   EXPECT_GT(certified, 100);
 }
 
 // All supporting planes through three non-collinear points = the facet planes (exact).
-std::vector<Plane> facet_planes(const std::vector<Vec3>& pts) {
+std::vector<OffsetPlane> facet_planes(const std::vector<Vec3>& pts) {
   std::vector<Q3> q;
   for (const Vec3& p : pts) q.push_back(lemma_ref::exact(p));
-  std::vector<Plane> planes;
+  std::vector<OffsetPlane> planes;
   auto sub = [](const Q3& a, const Q3& b) { return Q3{a[0] - b[0], a[1] - b[1], a[2] - b[2]}; };
   for (std::size_t i = 0; i < q.size(); ++i) {
     for (std::size_t j = i + 1; j < q.size(); ++j) {
@@ -196,7 +196,7 @@ TEST(LemmaOffsetContainment, RoundedSumAcceptedOnlyIfItContainsTheOffset) {
   int accepted = 0, rejected = 0;
   for (int trial = 0; trial < 12; ++trial) {
     const double delta = 0.1 + u01(rng);
-    const auto h_pts = random_points(rng, 4, {u01(rng), u01(rng), u01(rng)}, 1.0);
+    const auto h_pts = random_offset_points(rng, 4, {u01(rng), u01(rng), u01(rng)}, 1.0);
     // Even trials: cube slightly larger than delta (must be accepted); odd: slightly smaller.
     const double half_side = delta * (trial % 2 == 0 ? 1.0 + 1e-9 : 1.0 - 1e-9);
     std::vector<Vec3> rounded;  // vertices of H (+) cube, rounded to double by the additions
@@ -206,8 +206,8 @@ TEST(LemmaOffsetContainment, RoundedSumAcceptedOnlyIfItContainsTheOffset) {
     ASSERT_GE(planes.size(), 4u);
     const Q dq(delta);
     bool accept = true;
-    const Plane* failing = nullptr;
-    for (const Plane& f : planes) {
+    const OffsetPlane* failing = nullptr;
+    for (const OffsetPlane& f : planes) {
       Q max_h = lemma_ref::dot_q(f.n, lemma_ref::exact(h_pts[0]));
       for (const Vec3& h : h_pts) max_h = std::max(max_h, lemma_ref::dot_q(f.n, lemma_ref::exact(h)));
       const Q s = f.c - max_h;  // proofs/offset-containment.md#lemma-rounded-sum
@@ -223,9 +223,9 @@ TEST(LemmaOffsetContainment, RoundedSumAcceptedOnlyIfItContainsTheOffset) {
       // Points of H (+) B(0, delta) are inside every facet plane of R.
       for (int k = 0; k < 300; ++k) {
         const Vec3 b = ball_point(random_unit(rng), delta * (k % 2 == 0 ? 1.0 : u01(rng)), delta);
-        const Q3 h = lemma_ref::exact(random_in_hull(rng, h_pts));
+        const Q3 h = lemma_ref::exact(random_in_offset_hull(rng, h_pts));
         const Q3 x{h[0] + Q(b[0]), h[1] + Q(b[1]), h[2] + Q(b[2])};  // exact sum
-        for (const Plane& f : planes) EXPECT_LE(lemma_ref::dot_q(f.n, x), f.c);
+        for (const OffsetPlane& f : planes) EXPECT_LE(lemma_ref::dot_q(f.n, x), f.c);
       }
     } else {
       ++rejected;

@@ -16,7 +16,7 @@ namespace {
 using lemma_ref::Q;
 using lemma_ref::Vec3;
 
-std::vector<Vec3> random_points(std::mt19937& rng, int count, const Vec3& centre, double spread) {
+std::vector<Vec3> random_witness_points(std::mt19937& rng, int count, const Vec3& centre, double spread) {
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   std::vector<Vec3> pts;
   for (int k = 0; k < count; ++k)
@@ -24,7 +24,7 @@ std::vector<Vec3> random_points(std::mt19937& rng, int count, const Vec3& centre
   return pts;
 }
 
-Vec3 random_in_hull(std::mt19937& rng, const std::vector<Vec3>& pts) {
+Vec3 random_in_witness_hull(std::mt19937& rng, const std::vector<Vec3>& pts) {
   std::uniform_real_distribution<double> u01(0.0, 1.0);
   std::vector<double> w(pts.size());
   double sum = 0.0;
@@ -39,7 +39,7 @@ double sampled_distance(std::mt19937& rng, const std::vector<Vec3>& a, const std
   for (const Vec3& x : a)
     for (const Vec3& y : b) best = std::min(best, lemma_ref::norm(lemma_ref::sub(x, y)));
   for (int k = 0; k < 1000; ++k)
-    best = std::min(best, lemma_ref::norm(lemma_ref::sub(random_in_hull(rng, a), random_in_hull(rng, b))));
+    best = std::min(best, lemma_ref::norm(lemma_ref::sub(random_in_witness_hull(rng, a), random_in_witness_hull(rng, b))));
   return best;
 }
 
@@ -61,9 +61,9 @@ TEST(LemmaSeparationWitness, WitnessLowerBoundNeverExceedsSampledDistance) {
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   int witnesses = 0;
   for (int trial = 0; trial < 400; ++trial) {
-    const auto a = random_points(rng, 3 + trial % 6, {0, 0, 0}, 1.0);
+    const auto a = random_witness_points(rng, 3 + trial % 6, {0, 0, 0}, 1.0);
     const Vec3 centre{2.5 * u(rng), 2.5 * u(rng), 2.5 * u(rng)};
-    const auto b = random_points(rng, 3 + trial % 5, centre, 1.0);
+    const auto b = random_witness_points(rng, 3 + trial % 5, centre, 1.0);
     const Vec3 n = lemma_ref::add(centre, {0.5 * u(rng), 0.5 * u(rng), 0.5 * u(rng)});
     const double bound = witness_bound(n, a, b);
     if (bound < 0.0) continue;
@@ -119,8 +119,8 @@ TEST(LemmaSeparationWitness, SphereCullLowerBoundNeverExceedsSampledDistance) {
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   int positive = 0;
   for (int trial = 0; trial < 400; ++trial) {
-    const auto a = random_points(rng, 4 + trial % 8, {0, 0, 0}, 1.0);
-    const auto b = random_points(rng, 4 + trial % 5, {4.0 * u(rng), 4.0 * u(rng), 4.0 * u(rng)}, 1.0);
+    const auto a = random_witness_points(rng, 4 + trial % 8, {0, 0, 0}, 1.0);
+    const auto b = random_witness_points(rng, 4 + trial % 5, {4.0 * u(rng), 4.0 * u(rng), 4.0 * u(rng)}, 1.0);
     const double lambda = sphere_cull_bound(bounding_sphere_up(a), bounding_sphere_up(b));
     if (lambda > 0.0) ++positive;
     EXPECT_LE(lambda, sampled_distance(rng, a, b) + 1e-12) << "trial " << trial;

@@ -20,13 +20,12 @@
 namespace grpvss::certify {
 namespace {
 
-
 using test::PandaSelfRun;
 
 // As `grpvss verify --cell panda-self.yaml --path <path>`.
 PandaSelfRun run(const std::string& path) { return test::run_panda_self(path); }
 
-CheckReport check(const PandaSelfRun& r) { return test::check_panda_self(r, r.verified.certificate); }
+CheckReport check_panda_certificate(const PandaSelfRun& r) { return test::check_panda_self(r, r.verified.certificate); }
 
 TEST(PandaSelfCollision, FoldingTheHandIntoTheUpperArmIsACollisionNamingBothLinks) {
   const PandaSelfRun r = run("panda-fold.txt");
@@ -45,7 +44,7 @@ TEST(PandaSelfCollision, FoldingTheHandIntoTheUpperArmIsACollisionNamingBothLink
   EXPECT_EQ(link_label(r.cell.robot, first.pair.link_a), "panda_link2");
   EXPECT_EQ(first.first_step, 19);
   EXPECT_TRUE(result.interference_episodes.empty());  // the table is never touched
-  const CheckReport report = check(r);
+  const CheckReport report = check_panda_certificate(r);
   EXPECT_TRUE(report.accepted) << (report.failures.empty() ? "" : report.failures.front());
   EXPECT_EQ(report.claim, Verdict::kCollision);
   // The oracle's own FK and exact LP: the named step is a self-contact, the step before is not.
@@ -61,7 +60,7 @@ TEST(PandaSelfCollision, TheFoldStoppedShortIsClearAndItsCertificateIsAccepted) 
   const PandaSelfRun r = run("panda-near-fold.txt");
   EXPECT_EQ(r.verified.result.verdict, Verdict::kClear);
   EXPECT_TRUE(r.verified.result.self_collision_episodes.empty());
-  const CheckReport report = check(r);
+  const CheckReport report = check_panda_certificate(r);
   EXPECT_TRUE(report.accepted) << (report.failures.empty() ? "" : report.failures.front());
   EXPECT_EQ(report.claim, Verdict::kClear);
 }

@@ -33,6 +33,7 @@
 #include "grpvss/kinematics/forward_kinematics.hpp"
 #include "grpvss/motion/kinematics_adapter.hpp"
 #include "grpvss/motion/trajectory.hpp"
+#include "support/data_paths.hpp"
 #include "support/geometry_reference.hpp"
 #include "support/ur5e_self_run.hpp"
 
@@ -145,7 +146,7 @@ TEST(RelativeMotionLemma, TheExactDistanceBoundSubtractsTwicePlacementErrorRound
 
 // ---- the UR5e ------------------------------------------------------------------------------
 
-const std::string kCells = std::string(GRPVSS_SOURCE_DIR) + "/tests/data/cells/";
+using grpvss::test::kTestCells;
 
 using test::has_failure;
 using test::Ur5eSelfInputs;
@@ -156,7 +157,7 @@ Ur5eSelfInputs load(const std::string& cell_file, const std::string& path_file) 
 
 VerificationRun verify_ur5e(const Ur5eSelfInputs& run) { return test::verify_ur5e_self(run); }
 
-CheckReport check(const Ur5eSelfInputs& run, const Certificate& certificate) {
+CheckReport check_ur5e_self_certificate(const Ur5eSelfInputs& run, const Certificate& certificate) {
   return test::check_ur5e_self(run, certificate);
 }
 
@@ -165,7 +166,7 @@ int hull_count(const RobotModel& robot, int link) {
 }
 
 TEST(SelfCollision, PairsAreEveryHullPairTwoChainLinksApartAndAdjacentLinksAreListed) {
-  const cell::LoadedCell cell = cell::load_cell(kCells + "ur5e-self.yaml");
+  const cell::LoadedCell cell = cell::load_cell(kTestCells + "ur5e-self.yaml");
   const RobotModel& robot = cell.robot;
   ASSERT_EQ(robot.links.size(), 7u);
   int expected = 0;
@@ -184,8 +185,8 @@ TEST(SelfCollision, PairsAreEveryHullPairTwoChainLinksApartAndAdjacentLinksAreLi
 }
 
 TEST(SelfCollision, TheSrdfAndAllowedContactsRemoveTheirPairsAndListThem) {
-  const cell::LoadedCell with_srdf = cell::load_cell(kCells + "ur5e-self-srdf.yaml");
-  const cell::LoadedCell plain = cell::load_cell(kCells + "ur5e-self.yaml");
+  const cell::LoadedCell with_srdf = cell::load_cell(kTestCells + "ur5e-self-srdf.yaml");
+  const cell::LoadedCell plain = cell::load_cell(kTestCells + "ur5e-self.yaml");
   const RobotModel& robot = with_srdf.robot;
   // wrist_2_link / upper_arm_link (SRDF) and wrist_3_link / upper_arm_link (allowed_contacts).
   EXPECT_EQ(robot.self_collision_pairs.size(), plain.robot.self_collision_pairs.size() - 2);
@@ -203,7 +204,7 @@ TEST(SelfCollision, TheSrdfAndAllowedContactsRemoveTheirPairsAndListThem) {
   };
   EXPECT_TRUE(listed("upper_arm_link", "wrist_2_link", "SRDF (Never)"));
   EXPECT_TRUE(listed("upper_arm_link", "wrist_3_link", "allowed_contacts"));
-  const cell::LoadedCell off = cell::load_cell(kCells + "ur5e-self-off.yaml");
+  const cell::LoadedCell off = cell::load_cell(kTestCells + "ur5e-self-off.yaml");
   EXPECT_TRUE(off.robot.self_collision_pairs.empty());
   EXPECT_TRUE(off.robot.unverified_link_pairs.empty());
 }
@@ -219,7 +220,7 @@ TEST(SelfCollision, FoldingTheWristIntoTheUpperArmIsACollisionNamingBothLinks) {
   EXPECT_EQ(first.first_step, *verified.result.collision_step);
   EXPECT_TRUE(verified.result.interference_episodes.empty());  // the table is never touched
   // The checker re-decides the contact exactly and accepts the COLLISION claim.
-  const CheckReport report = check(run, verified.certificate);
+  const CheckReport report = check_ur5e_self_certificate(run, verified.certificate);
   EXPECT_TRUE(report.accepted) << (report.failures.empty() ? "" : report.failures.front());
 }
 
@@ -235,18 +236,18 @@ TEST(SelfCollision, AClearPathIsCertifiedAgainstItselfAndTheCheckerAcceptsIt) {
       for (const SelfPairRecord& pair : step.self_pairs) EXPECT_TRUE(pair.separated);
     }
   }
-  const CheckReport report = check(run, certificate);
+  const CheckReport report = check_ur5e_self_certificate(run, certificate);
   EXPECT_TRUE(report.accepted) << (report.failures.empty() ? "" : report.failures.front());
 }
 
 TEST(SelfCollision, ACertificateWithAnotherPairListOrAFalseSlabIsRejected) {
   const Ur5eSelfInputs run = load("ur5e-self.yaml", "ur5e-clear.txt");
   const Certificate certificate = verify_ur5e(run).certificate;
-  ASSERT_TRUE(check(run, certificate).accepted);
+  ASSERT_TRUE(check_ur5e_self_certificate(run, certificate).accepted);
 
   Certificate fewer_pairs = certificate;
   fewer_pairs.self_collision_pairs.pop_back();
-  const CheckReport fewer = check(run, fewer_pairs);
+  const CheckReport fewer = check_ur5e_self_certificate(run, fewer_pairs);
   EXPECT_FALSE(fewer.accepted);
   EXPECT_TRUE(has_failure(fewer, "the certificate's self-collision pairs differ from the inputs'"));
 
@@ -254,14 +255,14 @@ TEST(SelfCollision, ACertificateWithAnotherPairListOrAFalseSlabIsRejected) {
   Certificate inflated = certificate;
   SelfPairRecord& slab = inflated.segments.front().steps.front().self_pairs.front();
   slab.lower_bound = 2.0 * slab.lower_bound + 0.01;
-  const CheckReport false_slab = check(run, inflated);
+  const CheckReport false_slab = check_ur5e_self_certificate(run, inflated);
   EXPECT_FALSE(false_slab.accepted);
   EXPECT_TRUE(has_failure(false_slab, "the separation witness does not hold"));
 
   // Without its self-pair records a step proves no self-collision distance at all.
   Certificate stripped = certificate;
   stripped.segments.front().steps.back().self_pairs.clear();
-  const CheckReport missing = check(run, stripped);
+  const CheckReport missing = check_ur5e_self_certificate(run, stripped);
   EXPECT_FALSE(missing.accepted);
   EXPECT_TRUE(has_failure(missing, "expected a self-pair record for each of the"));
 }
@@ -271,7 +272,7 @@ TEST(SelfCollision, DisablingTheCollidingPairInTheSrdfMakesTheFoldClear) {
   const VerificationRun verified = verify_ur5e(run);
   EXPECT_EQ(verified.result.verdict, Verdict::kClear);
   EXPECT_TRUE(verified.result.self_collision_episodes.empty());
-  EXPECT_TRUE(check(run, verified.certificate).accepted);
+  EXPECT_TRUE(check_ur5e_self_certificate(run, verified.certificate).accepted);
 }
 
 // The placed raw hulls of a configuration, by RobotCell hull index.
@@ -560,7 +561,7 @@ TEST(SelfCollision, AnExactReferenceAgreesOnRandomUr5ePaths) {
         EXPECT_FALSE(reference_self_contact(cell, *q)) << "trial " << trial << " sample " << k;
       }
     }
-    EXPECT_TRUE(check(run, verified.certificate).accepted) << "trial " << trial;
+    EXPECT_TRUE(check_ur5e_self_certificate(run, verified.certificate).accepted) << "trial " << trial;
   }
   std::filesystem::remove_all(directory);
   RecordProperty("self_collisions", collisions);

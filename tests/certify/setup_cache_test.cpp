@@ -17,6 +17,7 @@
 #include "grpvss/io/environment_file.hpp"
 #include "grpvss/io/robot_file.hpp"
 #include "grpvss/report/input_digests.hpp"
+#include "support/data_paths.hpp"
 #include "support/text_files.hpp"
 
 namespace {
@@ -27,7 +28,7 @@ using grpvss::certify::SetupCache;
 using grpvss::certify::SetupCacheOptions;
 using Offsets = std::vector<std::vector<Eigen::Vector3d>>;
 
-const std::string kData = std::string(GRPVSS_SOURCE_DIR) + "/data/ibm7545/";
+using grpvss::test::kIbm7545Data;
 
 grpvss::certify::CellSettings thesis_settings() {
   grpvss::certify::CellSettings settings;
@@ -72,8 +73,8 @@ class SetupCacheTest : public ::testing::Test {
  protected:
   void SetUp() override {
     directory_ = grpvss::test::make_temporary_directory("setup-cache");
-    robot_ = grpvss::io::read_robot_file(kData + "robot.txt");
-    environment_ = grpvss::io::read_environment_file(kData + "environment.txt");
+    robot_ = grpvss::io::read_robot_file(kIbm7545Data + "robot.txt");
+    environment_ = grpvss::io::read_environment_file(kIbm7545Data + "environment.txt");
     reference_.emplace(robot_, environment_, thesis_settings());
   }
   void TearDown() override { std::filesystem::remove_all(directory_); }

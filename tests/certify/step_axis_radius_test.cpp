@@ -18,12 +18,13 @@
 #include "grpvss/checker/certificate_checker.hpp"
 #include "grpvss/evidence/certificate.hpp"
 #include "grpvss/kinematics/forward_kinematics.hpp"
+#include "support/data_paths.hpp"
 #include "support/panda_self_run.hpp"
 
 namespace grpvss::certify {
 namespace {
 
-const std::string kSource = GRPVSS_SOURCE_DIR;
+using grpvss::test::kSourceDir;
 
 ProbeResult frames_at(const RobotCell& cell, const Eigen::VectorXd& q) {
   kinematics::Workspace workspace(cell.robot());
@@ -140,8 +141,8 @@ RandomSteps random_steps(const std::string& cell_file, int steps, double largest
 }
 
 TEST(LemmaAxisDistanceAlongStep, SampledAxisDistancesStayWithinTheStepRadius) {
-  for (const std::string& file : {kSource + "/tests/data/cells/ur5e-post.yaml",
-                                  kSource + "/data/sixaxis/cell.yaml"}) {
+  for (const std::string& file : {kSourceDir + "/tests/data/cells/ur5e-post.yaml",
+                                  kSourceDir + "/data/sixaxis/cell.yaml"}) {
     const RandomSteps steps = random_steps(file, 30, 0.3, 11);
     std::printf("%s: worst sampled axis distance / rho %.4f, path length / M'_h %.4f, "
                 "sum M'_h / sum M_h %.3f\n",
@@ -157,7 +158,7 @@ TEST(LemmaAxisDistanceAlongStep, SampledAxisDistancesStayWithinTheStepRadius) {
 TEST(LemmaAxisDistanceAlongStep, TheStepRadiusIsTighterThanTheConfigurationIndependentOne) {
   // The UR5e folded at home (elbow up, wrist over the base): joint 1 turns 0.1 rad. R_1h is
   // the reach of the stretched arm; the wrist hulls stay within ~0.2 m of joint 1's axis.
-  const cell::LoadedCell loaded = cell::load_cell(kSource + "/tests/data/cells/ur5e-post.yaml");
+  const cell::LoadedCell loaded = cell::load_cell(kSourceDir + "/tests/data/cells/ur5e-post.yaml");
   CellSettings settings;
   settings.tolerance = loaded.tolerance;
   const RobotCell cell(loaded.robot, loaded.environment, settings);

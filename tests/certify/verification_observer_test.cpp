@@ -15,13 +15,13 @@
 #include "grpvss/io/path_file.hpp"
 #include "grpvss/io/robot_file.hpp"
 #include "grpvss/motion/kinematics_adapter.hpp"
+#include "support/data_paths.hpp"
+
 
 namespace grpvss::certify {
 namespace {
 
-std::string data(const std::string& name) {
-  return std::string(GRPVSS_SOURCE_DIR) + "/data/ibm7545/" + name;
-}
+using grpvss::test::ibm7545_file;
 
 /// Records everything it is told, as the certificate's JSON for the certificate steps.
 class Recorder : public VerificationObserver {
@@ -49,13 +49,13 @@ class Recorder : public VerificationObserver {
 class Observed : public ::testing::Test {
  protected:
   void SetUp() override {
-    robot_ = io::read_robot_file(data("robot.txt"));
-    environment_ = io::read_environment_file(data("environment.txt"));
+    robot_ = io::read_robot_file(ibm7545_file("robot.txt"));
+    environment_ = io::read_environment_file(ibm7545_file("environment.txt"));
     kinematics_ = motion::make_kinematics_access(
         robot_, motion::select_ik({}, robot_, "robot.txt"));
   }
   VerificationRun run(const std::string& path_file, Recorder* recorder, bool keep_steps) {
-    const PathProgram program = io::read_path_file(data(path_file), robot_);
+    const PathProgram program = io::read_path_file(ibm7545_file(path_file), robot_);
     SetupRequest options;
     options.tolerance = 0.5;
     RunHooks hooks;

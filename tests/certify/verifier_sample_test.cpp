@@ -10,18 +10,20 @@
 #include "grpvss/io/path_file.hpp"
 #include "grpvss/io/robot_file.hpp"
 #include "grpvss/motion/kinematics_adapter.hpp"
+#include "support/data_paths.hpp"
+
 
 namespace grpvss::certify {
 namespace {
 
-std::string data(const std::string& name) { return std::string(GRPVSS_SOURCE_DIR) + "/data/ibm7545/" + name; }
+using grpvss::test::ibm7545_file;
 
 class Ibm7545Sample : public ::testing::Test {
  protected:
   void load(const std::string& path_file) {
-    robot_ = io::read_robot_file(data("robot.txt"));
-    environment_ = io::read_environment_file(data("environment.txt"));
-    program_ = io::read_path_file(data(path_file), robot_);
+    robot_ = io::read_robot_file(ibm7545_file("robot.txt"));
+    environment_ = io::read_environment_file(ibm7545_file("environment.txt"));
+    program_ = io::read_path_file(ibm7545_file(path_file), robot_);
     kinematics_ = motion::make_kinematics_access(robot_, motion::select_ik({}, robot_, "robot.txt"));
   }
   VerificationRun run(ResolutionMode mode, double tolerance = 0.5) {

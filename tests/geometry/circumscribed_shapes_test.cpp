@@ -12,13 +12,14 @@
 
 #include "grpvss/exact/convex_polytope.hpp"
 #include "grpvss/exact/shape_containment.hpp"
+#include "support/angles.hpp"
 #include "support/geometry_reference.hpp"
 
 namespace grpvss::geometry {
 namespace {
 
 using Q = boost::multiprecision::cpp_rational;
-constexpr double kPi = 3.14159265358979323846;
+using grpvss::test::kPi;
 
 /// Exact (cpp_rational) max over vertices of x^2 + y^2 (with_z: + z^2).
 Q max_square_radius(const std::vector<Eigen::Vector3d>& vertices, bool with_z) {

@@ -1,15 +1,17 @@
 // The audit library: Steiner ball-sum volume against closed forms, and the audit's rows.
 #include "grpvss/exact/expansion_audit.hpp"
+#include "support/angles.hpp"
 
 #include <cmath>
 #include <stdexcept>
 
 #include <gtest/gtest.h>
 
+
 namespace grpvss::geometry {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using grpvss::test::kPi;
 
 std::vector<Eigen::Vector3d> box_corners(double a, double b, double c) {
   std::vector<Eigen::Vector3d> points;

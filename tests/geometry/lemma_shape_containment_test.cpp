@@ -13,12 +13,13 @@
 #include "grpvss/exact/convex_polytope.hpp"
 #include "grpvss/exact/exact_cover_check.hpp"
 #include "grpvss/exact/shape_containment.hpp"
+#include "support/angles.hpp"
 #include "support/geometry_reference.hpp"
 
 namespace grpvss::geometry {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using grpvss::test::kPi;
 
 testing::Points random_points(std::mt19937_64& rng, int n, double spread) {
   std::uniform_real_distribution<double> u(-spread, spread);

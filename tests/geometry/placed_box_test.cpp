@@ -12,7 +12,7 @@
 namespace grpvss::geometry {
 namespace {
 
-Eigen::Isometry3d random_pose(std::mt19937_64& rng, double reach) {
+Eigen::Isometry3d random_box_pose(std::mt19937_64& rng, double reach) {
   std::normal_distribution<double> normal;
   std::uniform_real_distribution<double> uniform(-reach, reach);
   Eigen::Quaterniond rotation(normal(rng), normal(rng), normal(rng), normal(rng));
@@ -41,7 +41,7 @@ TEST(PlacedBox, ContainsEveryComputedPlacedPoint) {
                             corner & 2 ? box_L.hi.y() : box_L.lo.y(),
                             corner & 4 ? box_L.hi.z() : box_L.lo.z());
     }
-    const Eigen::Isometry3d X_WL = random_pose(rng, 10.0 * scale);
+    const Eigen::Isometry3d X_WL = random_box_pose(rng, 10.0 * scale);
     std::vector<Eigen::Vector3d> points_W;
     kinematics::place_points(X_WL, points_L, points_W);
     const Aabb box_W = placed_box_enclosure(box_L, X_WL);

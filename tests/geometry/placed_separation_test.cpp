@@ -42,7 +42,7 @@ LinkTemplate random_link(std::mt19937_64& rng, int points) {
   return {hull.vertices(), vertex_skeleton(hull)};
 }
 
-Eigen::Isometry3d random_pose(std::mt19937_64& rng, double reach) {
+Eigen::Isometry3d random_separation_pose(std::mt19937_64& rng, double reach) {
   std::uniform_real_distribution<double> coordinate(-reach, reach);
   Eigen::Isometry3d X = Eigen::Isometry3d::Identity();
   X.linear() = test::random_rotation(rng);
@@ -72,8 +72,8 @@ RandomPair random_pair(std::mt19937_64& rng, double reach) {
   RandomPair pair;
   pair.link_a = random_link(rng, size(rng));
   pair.link_b = random_link(rng, size(rng));
-  pair.X_a = random_pose(rng, reach);
-  pair.X_b = random_pose(rng, reach);
+  pair.X_a = random_separation_pose(rng, reach);
+  pair.X_b = random_separation_pose(rng, reach);
   return pair;
 }
 
@@ -164,7 +164,7 @@ TEST(PlacedSeparation, AFaceSeenHeadOnIsSettledAsATiedPlateau) {
 TEST(PlacedSeparation, RefusesNormalsThatDoNotSeparate) {
   std::mt19937_64 rng(4341);
   const LinkTemplate link = random_link(rng, 100);
-  const Eigen::Isometry3d X_a = random_pose(rng, 0.5);
+  const Eigen::Isometry3d X_a = random_separation_pose(rng, 0.5);
   Eigen::Isometry3d X_b = X_a;
   X_b.translation() += Vector3d(0.01, 0, 0);  // overlapping copies
   int a_start = 0;

@@ -10,13 +10,14 @@
 
 #include "grpvss/common/input_error.hpp"
 #include "grpvss/io/length_unit.hpp"
+#include "support/data_paths.hpp"
 #include "support/input_error_expectations.hpp"
 
 namespace grpvss::io {
 namespace {
 
-const std::string kSource = GRPVSS_SOURCE_DIR;
-const std::string kCells = kSource + "/tests/data/cells";
+using grpvss::test::kSourceDir;
+const std::string kCells = kSourceDir + "/tests/data/cells";
 
 std::string normal(const std::string& path) {
   return std::filesystem::path(path).lexically_normal().string();
@@ -27,11 +28,11 @@ std::string cell_with(const std::string& rest, const std::string& units = "m") {
   return "units: " + units + "\nrobot: {thesis: robot.txt}\n" + rest;
 }
 
-CellReadResult parse(const std::string& text) { return parse_cell(text, "cell.yaml", false); }
+CellReadResult parse_cell_yaml(const std::string& text) { return parse_cell(text, "cell.yaml", false); }
 
-void expect_error(const std::string& text, int line, const std::string& message) {
+void expect_cell_error(const std::string& text, int line, const std::string& message) {
   SCOPED_TRACE(text);
-  testing::expect_input_error([&] { parse(text); }, "cell.yaml", line, "cell.yaml:" + std::to_string(line) + ": " + message);
+  testing::expect_input_error([&] { parse_cell_yaml(text); }, "cell.yaml", line, "cell.yaml:" + std::to_string(line) + ": " + message);
 }
 
 TEST(CellFile, ThesisCellWithBoxesIsReadToTheLastField) {
@@ -47,7 +48,7 @@ TEST(CellFile, ThesisCellWithBoxesIsReadToTheLastField) {
   const CellRobot& robot = cell.robot;
   EXPECT_EQ(robot.line, 4);
   EXPECT_EQ(robot.source, CellRobot::Source::kThesis);
-  EXPECT_EQ(robot.file, normal(kSource + "/data/ibm7545/robot.txt"));
+  EXPECT_EQ(robot.file, normal(kSourceDir + "/data/ibm7545/robot.txt"));
   EXPECT_TRUE(robot.package_paths.empty());
   EXPECT_EQ(robot.srdf, "");
   EXPECT_EQ(robot.tip, "");
@@ -95,7 +96,7 @@ TEST(CellFile, ThesisCellWithBoxesIsReadToTheLastField) {
   const CellObstacle& old_cell = cell.obstacles[4];
   EXPECT_EQ(old_cell.name, "thesis_cell");
   EXPECT_EQ(old_cell.shape, CellObstacle::Shape::kThesisEnvironment);
-  EXPECT_EQ(old_cell.file, normal(kSource + "/data/ibm7545/environment.txt"));
+  EXPECT_EQ(old_cell.file, normal(kSourceDir + "/data/ibm7545/environment.txt"));
   EXPECT_TRUE(old_cell.pose.is_identity());
   EXPECT_EQ(old_cell.line, 18);
 
@@ -117,7 +118,7 @@ TEST(CellFile, ThesisCellWithBoxesIsReadToTheLastField) {
 }
 
 TEST(CellFile, UrdfCellWithMeshIsReadToTheLastField) {
-  const std::string robots = kSource + "/../shared/robots/ur5e";
+  const std::string robots = kSourceDir + "/../shared/robots/ur5e";
   const CellReadResult result = read_cell_file(kCells + "/ur5e-fixture.yaml");
   const CellDescription& cell = result.cell;
   EXPECT_TRUE(result.warnings.empty());
@@ -168,7 +169,7 @@ TEST(CellFile, UrdfCellWithMeshIsReadToTheLastField) {
 }
 
 TEST(CellFile, DefaultsOfAMinimalCell) {
-  const CellDescription cell = parse("units: mm\nrobot: {urdf: r.urdf}\n").cell;
+  const CellDescription cell = parse_cell_yaml("units: mm\nrobot: {urdf: r.urdf}\n").cell;
   EXPECT_EQ(cell.units, LengthUnit::kMillimetre);
   EXPECT_EQ(cell.metres_per_unit, 0.001);
   EXPECT_FALSE(cell.metres_per_unit_is_exact);
@@ -203,7 +204,7 @@ TEST(CellFile, UnitFactorsAreTheNearestDoublesToTheExactRatios) {
 
 // scale and units of a mesh obstacle, in a cell of `cell_units`.
 CellObstacle mesh_with(const std::string& keys, const std::string& cell_units) {
-  const CellDescription cell = parse(cell_with("obstacles:\n  - {name: m, mesh: m.stl" + keys + "}\n", cell_units)).cell;
+  const CellDescription cell = parse_cell_yaml(cell_with("obstacles:\n  - {name: m, mesh: m.stl" + keys + "}\n", cell_units)).cell;
   return cell.obstacles.at(0);
 }
 
@@ -252,7 +253,7 @@ TEST(CellFile, ScaleIsExactOnlyForDecimalsThatAreDoubles) {
 }
 
 TEST(CellFile, ObstaclesOfAnImplausibleSizeWarnAboutTheUnit) {
-  const CellReadResult big = parse(cell_with(
+  const CellReadResult big = parse_cell_yaml(cell_with(
       "obstacles:\n"
       "  - {name: table, box: [2000, 800, 50], pose: {xyz: [500, 0, 775]}}\n"  // 4
       "  - {name: post, cylinder: {radius: 0.05, length: 0.6}}\n"));
@@ -263,7 +264,7 @@ TEST(CellFile, ObstaclesOfAnImplausibleSizeWarnAboutTheUnit) {
             "obstacle 'table': a size of 2000 m (2000 m) is more than a robot cell's 100 m: are the "
             "numbers in another unit than `units: m`?");
 
-  const CellReadResult small = parse(cell_with(
+  const CellReadResult small = parse_cell_yaml(cell_with(
       "obstacles:\n  - {name: table, box: [1.2, 0.8, 0.05], pose: {xyz: [0.5, 0, 0.775]}}\n", "mm"));
   ASSERT_EQ(small.warnings.size(), 1u);
   EXPECT_EQ(small.warnings[0].line, 1);  // the units line
@@ -271,7 +272,7 @@ TEST(CellFile, ObstaclesOfAnImplausibleSizeWarnAboutTheUnit) {
             "the largest length of the cell, 1.2 mm (0.0012 m), is less than a robot "
             "cell's 0.05 m: are the numbers in another unit than `units: mm`?");
 
-  const CellReadResult base = parse("units: mm\nrobot: {thesis: r.txt, base: {xyz: [0, 0, 200000]}}\n");
+  const CellReadResult base = parse_cell_yaml("units: mm\nrobot: {thesis: r.txt, base: {xyz: [0, 0, 200000]}}\n");
   ASSERT_EQ(base.warnings.size(), 1u);
   EXPECT_EQ(base.warnings[0].line, 2);
   EXPECT_EQ(base.warnings[0].text,
@@ -281,13 +282,13 @@ TEST(CellFile, ObstaclesOfAnImplausibleSizeWarnAboutTheUnit) {
 
 TEST(CellFile, PlausibleSizesDoNotWarn) {
   // 100 m exactly and 0.05 m exactly are plausible; a cell of meshes only has no sizes.
-  EXPECT_TRUE(parse(cell_with("obstacles:\n  - {name: a, box: [100, 1, 1]}\n")).warnings.empty());
-  EXPECT_TRUE(parse(cell_with("obstacles:\n  - {name: a, box: [50, 10, 10]}\n", "mm")).warnings.empty());
-  EXPECT_TRUE(parse(cell_with("obstacles:\n  - {name: a, mesh: a.stl}\n", "mm")).warnings.empty());
+  EXPECT_TRUE(parse_cell_yaml(cell_with("obstacles:\n  - {name: a, box: [100, 1, 1]}\n")).warnings.empty());
+  EXPECT_TRUE(parse_cell_yaml(cell_with("obstacles:\n  - {name: a, box: [50, 10, 10]}\n", "mm")).warnings.empty());
+  EXPECT_TRUE(parse_cell_yaml(cell_with("obstacles:\n  - {name: a, mesh: a.stl}\n", "mm")).warnings.empty());
 }
 
 TEST(CellFile, AContactListedTwiceWarnsAndIsKeptOnce) {
-  const CellReadResult result = parse(cell_with(
+  const CellReadResult result = parse_cell_yaml(cell_with(
       "obstacles: [{name: table, box: [1, 1, 1]}]\n"
       "allowed_contacts:\n  - [link0, table]\n  - [table, link0]\n"));
   ASSERT_EQ(result.cell.allowed_contacts.size(), 1u);
@@ -298,77 +299,77 @@ TEST(CellFile, AContactListedTwiceWarnsAndIsKeptOnce) {
 
 
 TEST(CellFile, SelfCollisionIsOnByDefaultAndTakesTrueOrFalseOnly) {
-  EXPECT_TRUE(parse("units: m\nrobot: {thesis: r.txt}\n").cell.self_collision);
-  EXPECT_FALSE(parse("units: m\nrobot: {thesis: r.txt}\nself_collision: false\n").cell.self_collision);
-  expect_error("units: m\nrobot: {thesis: r.txt}\nself_collision: no\n", 3,
+  EXPECT_TRUE(parse_cell_yaml("units: m\nrobot: {thesis: r.txt}\n").cell.self_collision);
+  EXPECT_FALSE(parse_cell_yaml("units: m\nrobot: {thesis: r.txt}\nself_collision: false\n").cell.self_collision);
+  expect_cell_error("units: m\nrobot: {thesis: r.txt}\nself_collision: no\n", 3,
                "expected self_collision: true or false, found 'no'");
 }
 
 TEST(CellFile, StructureErrorsNameTheLineAndWhatWasExpected) {
-  expect_error("units: m\nrobot: {thesis: r.txt}\nobstacle: []\n", 3,
+  expect_cell_error("units: m\nrobot: {thesis: r.txt}\nobstacle: []\n", 3,
                "expected the cell: a key among units, robot, obstacles, allowed_contacts, tolerance, "
                "motion, thesis_constants, self_collision (did you mean 'obstacles'?), found 'obstacle'");
-  expect_error("units: m\nrobot:\n  urdf: r.urdf\n  pacakge_paths: [a]\n", 4,
+  expect_cell_error("units: m\nrobot:\n  urdf: r.urdf\n  pacakge_paths: [a]\n", 4,
                "expected robot: a key among urdf, thesis, package_paths, srdf, tip, base, tool, home, "
                "acceleration (did you mean 'package_paths'?), found 'pacakge_paths'");
-  expect_error("units: m\nrobot: {thesis: r.txt}\nunits: mm\n", 3,
+  expect_cell_error("units: m\nrobot: {thesis: r.txt}\nunits: mm\n", 3,
                "expected the cell: each key once (a second 'units'), found 'units'");
-  expect_error("robot: {thesis: r.txt}\n", 1,
+  expect_cell_error("robot: {thesis: r.txt}\n", 1,
                "expected the cell: the key 'units', found a mapping without it");
-  expect_error("units: m\n", 1, "expected the cell: the key 'robot', found a mapping without it");
-  expect_error("- units\n", 1,
+  expect_cell_error("units: m\n", 1, "expected the cell: the key 'robot', found a mapping without it");
+  expect_cell_error("- units\n", 1,
                "expected the cell: a mapping with keys units, robot, obstacles, allowed_contacts, "
                "tolerance, motion, thesis_constants, self_collision, found a list of 1 entry");
-  expect_error("", 0, "expected one YAML document (the cell), found none");
-  expect_error("~\n", 1,
+  expect_cell_error("", 0, "expected one YAML document (the cell), found none");
+  expect_cell_error("~\n", 1,
                "expected the cell: a mapping with keys units, robot, obstacles, allowed_contacts, "
                "tolerance, motion, thesis_constants, self_collision, found nothing");
-  expect_error("units: m\nrobot: {thesis: r.txt}\n---\nunits: m\n", 3,
+  expect_cell_error("units: m\nrobot: {thesis: r.txt}\n---\nunits: m\n", 3,
                "expected one YAML document (the cell), found a second document");
   // YAML::LoadAll never returns on this text (each call succeeds without consuming the comma).
-  expect_error(",nobot", 1, "expected one YAML document (the cell), found a second document");
+  expect_cell_error(",nobot", 1, "expected one YAML document (the cell), found a second document");
 }
 
 TEST(CellFile, YamlSyntaxErrorsNameTheirLine) {
-  expect_error("units: m\nrobot: {thesis: r.txt\n", 3,
+  expect_cell_error("units: m\nrobot: {thesis: r.txt\n", 3,
                "expected well-formed YAML, found end of map flow not found");
-  expect_error("units: m\nrobot:\n  thesis: r.txt\n tip: [\n", 4,
+  expect_cell_error("units: m\nrobot:\n  thesis: r.txt\n tip: [\n", 4,
                "expected well-formed YAML, found end of map not found");
 }
 
 TEST(CellFile, UnitErrorsListTheUnits) {
-  expect_error("units: metres\nrobot: {thesis: r.txt}\n", 1,
+  expect_cell_error("units: metres\nrobot: {thesis: r.txt}\n", 1,
                "expected units: one of m, mm, in (did you mean 'm'?), found 'metres'");
-  expect_error("units: cm\nrobot: {thesis: r.txt}\n", 1,
+  expect_cell_error("units: cm\nrobot: {thesis: r.txt}\n", 1,
                "expected units: one of m, mm, in, found 'cm'");  // no suggestion: cm is not m
-  expect_error("units: [m]\nrobot: {thesis: r.txt}\n", 1,
+  expect_cell_error("units: [m]\nrobot: {thesis: r.txt}\n", 1,
                "expected units: a non-empty name of at most 256 printable characters, found a list of 1 entry");
-  expect_error(cell_with("obstacles:\n  - {name: a, mesh: a.stl, units: feet}\n"), 4,
+  expect_cell_error(cell_with("obstacles:\n  - {name: a, mesh: a.stl, units: feet}\n"), 4,
                "expected units: one of m, mm, in, found 'feet'");
 }
 
 TEST(CellFile, RobotErrors) {
-  expect_error("units: m\nrobot: {tip: tool0}\n", 2,
+  expect_cell_error("units: m\nrobot: {tip: tool0}\n", 2,
                "expected robot: the key 'urdf' or 'thesis' (the robot file), found a mapping without either");
-  expect_error("units: m\nrobot:\n  urdf: r.urdf\n  thesis: r.txt\n", 4,
+  expect_cell_error("units: m\nrobot:\n  urdf: r.urdf\n  thesis: r.txt\n", 4,
                "expected robot: either urdf or thesis, not both, found 'thesis'");
-  expect_error("units: m\nrobot:\n  thesis: r.txt\n  srdf: r.srdf\n", 4,
+  expect_cell_error("units: m\nrobot:\n  thesis: r.txt\n  srdf: r.srdf\n", 4,
                "expected robot: 'srdf' only with a urdf robot (a thesis robot file has none), found 'srdf'");
-  expect_error("units: m\nrobot:\n  thesis: r.txt\n  home: [0, 1, x]\n", 4,
+  expect_cell_error("units: m\nrobot:\n  thesis: r.txt\n  home: [0, 1, x]\n", 4,
                "expected robot.home[2]: a finite number, 0 or 1e-300 <= |x| <= 1e9, found 'x'");
-  expect_error("units: m\nrobot:\n  thesis: r.txt\n  home: []\n", 4,
+  expect_cell_error("units: m\nrobot:\n  thesis: r.txt\n  home: []\n", 4,
                "expected robot.home: a list of 1 to 64 numbers, found a list of 0 entries");
-  expect_error("units: m\nrobot:\n  thesis: r.txt\n  acceleration: {default: 0}\n", 4,
+  expect_cell_error("units: m\nrobot:\n  thesis: r.txt\n  acceleration: {default: 0}\n", 4,
                "expected robot.acceleration.default: a number > 0, found '0'");
-  expect_error("units: m\nrobot:\n  thesis: r.txt\n  acceleration:\n    j1: 1\n    j1: 2\n", 6,
+  expect_cell_error("units: m\nrobot:\n  thesis: r.txt\n  acceleration:\n    j1: 1\n    j1: 2\n", 6,
                "expected robot.acceleration: each joint once ('j1' is also on line 5), found 'j1'");
-  expect_error("units: m\nrobot:\n  thesis: r.txt\n  base: {xyz: [0, 0]}\n", 4,
+  expect_cell_error("units: m\nrobot:\n  thesis: r.txt\n  base: {xyz: [0, 0]}\n", 4,
                "expected robot.base.xyz: a list of 3 numbers [x, y, z], found a list of 2 entries");
-  expect_error("units: m\nrobot:\n  thesis: r.txt\n  base: {xyz: [0, 0, 1], rpy: [0, 0, 1], quaternion: {w: 1, x: 0, y: 0, z: 0}}\n",
+  expect_cell_error("units: m\nrobot:\n  thesis: r.txt\n  base: {xyz: [0, 0, 1], rpy: [0, 0, 1], quaternion: {w: 1, x: 0, y: 0, z: 0}}\n",
                4, "expected robot.base: either rpy or quaternion, not both, found a mapping");
-  expect_error("units: m\nrobot:\n  thesis: r.txt\n  tool:\n    quaternion: {w: 0, x: 0, y: 0, z: 0}\n", 5,
+  expect_cell_error("units: m\nrobot:\n  thesis: r.txt\n  tool:\n    quaternion: {w: 0, x: 0, y: 0, z: 0}\n", 5,
                "expected robot.tool.quaternion: a nonzero quaternion {w, x, y, z}, found a mapping");
-  expect_error("units: m\nrobot:\n  thesis: r.txt\n  tool:\n    quaternion: {w: 1, x: 0, y: 0}\n", 5,
+  expect_cell_error("units: m\nrobot:\n  thesis: r.txt\n  tool:\n    quaternion: {w: 1, x: 0, y: 0}\n", 5,
                "expected robot.tool.quaternion: the key 'z', found a mapping without it");
 }
 
@@ -376,50 +377,50 @@ TEST(CellFile, NumbersMustBeFiniteAndInRange) {
   const std::string expected = "a finite number, 0 or 1e-300 <= |x| <= 1e9";
   for (const std::string text : {".inf", "nan", "inf", "1e10", "1e-320", "0x10", "1,5", "true", "1_000"}) {
     SCOPED_TRACE(text);
-    expect_error(cell_with("tolerance: " + text + "\n"), 3,
+    expect_cell_error(cell_with("tolerance: " + text + "\n"), 3,
                  "expected tolerance: " + expected + ", found '" + text + "'");
   }
-  expect_error(cell_with("tolerance: ''\n"), 3, "expected tolerance: " + expected + ", found ''");
-  expect_error(cell_with("tolerance: -0.1\n"), 3, "expected tolerance: a number > 0, found '-0.1'");
-  EXPECT_EQ(parse(cell_with("tolerance: +1e-3\n")).cell.tolerance, 0.001);
+  expect_cell_error(cell_with("tolerance: ''\n"), 3, "expected tolerance: " + expected + ", found ''");
+  expect_cell_error(cell_with("tolerance: -0.1\n"), 3, "expected tolerance: a number > 0, found '-0.1'");
+  EXPECT_EQ(parse_cell_yaml(cell_with("tolerance: +1e-3\n")).cell.tolerance, 0.001);
 }
 
 TEST(CellFile, ObstacleErrors) {
-  expect_error(cell_with("obstacles:\n  - {box: [1, 1, 1]}\n"), 4,
+  expect_cell_error(cell_with("obstacles:\n  - {box: [1, 1, 1]}\n"), 4,
                "expected obstacles[0]: the key 'name', found a mapping without it");
-  expect_error(cell_with("obstacles:\n  - {name: a, pose: {xyz: [0, 0, 0]}}\n"), 4,
+  expect_cell_error(cell_with("obstacles:\n  - {name: a, pose: {xyz: [0, 0, 0]}}\n"), 4,
                "expected obstacle 'a': one shape key among box, cylinder, sphere, mesh, thesis_environment, found none");
-  expect_error(cell_with("obstacles:\n  - name: a\n    box: [1, 1, 1]\n    sphere: {radius: 1}\n"), 6,
+  expect_cell_error(cell_with("obstacles:\n  - name: a\n    box: [1, 1, 1]\n    sphere: {radius: 1}\n"), 6,
                "expected obstacle 'a': one shape (it already is a box), found 'sphere'");
-  expect_error(cell_with("obstacles:\n  - {name: a, box: [1, 0, 1]}\n"), 4,
+  expect_cell_error(cell_with("obstacles:\n  - {name: a, box: [1, 0, 1]}\n"), 4,
                "expected obstacle 'a'.box[1]: a number > 0, found '0'");
-  expect_error(cell_with("obstacles:\n  - {name: a, box: [1, -2, 1]}\n"), 4,
+  expect_cell_error(cell_with("obstacles:\n  - {name: a, box: [1, -2, 1]}\n"), 4,
                "expected obstacle 'a'.box[1]: a number > 0, found '-2'");
-  expect_error(cell_with("obstacles:\n  - {name: a, box: 1}\n"), 4,
+  expect_cell_error(cell_with("obstacles:\n  - {name: a, box: 1}\n"), 4,
                "expected obstacle 'a'.box: a list of 3 sizes [x, y, z], found '1'");
-  expect_error(cell_with("obstacles:\n  - name: a\n    cylinder: {radius: 1, lenght: 2}\n"), 5,
+  expect_cell_error(cell_with("obstacles:\n  - name: a\n    cylinder: {radius: 1, lenght: 2}\n"), 5,
                "expected obstacle 'a'.cylinder: a key among radius, length (did you mean 'length'?), found 'lenght'");
-  expect_error(cell_with("obstacles:\n  - name: a\n    sphere:\n      radius: -1\n"), 6,
+  expect_cell_error(cell_with("obstacles:\n  - name: a\n    sphere:\n      radius: -1\n"), 6,
                "expected obstacle 'a'.sphere.radius: a number > 0, found '-1'");
-  expect_error(cell_with("obstacles:\n  - {name: a, box: [1, 1, 1], scale: 2}\n"), 4,
+  expect_cell_error(cell_with("obstacles:\n  - {name: a, box: [1, 1, 1], scale: 2}\n"), 4,
                "expected obstacle 'a': 'scale' only with a mesh, found 'scale'");
-  expect_error(cell_with("obstacles:\n  - {name: a, thesis_environment: e.txt, pose: {xyz: [0, 0, 1]}}\n"), 4,
+  expect_cell_error(cell_with("obstacles:\n  - {name: a, thesis_environment: e.txt, pose: {xyz: [0, 0, 1]}}\n"), 4,
                "expected obstacle 'a': no pose with thesis_environment (its hulls are in world "
                "coordinates), found 'pose'");
-  expect_error(cell_with("obstacles:\n  - {name: a, mesh: a.stl, scale: 2, units: mm}\n"), 4,
+  expect_cell_error(cell_with("obstacles:\n  - {name: a, mesh: a.stl, scale: 2, units: mm}\n"), 4,
                "expected obstacle 'a': either scale or units, not both, found 'units'");
-  expect_error(cell_with("obstacles:\n  - {name: a, mesh: a.stl, scale: [1, 2]}\n"), 4,
+  expect_cell_error(cell_with("obstacles:\n  - {name: a, mesh: a.stl, scale: [1, 2]}\n"), 4,
                "expected obstacle 'a'.scale: a number > 0 or a list of 3, found a list of 2 entries");
-  expect_error(cell_with("obstacles:\n  - {name: a, mesh: a.stl, decompose: convex}\n"), 4,
+  expect_cell_error(cell_with("obstacles:\n  - {name: a, mesh: a.stl, decompose: convex}\n"), 4,
                "expected obstacle 'a'.decompose: one of hull, parts, exact, found 'convex'");
-  expect_error(cell_with("obstacles:\n  - {name: '', box: [1, 1, 1]}\n"), 4,
+  expect_cell_error(cell_with("obstacles:\n  - {name: '', box: [1, 1, 1]}\n"), 4,
                "expected obstacles[0].name: a non-empty name of at most 256 printable characters, found ''");
-  expect_error(cell_with("obstacles: {name: a}\n"), 3,
+  expect_cell_error(cell_with("obstacles: {name: a}\n"), 3,
                "expected obstacles: a list of at most 100000 obstacles, found a mapping");
 }
 
 TEST(CellFile, ObstacleNamesAreUnique) {
-  expect_error(cell_with("obstacles:\n"
+  expect_cell_error(cell_with("obstacles:\n"
                          "  - {name: table, box: [1, 1, 1]}\n"      // 4
                          "  - {name: post, sphere: {radius: 1}}\n"  // 5
                          "  - {name: table, sphere: {radius: 1}}\n"),  // 6
@@ -428,29 +429,29 @@ TEST(CellFile, ObstacleNamesAreUnique) {
 
 TEST(CellFile, AllowedContactErrors) {
   const std::string obstacles = "obstacles: [{name: table, box: [1, 1, 1]}, {name: post, box: [1, 1, 1]}]\n";
-  expect_error(cell_with(obstacles + "allowed_contacts:\n  - {link: link0, obstacle: tabel}\n"), 5,
+  expect_cell_error(cell_with(obstacles + "allowed_contacts:\n  - {link: link0, obstacle: tabel}\n"), 5,
                "expected allowed_contacts[0].obstacle: the name of one of the cell's obstacles (did you "
                "mean 'table'?), found 'tabel'");
-  expect_error(cell_with(obstacles + "allowed_contacts:\n  - [table, post]\n"), 5,
+  expect_cell_error(cell_with(obstacles + "allowed_contacts:\n  - [table, post]\n"), 5,
                "expected allowed_contacts[0]: at least one robot link (obstacles never move against each "
                "other), found a list of 2 entries");
-  expect_error(cell_with(obstacles + "allowed_contacts:\n  - [link0]\n"), 5,
+  expect_cell_error(cell_with(obstacles + "allowed_contacts:\n  - [link0]\n"), 5,
                "expected allowed_contacts[0]: a pair [NAME, NAME] of link or obstacle names, or {link: L, "
                "obstacle: O}, found a list of 1 entry");
-  expect_error(cell_with(obstacles + "allowed_contacts:\n  - [link0, link0]\n"), 5,
+  expect_cell_error(cell_with(obstacles + "allowed_contacts:\n  - [link0, link0]\n"), 5,
                "expected allowed_contacts[0]: two different names (a part always touches itself), found a "
                "list of 2 entries");
   // Link names are checked when the robot is loaded: a pair of unknown names is read.
-  EXPECT_EQ(parse(cell_with(obstacles + "allowed_contacts: [[link0, link1]]\n")).cell.allowed_contacts.size(), 1u);
+  EXPECT_EQ(parse_cell_yaml(cell_with(obstacles + "allowed_contacts: [[link0, link1]]\n")).cell.allowed_contacts.size(), 1u);
 }
 
 TEST(CellFile, OtherSectionErrors) {
-  expect_error(cell_with("motion: {cp_speed: 1, spacing: 2}\n"), 3,
+  expect_cell_error(cell_with("motion: {cp_speed: 1, spacing: 2}\n"), 3,
                "expected motion: a key among cp_speed, cp_spacing, found 'spacing'");
-  expect_error(cell_with("motion: {cp_spacing: 0}\n"), 3, "expected motion.cp_spacing: a number > 0, found '0'");
-  expect_error(cell_with("thesis_constants: {smallest_angle: 4, smallest_thickness: 1}\n"), 3,
+  expect_cell_error(cell_with("motion: {cp_spacing: 0}\n"), 3, "expected motion.cp_spacing: a number > 0, found '0'");
+  expect_cell_error(cell_with("thesis_constants: {smallest_angle: 4, smallest_thickness: 1}\n"), 3,
                "expected thesis_constants.smallest_angle: an angle in radians, 0 < angle < pi, found '4'");
-  expect_error(cell_with("thesis_constants: {smallest_angle: 1}\n"), 3,
+  expect_cell_error(cell_with("thesis_constants: {smallest_angle: 1}\n"), 3,
                "expected thesis_constants: the key 'smallest_thickness', found a mapping without it");
 }
 
@@ -478,11 +479,11 @@ TEST(CellFile, ReferencedFilesMustExist) {
 
 TEST(CellFile, SizeLimitsAreEnforcedBeforeReading) {
   const std::string huge(kMaxCellFileBytes + 1, '#');
-  expect_error(huge, 0, "expected a cell file of at most 16777216 bytes, found 16777217 bytes");
+  expect_cell_error(huge, 0, "expected a cell file of at most 16777216 bytes, found 16777217 bytes");
   std::string many = cell_with("obstacles: [");
   for (std::size_t i = 0; i <= kMaxCellEntries; ++i) many += "0,";
   many += "0]\n";
-  expect_error(many, 3, "expected obstacles: a list of at most 100000 obstacles, found a list of 100002 entries");
+  expect_cell_error(many, 3, "expected obstacles: a list of at most 100000 obstacles, found a list of 100002 entries");
 }
 
 TEST(CellFile, EveryPrefixOfASampleIsReadOrRejectedWithAnInputError) {

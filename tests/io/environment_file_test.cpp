@@ -17,7 +17,7 @@ using grpvss::testing::with_line_replaced;
 
 std::string sample() { return source_file_text("data/ibm7545/environment.txt"); }
 
-void parse(const std::string& text) { parse_environment_file(text, "environment.txt"); }
+void parse_environment_text(const std::string& text) { parse_environment_file(text, "environment.txt"); }
 
 /// k lines "x,y,z" of a tetrahedron-like point set: (0,0,0), (1,0,0), (0,1,0), (0,0,1), ...
 std::string tetrahedron_lines(int k) {
@@ -65,7 +65,7 @@ TEST(EnvironmentFile, AcceptsAnEmptyEnvironment) {
 }
 
 TEST(EnvironmentFile, RejectsAHullOfFewerThanFourPoints) {
-  expect_input_error([] { parse("90\n5\n1\nHULL 3\n0,0,0\n1,0,0\n0,1,0\n"); }, "environment.txt",
+  expect_input_error([] { parse_environment_text("90\n5\n1\nHULL 3\n0,0,0\n1,0,0\n0,1,0\n"); }, "environment.txt",
                      4,
                      "environment.txt:4: expected the number of points of hull 1 of the "
                      "environment between 4 and 1000000, found 3");
@@ -73,52 +73,52 @@ TEST(EnvironmentFile, RejectsAHullOfFewerThanFourPoints) {
 
 TEST(EnvironmentFile, RejectsMorePointsThanTheFileBudgetBeforeReadingThem) {
   const std::string text = first_lines(sample(), 19) + "HULL 1000000\n";
-  expect_input_error([&] { parse(text); }, "environment.txt", 20,
+  expect_input_error([&] { parse_environment_text(text); }, "environment.txt", 20,
                      "environment.txt:20: expected at most 1000000 hull points in the file, "
                      "found 1000016 points by the end of hull 2 of the environment");
 }
 
 TEST(EnvironmentFile, RejectsADeclaredHullThatEndsEarly) {
-  expect_input_error([] { parse("90\n5\n1\nHULL 6\n" + tetrahedron_lines(4)); }, "environment.txt",
+  expect_input_error([] { parse_environment_text("90\n5\n1\nHULL 6\n" + tetrahedron_lines(4)); }, "environment.txt",
                      9,
                      "environment.txt:9: expected 3 numbers for point 5 of hull 1 of the "
                      "environment (x, y, z), found end of file");
 }
 
 TEST(EnvironmentFile, RejectsAFileEndingInsideAHull) {
-  expect_input_error([] { parse(first_lines(sample(), 30)); }, "environment.txt", 31,
+  expect_input_error([] { parse_environment_text(first_lines(sample(), 30)); }, "environment.txt", 31,
                      "environment.txt:31: expected 3 numbers for point 12 of hull 2 of the "
                      "environment (x, y, z), found end of file");
 }
 
 TEST(EnvironmentFile, RejectsAHullLineWithTwoNumbers) {
-  expect_input_error([] { parse(with_line_replaced(sample(), 6, "20,15")); }, "environment.txt", 6,
+  expect_input_error([] { parse_environment_text(with_line_replaced(sample(), 6, "20,15")); }, "environment.txt", 6,
                      "environment.txt:6: expected 3 numbers for point 3 of hull 1 of the "
                      "environment (x, y, z), found 2 numbers");
 }
 
 TEST(EnvironmentFile, RejectsAnAngleOutsideTheOpenInterval) {
-  expect_input_error([] { parse(with_line_replaced(sample(), 1, "0")); }, "environment.txt", 1,
+  expect_input_error([] { parse_environment_text(with_line_replaced(sample(), 1, "0")); }, "environment.txt", 1,
                      "environment.txt:1: expected a smallest angle theta strictly between 0 and "
                      "180 degrees, found 0");
-  expect_input_error([] { parse(with_line_replaced(sample(), 1, "180.")); }, "environment.txt", 1,
+  expect_input_error([] { parse_environment_text(with_line_replaced(sample(), 1, "180.")); }, "environment.txt", 1,
                      "environment.txt:1: expected a smallest angle theta strictly between 0 and "
                      "180 degrees, found 180");
 }
 
 TEST(EnvironmentFile, RejectsANonPositiveThickness) {
-  expect_input_error([] { parse(with_line_replaced(sample(), 2, "-5")); }, "environment.txt", 2,
+  expect_input_error([] { parse_environment_text(with_line_replaced(sample(), 2, "-5")); }, "environment.txt", 2,
                      "environment.txt:2: expected a positive smallest thickness L, found -5");
 }
 
 TEST(EnvironmentFile, RejectsNegativeNonIntegerAndAbsurdHullCounts) {
-  expect_input_error([] { parse(with_line_replaced(sample(), 3, "-2")); }, "environment.txt", 3,
+  expect_input_error([] { parse_environment_text(with_line_replaced(sample(), 3, "-2")); }, "environment.txt", 3,
                      "environment.txt:3: expected the number of obstacle hulls NOB between 0 and "
                      "100000, found -2");
-  expect_input_error([] { parse(with_line_replaced(sample(), 3, "2.0")); }, "environment.txt", 3,
+  expect_input_error([] { parse_environment_text(with_line_replaced(sample(), 3, "2.0")); }, "environment.txt", 3,
                      "environment.txt:3: expected an integer for the number of obstacle hulls "
                      "NOB, found '2.0'");
-  expect_input_error([] { parse("90\n5\n100001\n"); }, "environment.txt", 3,
+  expect_input_error([] { parse_environment_text("90\n5\n100001\n"); }, "environment.txt", 3,
                      "environment.txt:3: expected the number of obstacle hulls NOB between 0 and "
                      "100000, found 100001");
 }
@@ -126,7 +126,7 @@ TEST(EnvironmentFile, RejectsNegativeNonIntegerAndAbsurdHullCounts) {
 TEST(EnvironmentFile, RejectsCoincidentPoints) {
   std::string text = "90\n5\n1\n";
   for (int i = 0; i < 16; ++i) text += "1,2,3\n";
-  expect_input_error([&] { parse(text); }, "environment.txt", 4,
+  expect_input_error([&] { parse_environment_text(text); }, "environment.txt", 4,
                      "environment.txt:4: expected hull 1 of the environment to span 3-D (four "
                      "points not in one plane), found all 16 points coincident");
 }
@@ -136,17 +136,17 @@ TEST(EnvironmentFile, RejectsAHullWhosePointsAreCoplanar) {
   for (int line = 28; line <= 35; ++line) {  // top octagon of hull 2 down onto z = 15
     text = with_line_replaced(text, line, "-12,10,15");
   }
-  expect_input_error([&] { parse(text); }, "environment.txt", 20,
+  expect_input_error([&] { parse_environment_text(text); }, "environment.txt", 20,
                      "environment.txt:20: expected hull 2 of the environment to span 3-D (four "
                      "points not in one plane), found all 16 points coplanar");
 }
 
 TEST(EnvironmentFile, RejectsAMalformedHullLine) {
-  expect_input_error([] { parse("90\n5\n1\nHULL\n" + tetrahedron_lines(4)); }, "environment.txt",
+  expect_input_error([] { parse_environment_text("90\n5\n1\nHULL\n" + tetrahedron_lines(4)); }, "environment.txt",
                      4,
                      "environment.txt:4: expected 'HULL k' with one integer k for the number of "
                      "points of hull 1 of the environment, found 1 field");
-  expect_input_error([] { parse("90\n5\n1\nHULL 4.0\n" + tetrahedron_lines(4)); },
+  expect_input_error([] { parse_environment_text("90\n5\n1\nHULL 4.0\n" + tetrahedron_lines(4)); },
                      "environment.txt", 4,
                      "environment.txt:4: expected an integer for the number of points of hull 1 "
                      "of the environment, found '4.0'");
@@ -168,7 +168,7 @@ TEST(EnvironmentFile, ParsesTheExtensionExampleOfTheDocumentation) {
 }
 
 TEST(EnvironmentFile, RejectsTrailingGarbage) {
-  expect_input_error([] { parse(sample() + "1,2,3\n"); }, "environment.txt", 36,
+  expect_input_error([] { parse_environment_text(sample() + "1,2,3\n"); }, "environment.txt", 36,
                      "environment.txt:36: expected end of file after the last obstacle hull, "
                      "found '1'");
 }

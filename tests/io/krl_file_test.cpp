@@ -30,15 +30,15 @@ using grpvss::testing::vector6;
 
 const std::string kFolder = std::string(GRPVSS_SOURCE_DIR) + "/data/programs/";
 
-RobotProgram parse(const std::string& src, const std::string& dat = {}) {
+RobotProgram parse_krl_text(const std::string& src, const std::string& dat = {}) {
   std::vector<KrlDataText> data;
   if (!dat.empty()) data.push_back({"t.dat", dat});
   return parse_krl(src, "t.src", data);
 }
 
-void expect_error(const std::string& src, const std::string& dat, const std::string& file, int line,
+void expect_krl_error(const std::string& src, const std::string& dat, const std::string& file, int line,
                   const std::string& message) {
-  expect_input_error([&] { parse(src, dat); }, file, line, file + ":" + std::to_string(line) + ": " + message);
+  expect_input_error([&] { parse_krl_text(src, dat); }, file, line, file + ":" + std::to_string(line) + ": " + message);
 }
 
 /// The program text with `body` inside DEF t() ... END (body lines start at line 2).
@@ -132,14 +132,14 @@ TEST(KrlFile, ReadsThePalletizingSampleWithItsDataFiles) {
 }
 
 TEST(KrlFile, AbcOf90MapsXToY) {
-  const RobotProgram p = parse(program("$TOOL = $NULLFRAME\n$BASE = $NULLFRAME\nLIN {X 1, Y 2, Z 3, A 90, B 0, C 0}\n"));
+  const RobotProgram p = parse_krl_text(program("$TOOL = $NULLFRAME\n$BASE = $NULLFRAME\nLIN {X 1, Y 2, Z 3, A 90, B 0, C 0}\n"));
   const CartesianTarget& target = cartesian(p.motions.at(0).target);
   expect_vector_near(target.R_BT * Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), 1e-15);
   EXPECT_TRUE(p.warnings.empty());
 }
 
 TEST(KrlFile, ApproximationKindsTakeTheirApoValues) {
-  const RobotProgram p = parse(program(
+  const RobotProgram p = parse_krl_text(program(
       "$TOOL = {X 0, Y 0, Z 100, A 0, B 0, C 0}\n$BASE = $NULLFRAME\n"
       "$APO = {CDIS 5, CPTP 30, CORI 10, CVEL 60}\n$VEL = {CP 1.5, ORI1 200, ORI2 100}\n"
       "$ACC.ORI1 = 400\n$ACC_AXIS[2] = 70\n"
@@ -182,7 +182,7 @@ TEST(KrlFile, InlineFormsTakeToolAndBaseFromFdat) {
       "DECL PDAT PPDAT1={VEL 100,ACC 100,APO_DIST 100,APO_MODE #CDIS}\n"
       "TOOL_DATA[2]={X 10,Y 0,Z 150,A 0,B 0,C 0}\n"
       "ENDDAT\n";
-  const RobotProgram p = parse(program(
+  const RobotProgram p = parse_krl_text(program(
       ";FOLD PTP P1 Vel=75 % PDAT1 Tool[2] Base[0];%{PE}\n"  // 2
       "$BWDSTART=FALSE\n"                                     // 3
       "PDAT_ACT=PPDAT1\n"
@@ -239,7 +239,7 @@ TEST(KrlFile, ReadsConfigDatStyleData) {
 }
 
 TEST(KrlFile, GeometricOperatorComposesFrames) {
-  const RobotProgram p = parse(program(
+  const RobotProgram p = parse_krl_text(program(
       "$TOOL = $NULLFRAME\n"
       "$BASE = BASE_DATA[1] : {X 100, Y 0, Z 0, A 0, B 0, C 0}\n"
       "LIN {X 0, Y 0, Z 0, A 0, B 0, C 0}\n"),
@@ -251,7 +251,7 @@ TEST(KrlFile, GeometricOperatorComposesFrames) {
 }
 
 TEST(KrlFile, WarnsWhenToolOrBaseIsNotSetAndLogicIsNotEvaluated) {
-  const RobotProgram p = parse(program("IF $IN[1] THEN\nLIN {X 1, Y 2, Z 3, A 0, B 0, C 0}\nENDIF\nsub()\n"));
+  const RobotProgram p = parse_krl_text(program("IF $IN[1] THEN\nLIN {X 1, Y 2, Z 3, A 0, B 0, C 0}\nENDIF\nsub()\n"));
   ASSERT_EQ(p.motions.size(), 1u);
   EXPECT_EQ(p.motions[0].tool_name, "$NULLFRAME (not set)");
   ASSERT_EQ(p.warnings.size(), 4u);
@@ -266,43 +266,43 @@ TEST(KrlFile, WarnsWhenToolOrBaseIsNotSetAndLogicIsNotEvaluated) {
 
 TEST(KrlFile, RejectsUndeclaredPointsToolsAndBasesNamingThem) {
   const std::string nowhere = ", which is declared nowhere (neither in the program nor in its data files)";
-  expect_error(program("PTP XP9\n"), "", "t.src", 2, "expected a target the reader can compute for PTP, found XP9" + nowhere);
-  expect_error(program("$TOOL = TOOL_DATA[3]\n"), "", "t.src", 2,
+  expect_krl_error(program("PTP XP9\n"), "", "t.src", 2, "expected a target the reader can compute for PTP, found XP9" + nowhere);
+  expect_krl_error(program("$TOOL = TOOL_DATA[3]\n"), "", "t.src", 2,
                "expected a FRAME the reader can compute for $TOOL, found TOOL_DATA[3]" + nowhere);
-  expect_error(program("BAS(#BASE, 4)\n"), "", "t.src", 2,
+  expect_krl_error(program("BAS(#BASE, 4)\n"), "", "t.src", 2,
                "expected a FRAME the reader can compute for $BASE, found BASE_DATA[4]" + nowhere);
-  expect_error(program("PTP XP1\n"), "DEFDAT t\nDECL E6POS XP1\nENDDAT\n", "t.src", 2,
+  expect_krl_error(program("PTP XP1\n"), "DEFDAT t\nDECL E6POS XP1\nENDDAT\n", "t.src", 2,
                "expected a target the reader can compute for PTP, found XP1, declared without a value at t.dat:2");
-  expect_error(program("BAS(#PTP_PARAMS, 100)\n"), "", "t.src", 2,
+  expect_krl_error(program("BAS(#PTP_PARAMS, 100)\n"), "", "t.src", 2,
                "expected FDAT_ACT (the tool and base of BAS(#PTP_PARAMS)) the reader can compute, found FDAT_ACT" + nowhere);
 }
 
 TEST(KrlFile, RejectsMalformedProgramsNamingFileLineAndExpectation) {
-  expect_error(program("LIN {X 100}\n"), "", "t.src", 2,
+  expect_krl_error(program("LIN {X 100}\n"), "", "t.src", 2,
                "expected a complete POS (X, Y, Z, A, B, C) for LIN (a partial one is completed only from the previous "
                "target of the same kind, tool and base), found no Y");
-  expect_error(program("LIN {A1 0, A2 0, A3 0, A4 0, A5 0, A6 0}\n"), "", "t.src", 2,
+  expect_krl_error(program("LIN {A1 0, A2 0, A3 0, A4 0, A5 0, A6 0}\n"), "", "t.src", 2,
                "expected a Cartesian target (POS, E6POS or FRAME) for LIN, found an AXIS");
-  expect_error(program("PTP {A1 0, X 1}\n"), "", "t.src", 2,
+  expect_krl_error(program("PTP {A1 0, X 1}\n"), "", "t.src", 2,
                "expected components A1..A6 (AXIS) or X, Y, Z, A, B, C (POS) for PTP, found both kinds");
-  expect_error(program("SPLINE\n"), "", "t.src", 2, "expected a motion the reader reads (PTP, LIN, CIRC), found 'SPLINE'");
-  expect_error("DEF t()\nPTP XP1\n", "", "t.src", 3, "expected END closing the DEF t of line 1, found end of file");
-  expect_error("PTP XP1\n", "", "t.src", 1, "expected DEF or DEFFCT (a .src holds routines only), found 'PTP'");
-  expect_error(program("$BASE = $NULLFRAME\nLIN {X 1, Y 2, Z 3, A 0, B 0, C 0} C_PTP\n"), "", "t.src", 3,
+  expect_krl_error(program("SPLINE\n"), "", "t.src", 2, "expected a motion the reader reads (PTP, LIN, CIRC), found 'SPLINE'");
+  expect_krl_error("DEF t()\nPTP XP1\n", "", "t.src", 3, "expected END closing the DEF t of line 1, found end of file");
+  expect_krl_error("PTP XP1\n", "", "t.src", 1, "expected DEF or DEFFCT (a .src holds routines only), found 'PTP'");
+  expect_krl_error(program("$BASE = $NULLFRAME\nLIN {X 1, Y 2, Z 3, A 0, B 0, C 0} C_PTP\n"), "", "t.src", 3,
                "expected C_DIS, C_ORI or C_VEL after LIN or CIRC, found C_PTP");
-  expect_error(program("$VEL_AXIS[1] = 150\n"), "", "t.src", 2, "expected a percentage in (0, 100] for $VEL_AXIS[1], found 150");
-  expect_error(program("$IPO_MODE = #TCP\n"), "", "t.src", 2,
+  expect_krl_error(program("$VEL_AXIS[1] = 150\n"), "", "t.src", 2, "expected a percentage in (0, 100] for $VEL_AXIS[1], found 150");
+  expect_krl_error(program("$IPO_MODE = #TCP\n"), "", "t.src", 2,
                "expected $IPO_MODE = #BASE (a robot-held tool; an external TCP is not read), found #TCP");
-  expect_error(program("PTP {X 1, Y 2, Z 3, A 0, B 0, C 0, S 2.5}\n"), "", "t.src", 2,
+  expect_krl_error(program("PTP {X 1, Y 2, Z 3, A 0, B 0, C 0, S 2.5}\n"), "", "t.src", 2,
                "expected a non-negative integer S for PTP, found 2.5");
-  expect_error(program("PTP {A1 0\n"), "", "t.src", 2, "expected a closing '}', found end of statement");
-  expect_error(program("PTP XP1\n"), "DECL E6POS XP1={X 1,, Y 2}\n", "t.dat", 1, "expected a component name, found ','");
-  expect_error(program("CIRC {X 1, Y 2, Z 3, A 0, B 0, C 0}\n"), "", "t.src", 2,
+  expect_krl_error(program("PTP {A1 0\n"), "", "t.src", 2, "expected a closing '}', found end of statement");
+  expect_krl_error(program("PTP XP1\n"), "DECL E6POS XP1={X 1,, Y 2}\n", "t.dat", 1, "expected a component name, found ','");
+  expect_krl_error(program("CIRC {X 1, Y 2, Z 3, A 0, B 0, C 0}\n"), "", "t.src", 2,
                "expected ',' between the auxiliary point and the target of CIRC, found end of statement");
-  expect_error(program("sub()\n") + "DEF sub()\nsub()\nEND\n", "", "t.src", 5,
+  expect_krl_error(program("sub()\n") + "DEF sub()\nsub()\nEND\n", "", "t.src", 5,
                "expected calls nested at most 32 deep (recursion is not evaluated), found a call of sub nested deeper");
   // inf - inf is NaN: refused before any conversion to an integer.
-  expect_error(program("BAS(#TOOL, 1E308*10 - 1E308*10)\n"), "", "t.src", 2,
+  expect_krl_error(program("BAS(#TOOL, 1E308*10 - 1E308*10)\n"), "", "t.src", 2,
                "expected a tool or base number for BAS(#TOOL, n), found a result that is not a finite number");
 }
 

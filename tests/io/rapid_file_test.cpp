@@ -29,10 +29,10 @@ using grpvss::testing::vector6;
 const std::string kSample = std::string(GRPVSS_SOURCE_DIR) + "/data/programs/irb_glue.mod";
 const std::string kUnused = "[9E9, 9E9, 9E9, 9E9, 9E9, 9E9]";
 
-RobotProgram parse(const std::string& text) { return parse_rapid(text, "t.mod"); }
+RobotProgram parse_rapid_module(const std::string& text) { return parse_rapid(text, "t.mod"); }
 
-void expect_error(const std::string& text, int line, const std::string& message) {
-  expect_input_error([&] { parse(text); }, "t.mod", line, "t.mod:" + std::to_string(line) + ": " + message);
+void expect_rapid_error(const std::string& text, int line, const std::string& message) {
+  expect_input_error([&] { parse_rapid_module(text); }, "t.mod", line, "t.mod:" + std::to_string(line) + ": " + message);
 }
 
 /// A module whose PROC main holds `body` (body lines start at line 3).
@@ -152,7 +152,7 @@ TEST(RapidFile, ReadsTheGluingSample) {
 }
 
 TEST(RapidFile, QuaternionIsWFirstAQuarterTurnAboutZMapsXToY) {
-  const RobotProgram p = parse(module("", "MoveL " + robtarget("[1, 2, 3]", "[0.70710678, 0, 0, 0.70710678]") + ", v100, fine, tool0;\n"));
+  const RobotProgram p = parse_rapid_module(module("", "MoveL " + robtarget("[1, 2, 3]", "[0.70710678, 0, 0, 0.70710678]") + ", v100, fine, tool0;\n"));
   const CartesianTarget& target = cartesian(p.motions.at(0).target);
   expect_vector_near(target.R_BT * Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), 1e-15);
   EXPECT_EQ(target.p_BT, Eigen::Vector3d(0.001, 0.002, 0.003));
@@ -178,7 +178,7 @@ TEST(RapidFile, AssignmentsArraysParametersAndControlFlow) {
       "  MoveL Offs(t, 0, 0, dz), v100, fine, tool0;\n"
       "ENDPROC\n";
   const std::string text = "MODULE m\n" + data + "PROC main()\n" + body + "ENDPROC\n" + routine + "ENDMODULE\n";
-  const RobotProgram p = parse(text);
+  const RobotProgram p = parse_rapid_module(text);
   ASSERT_EQ(p.motions.size(), 3u);
   EXPECT_EQ(cartesian(p.motions[0].target).p_BT, Eigen::Vector3d(0.11, 0, 0.32));
   EXPECT_EQ(p.motions[1].line, 10);
@@ -195,7 +195,7 @@ TEST(RapidFile, AssignmentsArraysParametersAndControlFlow) {
 }
 
 TEST(RapidFile, WithoutMainTheFirstProcIsTheProgram) {
-  const RobotProgram p = parse("MODULE m\nPROC first()\n  MoveAbsJ [[0, 0, 0, 0, 90, 0], " + kUnused +
+  const RobotProgram p = parse_rapid_module("MODULE m\nPROC first()\n  MoveAbsJ [[0, 0, 0, 0, 90, 0], " + kUnused +
                                "], v100, fine, tool0;\nENDPROC\nENDMODULE\n");
   EXPECT_EQ(p.name, "first");
   ASSERT_EQ(p.motions.size(), 1u);
@@ -205,23 +205,23 @@ TEST(RapidFile, WithoutMainTheFirstProcIsTheProgram) {
 }
 
 TEST(RapidFile, RejectsUnreadableDataNamingIt) {
-  expect_error(module("", "MoveL p99, v100, fine, tool0;\n"), 3,
+  expect_rapid_error(module("", "MoveL p99, v100, fine, tool0;\n"), 3,
                "expected a robtarget the reader can compute for the target of MoveL, found p99, which is declared "
                "nowhere in the program");
-  expect_error(module("CONST robtarget p := [[0, 0, 0], [1, 0, 0, 0], [0, 0, 0, 0]];\n", ""), 2,
+  expect_rapid_error(module("CONST robtarget p := [[0, 0, 0], [1, 0, 0, 0], [0, 0, 0, 0]];\n", ""), 2,
                "expected a robtarget [trans, rot, robconf, extax] for p, found an aggregate of 3 items");
-  expect_error(module("", "MoveL " + robtarget("[0, 0, 0]", "[1, 0, 0, 0.5]") + ", v100, fine, tool0;\n"), 3,
+  expect_rapid_error(module("", "MoveL " + robtarget("[0, 0, 0]", "[1, 0, 0, 0.5]") + ", v100, fine, tool0;\n"), 3,
                "expected a unit quaternion (norm 1 within 1e-3) in the robtarget of the target of MoveL, found norm 1.11803");
-  expect_error(module("PERS tooldata t := [FALSE, [[0, 0, 0], [1, 0, 0, 0]], [1, [0, 0, 1], [1, 0, 0, 0], 0, 0, 0]];\n",
+  expect_rapid_error(module("PERS tooldata t := [FALSE, [[0, 0, 0], [1, 0, 0, 0]], [1, [0, 0, 1], [1, 0, 0, 0], 0, 0, 0]];\n",
                       "MoveL " + robtarget("[0, 0, 0]") + ", v100, fine, t;\n"),
                4, "expected a robot-held tool (robhold TRUE) for the tool of MoveL; a stationary tool is not read, found robhold FALSE");
-  expect_error(module("PERS wobjdata w := [TRUE, TRUE, \"\", [[0, 0, 0], [1, 0, 0, 0]], [[0, 0, 0], [1, 0, 0, 0]]];\n",
+  expect_rapid_error(module("PERS wobjdata w := [TRUE, TRUE, \"\", [[0, 0, 0], [1, 0, 0, 0]], [[0, 0, 0], [1, 0, 0, 0]]];\n",
                       "MoveL " + robtarget("[0, 0, 0]") + ", v100, fine, tool0\\WObj:=w;\n"),
                4, "expected a fixed work object (robhold FALSE) for the work object of MoveL; a robot-held one is not read, found robhold TRUE");
-  expect_error(module("", "MoveL Offs(CRobT(), 0, 0, 10), v100, fine, tool0;\n"), 3,
+  expect_rapid_error(module("", "MoveL Offs(CRobT(), 0, 0, 10), v100, fine, tool0;\n"), 3,
                "expected a robtarget the reader can compute for the target of MoveL, found CRobT(), the current "
                "position, which is not known before the run");
-  expect_error(module("", "MoveL " + robtarget("[0, 0, 0]") + ", v100, zz, tool0;\n"), 3,
+  expect_rapid_error(module("", "MoveL " + robtarget("[0, 0, 0]") + ", v100, zz, tool0;\n"), 3,
                "expected a zonedata the reader can compute for the zone of MoveL, found zz, which is declared nowhere in the program");
 }
 
@@ -229,37 +229,37 @@ TEST(RapidFile, AnUnknownPartOfARobtargetIsNamedNotRead) {
   // Found by fuzz/rapid_fuzzer: Offs() read the parts of a robtarget whose rotation was unknown.
   const std::string data = "VAR robtarget p := [[100, 0, 300], -[1, 0, 0, 0], [0, 0, 0, 0], " + kUnused + "];\n";
   const std::string found = "'-' before an aggregate of 4 items (not evaluated)";
-  expect_error(module(data, "MoveL Offs(p, 10, 0, 0), v100, fine, tool0;\n"), 4,
+  expect_rapid_error(module(data, "MoveL Offs(p, 10, 0, 0), v100, fine, tool0;\n"), 4,
                "expected a robtarget the reader can compute for the target of MoveL, found " + found);
-  expect_error(module(data, "MoveL p, v100, fine, tool0;\n"), 4,
+  expect_rapid_error(module(data, "MoveL p, v100, fine, tool0;\n"), 4,
                "expected a robtarget the reader can compute for the target of MoveL, found " + found);
-  expect_error(module("", "MoveL " + robtarget("[0, 0, 0]") + ", [100, 500, x, 1000], fine, tool0;\n"), 3,
+  expect_rapid_error(module("", "MoveL " + robtarget("[0, 0, 0]") + ", [100, 500, x, 1000], fine, tool0;\n"), 3,
                "expected a speeddata the reader can compute for the speed of MoveL, found x, which is declared nowhere in the program");
 }
 
 TEST(RapidFile, RejectsMalformedProgramsNamingFileLineAndExpectation) {
-  expect_error(module("", "MoveLDO p, v100, fine, tool0, do1, 1;\n"), 3,
+  expect_rapid_error(module("", "MoveLDO p, v100, fine, tool0, do1, 1;\n"), 3,
                "expected a motion instruction the reader reads (MoveAbsJ, MoveJ, MoveL, MoveC), found 'MoveLDO'");
-  expect_error("MODULE m\nPROC main()\n  MoveL p, v100, fine, tool0\nENDPROC\nENDMODULE\n", 6,
+  expect_rapid_error("MODULE m\nPROC main()\n  MoveL p, v100, fine, tool0\nENDPROC\nENDMODULE\n", 6,
                "expected ';' ending the statement of line 3, found end of file");
-  expect_error("PROC main()\nENDPROC\n", 1, "expected MODULE (RAPID code lives in modules), found 'PROC'");
-  expect_error("MODULE m\nPROC main()\n", 3, "expected ENDPROC closing the PROC main of line 2, found end of file");
-  expect_error("MODULE m\nPROC main()\nENDFUNC\nENDMODULE\n", 3, "expected ENDPROC closing the PROC main, found 'ENDFUNC'");
-  expect_error(module("", "MoveL p, v100, fine;\n"), 3, "expected 4 arguments for MoveL (ToPoint, Speed, Zone, Tool), found 3");
-  expect_error(module("", "MoveL p, v100, fine, tool0\\Foo:=1;\n"), 3,
+  expect_rapid_error("PROC main()\nENDPROC\n", 1, "expected MODULE (RAPID code lives in modules), found 'PROC'");
+  expect_rapid_error("MODULE m\nPROC main()\n", 3, "expected ENDPROC closing the PROC main of line 2, found end of file");
+  expect_rapid_error("MODULE m\nPROC main()\nENDFUNC\nENDMODULE\n", 3, "expected ENDPROC closing the PROC main, found 'ENDFUNC'");
+  expect_rapid_error(module("", "MoveL p, v100, fine;\n"), 3, "expected 4 arguments for MoveL (ToPoint, Speed, Zone, Tool), found 3");
+  expect_rapid_error(module("", "MoveL p, v100, fine, tool0\\Foo:=1;\n"), 3,
                "expected an optional argument of MoveL (\\V, \\T, \\Z, \\WObj, \\Conc, \\ID, \\Inpos, \\TLoad, \\Corr, "
                "\\NoEOffs), found \\Foo");
-  expect_error("MODULE m\nCONST num x := 1;\nENDMODULE\n", 4, "expected a PROC (the program) in the module, found none");
-  expect_error("MODULE m\n  x := 1;\nENDMODULE\n", 2,
+  expect_rapid_error("MODULE m\nCONST num x := 1;\nENDMODULE\n", 4, "expected a PROC (the program) in the module, found none");
+  expect_rapid_error("MODULE m\n  x := 1;\nENDMODULE\n", 2,
                "expected a data declaration, PROC, FUNC, TRAP or ENDMODULE in the module, found 'x'");
-  expect_error(module("", "MoveL [[0, 0, 0], [1, 0, 0, 0]], v100, fine, tool0;\n"), 3,
+  expect_rapid_error(module("", "MoveL [[0, 0, 0], [1, 0, 0, 0]], v100, fine, tool0;\n"), 3,
                "expected a robtarget [trans, rot, robconf, extax] for the target of MoveL, found an aggregate of 2 items");
-  expect_error(module("", "MoveL " + robtarget("[0, 0, 0]") + ", v100\\V:=-5, fine, tool0;\n"), 3,
+  expect_rapid_error(module("", "MoveL " + robtarget("[0, 0, 0]") + ", v100\\V:=-5, fine, tool0;\n"), 3,
                "expected a non-negative num for \\V of MoveL, found -5");
-  expect_error(module("", "IF a IF b MoveL p, v100, fine, tool0;\n"), 3,
+  expect_rapid_error(module("", "IF a IF b MoveL p, v100, fine, tool0;\n"), 3,
                "expected a statement after the IF condition (a compact IF holds one simple statement), found 'IF'");
-  expect_error(module("", "MoveL p q, v100, fine, tool0;\n"), 3, "expected ',' after the argument, found 'q'");
-  expect_error("MODULE m\nPROC main()\n  main;\nENDPROC\nENDMODULE\n", 3,
+  expect_rapid_error(module("", "MoveL p q, v100, fine, tool0;\n"), 3, "expected ',' after the argument, found 'q'");
+  expect_rapid_error("MODULE m\nPROC main()\n  main;\nENDPROC\nENDMODULE\n", 3,
                "expected calls nested at most 32 deep (recursion is not evaluated), found a call of main nested deeper");
 }
 

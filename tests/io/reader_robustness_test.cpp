@@ -16,7 +16,7 @@ namespace grpvss::io {
 namespace {
 
 /// One random edit: replace, insert or delete a byte, or cut the text at a random byte.
-std::string mutate(std::string text, std::mt19937_64& random) {
+std::string mutate_reader_input(std::string text, std::mt19937_64& random) {
   static const std::string kAlphabet = "0123456789.,-+eE \n\r\t#xHULLnaif";
   std::uniform_int_distribution<std::size_t> position(0, text.size() - 1);
   std::uniform_int_distribution<std::size_t> letter(0, kAlphabet.size() - 1);
@@ -30,28 +30,28 @@ std::string mutate(std::string text, std::mt19937_64& random) {
   return text;
 }
 
-int line_count(const std::string& text) {
+int reader_line_count(const std::string& text) {
   int lines = 0;
   for (const char c : text) lines += (c == '\n');
   return lines + ((!text.empty() && text.back() != '\n') ? 1 : 0);
 }
 
 /// Returns how many mutants were rejected; fails the test on any other outcome.
-int check_mutants(const std::string& original, std::uint64_t seed,
+int check_reader_mutants(const std::string& original, std::uint64_t seed,
                   const std::function<void(const std::string&)>& parse) {
   std::mt19937_64 random(seed);
   int rejected = 0;
   for (int trial = 0; trial < 400; ++trial) {
     std::string text = original;
     const int edits = 1 + static_cast<int>(random() % 3);
-    for (int e = 0; e < edits && !text.empty(); ++e) text = mutate(text, random);
+    for (int e = 0; e < edits && !text.empty(); ++e) text = mutate_reader_input(text, random);
     try {
       parse(text);
     } catch (const InputError& error) {
       ++rejected;
       EXPECT_EQ(error.file(), "mutant.txt") << "trial " << trial;
       EXPECT_GE(error.line(), 1) << "trial " << trial;
-      EXPECT_LE(error.line(), line_count(text) + 1) << "trial " << trial;
+      EXPECT_LE(error.line(), reader_line_count(text) + 1) << "trial " << trial;
     } catch (const std::exception& other) {
       ADD_FAILURE() << "trial " << trial << ": unexpected " << other.what();
     }
@@ -61,7 +61,7 @@ int check_mutants(const std::string& original, std::uint64_t seed,
 
 TEST(ReaderRobustness, MutatedRobotFilesParseOrThrowInputError) {
   const std::string original = grpvss::testing::source_file_text("data/ibm7545/robot.txt");
-  const int rejected = check_mutants(original, 7545, [](const std::string& text) {
+  const int rejected = check_reader_mutants(original, 7545, [](const std::string& text) {
     parse_robot_file(text, "mutant.txt");
   });
   EXPECT_GT(rejected, 100);  // most edits of a strict format are errors
@@ -69,7 +69,7 @@ TEST(ReaderRobustness, MutatedRobotFilesParseOrThrowInputError) {
 
 TEST(ReaderRobustness, MutatedEnvironmentFilesParseOrThrowInputError) {
   const std::string original = grpvss::testing::source_file_text("data/ibm7545/environment.txt");
-  const int rejected = check_mutants(original, 1988, [](const std::string& text) {
+  const int rejected = check_reader_mutants(original, 1988, [](const std::string& text) {
     parse_environment_file(text, "mutant.txt");
   });
   EXPECT_GT(rejected, 100);
@@ -80,7 +80,7 @@ TEST(ReaderRobustness, MutatedPathFilesParseOrThrowInputError) {
       read_robot_file(std::string(GRPVSS_SOURCE_DIR) + "/data/ibm7545/robot.txt");
   const std::string original =
       grpvss::testing::source_file_text("data/ibm7545/path-output-sample.txt");
-  const int rejected = check_mutants(original, 4341, [&](const std::string& text) {
+  const int rejected = check_reader_mutants(original, 4341, [&](const std::string& text) {
     parse_path_file(text, "mutant.txt", robot);
   });
   EXPECT_GT(rejected, 100);

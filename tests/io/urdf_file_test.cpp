@@ -240,7 +240,7 @@ std::string two_joint_body(const std::string& j1_extra = kLimit, const std::stri
          joint("j2", j2_type, "a", "b", "<axis xyz=\"1 0 0\"/>" + kLimit);
 }
 
-void expect_error(const std::string& text, const UrdfReadOptions& options, int line,
+void expect_urdf_error(const std::string& text, const UrdfReadOptions& options, int line,
                   const std::string& message) {
   try {
     (void)parse_urdf(text, "robot.urdf", options);
@@ -297,39 +297,39 @@ TEST(UrdfFile, EqualLimitsAreReadWithAWarning) {
 }
 
 TEST(UrdfFile, MalformedXmlNamesTheLine) {
-  expect_error("<robot name=\"r\">\n<link name=\"a\">\n</robot>\n", no_packages(), 2,
+  expect_urdf_error("<robot name=\"r\">\n<link name=\"a\">\n</robot>\n", no_packages(), 2,
                "robot.urdf:2: expected well-formed XML, found Error=XML_ERROR_MISMATCHED_ELEMENT "
                "ErrorID=14 (0xe) Line number=2: XMLElement name=link");
 }
 
 TEST(UrdfFile, ARootOtherThanRobotIsAnError) {
-  expect_error("<model name=\"r\"/>\n", no_packages(), 1,
+  expect_urdf_error("<model name=\"r\"/>\n", no_packages(), 1,
                "robot.urdf:1: expected a <robot> root element, found <model>");
 }
 
 TEST(UrdfFile, UrdfdomsOwnErrorsAreReported) {
-  expect_error(robot(two_joint_body("")), no_packages(), 0,
+  expect_urdf_error(robot(two_joint_body("")), no_packages(), 0,
                "robot.urdf:0: expected a URDF urdfdom accepts, found Joint [j1] is of type "
                "REVOLUTE but it does not specify limits");
 }
 
 TEST(UrdfFile, AJointToAMissingLinkIsAnError) {
   const std::string text = robot("<link name=\"base\"/>\n" + joint("j1", "revolute", "base", "ghost", kLimit));
-  expect_error(text, no_packages(), 0,
+  expect_urdf_error(text, no_packages(), 0,
                "robot.urdf:0: expected a URDF urdfdom accepts, found Failed to build tree: child "
                "link [ghost] of joint [j1] not found");
 }
 
 TEST(UrdfFile, FloatingAndPlanarJointsOnTheChainAreErrors) {
   for (const std::string type : {"floating", "planar"}) {
-    expect_error(robot(two_joint_body(kLimit, type)), no_packages(), 6,
+    expect_urdf_error(robot(two_joint_body(kLimit, type)), no_packages(), 6,
                  "robot.urdf:6: expected revolute, continuous, prismatic or fixed joints on the "
                  "chain from 'base' to 'b', found joint 'j2' of type " + type);
   }
 }
 
 TEST(UrdfFile, AZeroAxisIsAnError) {
-  expect_error(robot(two_joint_body("<axis xyz=\"0 0 0\"/>" + kLimit)), no_packages(), 5,
+  expect_urdf_error(robot(two_joint_body("<axis xyz=\"0 0 0\"/>" + kLimit)), no_packages(), 5,
                "robot.urdf:5: expected a nonzero <axis xyz> for joint 'j1', each component 0 or "
                "of magnitude within [1e-300, 1e9], found 0 0 0");
 }
@@ -339,12 +339,12 @@ TEST(UrdfFile, AnAmbiguousTipListsTheLeavesAndAnUnknownTipIsNamed) {
                                  joint("j1", "revolute", "base", "a", kLimit) +
                                  joint("j2", "revolute", "a", "b", kLimit) +
                                  joint("j3", "revolute", "a", "c", kLimit));
-  expect_error(text, no_packages(), 0,
+  expect_urdf_error(text, no_packages(), 0,
                "robot.urdf:0: expected one leaf link reached through movable joints, or a named "
                "tip, found leaves 'b', 'c'");
   UrdfReadOptions options = no_packages();
   options.tip = "d";
-  expect_error(text, options, 0, "robot.urdf:0: expected a tip that is a link of the URDF, found no link 'd'");
+  expect_urdf_error(text, options, 0, "robot.urdf:0: expected a tip that is a link of the URDF, found no link 'd'");
   options.tip = "c";
   const RobotDescription d = parse_urdf(text, "robot.urdf", options).description;
   EXPECT_EQ(joint_names(d), (std::vector<std::string>{"j1", "j3"}));
@@ -355,16 +355,16 @@ TEST(UrdfFile, AnAmbiguousTipListsTheLeavesAndAnUnknownTipIsNamed) {
 
 TEST(UrdfFile, NoMovableJointIsAnError) {
   const std::string text = robot("<link name=\"base\"/><link name=\"a\"/>\n" + joint("f", "fixed", "base", "a"));
-  expect_error(text, no_packages(), 0,
+  expect_urdf_error(text, no_packages(), 0,
                "robot.urdf:0: expected a leaf link reached from the root through a movable joint, found none");
   UrdfReadOptions options = no_packages();
   options.tip = "a";
-  expect_error(text, options, 0,
+  expect_urdf_error(text, options, 0,
                "robot.urdf:0: expected a movable joint between the root 'base' and the tip 'a', found none");
 }
 
 TEST(UrdfFile, AMimicJointOnTheChainIsAnError) {
-  expect_error(robot(two_joint_body(kLimit + "<mimic joint=\"j2\"/>")), no_packages(), 5,
+  expect_urdf_error(robot(two_joint_body(kLimit + "<mimic joint=\"j2\"/>")), no_packages(), 5,
                "robot.urdf:5: expected chain joints without <mimic> (a mimic joint on the chain "
                "is not supported: choose a tip before it), found joint 'j1' mimics 'j2'");
 }
@@ -382,16 +382,16 @@ TEST(UrdfFile, SideJointValuesAreCheckedAgainstLimitsAndNames) {
   UrdfReadOptions options = no_packages();
   options.tip = "tip";
   options.side_joint_values["s1"] = 0.75;
-  expect_error(robot(side_body("")), options, 4,
+  expect_urdf_error(robot(side_body("")), options, 4,
                "robot.urdf:4: expected a value within [0, 0.5] for joint 's1', found 0.75");
   options.side_joint_values = {{"nope", 0.0}};
-  expect_error(robot(side_body("")), options, 0,
+  expect_urdf_error(robot(side_body("")), options, 0,
                "robot.urdf:0: expected a movable side-branch joint to set a value for, found no such joint 'nope'");
   options.side_joint_values = {{"j2", 0.0}};
-  expect_error(robot(side_body("")), options, 6,
+  expect_urdf_error(robot(side_body("")), options, 6,
                "robot.urdf:6: expected a side-branch joint to set a value for, found joint 'j2', which is on the chain");
   options.side_joint_values = {{"s2", 0.1}};
-  expect_error(robot(side_body("<mimic joint=\"s1\"/>")), options, 5,
+  expect_urdf_error(robot(side_body("<mimic joint=\"s1\"/>")), options, 5,
                "robot.urdf:5: expected a value for the master joint 's1' rather than for its mimic, found a value for joint 's2'");
 }
 
@@ -406,13 +406,13 @@ TEST(UrdfFile, MimicSideJointsFollowTheirMasterAndMimicErrorsAreNamed) {
   EXPECT_EQ(d.side_joints[1].value, 1.25);
   EXPECT_GT(d.side_joints[1].value_error, 0.0);
   EXPECT_LT(d.side_joints[1].value_error, 1e-15);
-  expect_error(robot(side_body("<mimic joint=\"j1\"/>")), options, 5,
+  expect_urdf_error(robot(side_body("<mimic joint=\"j1\"/>")), options, 5,
                "robot.urdf:5: expected side-branch joints that mimic side-branch joints (a mimic "
                "of a chain joint is not supported), found joint 's2' mimics chain joint 'j1'");
-  expect_error(robot(side_body("<mimic joint=\"ghost\"/>")), options, 5,
+  expect_urdf_error(robot(side_body("<mimic joint=\"ghost\"/>")), options, 5,
                "robot.urdf:5: expected a movable master joint for <mimic>, found joint 's2' mimics 'ghost'");
   options.side_joint_values["s1"] = 0.5;
-  expect_error(robot(side_body("<mimic joint=\"s1\" multiplier=\"5\" offset=\"0.5\"/>")), options, 5,
+  expect_urdf_error(robot(side_body("<mimic joint=\"s1\" multiplier=\"5\" offset=\"0.5\"/>")), options, 5,
                "robot.urdf:5: expected a value within [0, 2] for joint 's2', found 3");
 }
 
@@ -420,10 +420,10 @@ TEST(UrdfFile, AccelerationsMustNameChainJointsAndBePositive) {
   UrdfReadOptions options = no_packages();
   options.tip = "tip";
   options.accelerations["s1"] = 1.0;
-  expect_error(robot(side_body("")), options, 4,
+  expect_urdf_error(robot(side_body("")), options, 4,
                "robot.urdf:4: expected a chain joint to set an acceleration for, found joint 's1', not on the chain");
   options.accelerations = {{"j1", -1.0}};
-  expect_error(robot(side_body("")), options, 3,
+  expect_urdf_error(robot(side_body("")), options, 3,
                "robot.urdf:3: expected a positive, finite acceleration for joint 'j1', found -1");
 }
 
@@ -432,24 +432,24 @@ TEST(UrdfFile, ALinkWithTwoParentsOrAJointCycleIsAnError) {
                                         joint("j1", "revolute", "base", "a", kLimit) +
                                         joint("j2", "revolute", "base", "b", kLimit) +
                                         joint("j3", "revolute", "a", "b", kLimit));
-  expect_error(two_parents, no_packages(), 5,
+  expect_urdf_error(two_parents, no_packages(), 5,
                "robot.urdf:5: expected each link to be the child of at most one joint, found link "
                "'b' is the child of joint 'j2' and of joint 'j3'");
   const std::string cycle = robot("<link name=\"base\"/><link name=\"a\"/><link name=\"b\"/>\n" +
                                   joint("j1", "revolute", "a", "b", kLimit) +
                                   joint("j2", "revolute", "b", "a", kLimit));
-  expect_error(cycle, no_packages(), 4,
+  expect_urdf_error(cycle, no_packages(), 4,
                "robot.urdf:4: expected joints that form a tree, found a cycle of joints through link 'a'");
 }
 
 TEST(UrdfFile, OutOfRangeNumbersAndBadLimitsAreNamed) {
-  expect_error(robot(two_joint_body("<origin xyz=\"0 0 1e10\"/>" + kLimit)), no_packages(), 5,
+  expect_urdf_error(robot(two_joint_body("<origin xyz=\"0 0 1e10\"/>" + kLimit)), no_packages(), 5,
                "robot.urdf:5: expected <origin xyz> of joint 'j1', each 0 or of magnitude within "
                "[1e-300, 1e9], found 0 0 10000000000");
-  expect_error(robot(two_joint_body("<origin rpy=\"0 0 1e-305\"/>" + kLimit)), no_packages(), 5,
+  expect_urdf_error(robot(two_joint_body("<origin rpy=\"0 0 1e-305\"/>" + kLimit)), no_packages(), 5,
                "robot.urdf:5: expected <origin rpy> of joint 'j1' as three numbers, each 0 or of "
                "magnitude within [1e-300, 1e9], found \"0 0 1e-305\"");
-  expect_error(robot(two_joint_body("<limit lower=\"1\" upper=\"-1\" effort=\"1\" velocity=\"1\"/>")),
+  expect_urdf_error(robot(two_joint_body("<limit lower=\"1\" upper=\"-1\" effort=\"1\" velocity=\"1\"/>")),
                no_packages(), 5,
                "robot.urdf:5: expected limits lower <= upper for joint 'j1', each 0 or of "
                "magnitude within [1e-300, 1e9], found lower 1, upper -1");
@@ -459,7 +459,7 @@ TEST(UrdfFile, CollisionShapesAreCheckedAndNamed) {
   const std::string text = robot(
       "<link name=\"base\"><collision name=\"plate\"><geometry><box size=\"1 0 1\"/></geometry>"
       "</collision></link>\n<link name=\"a\"/>\n" + joint("j1", "revolute", "base", "a", kLimit));
-  expect_error(text, no_packages(), 2,
+  expect_urdf_error(text, no_packages(), 2,
                "robot.urdf:2: expected a positive box size in <collision> 0 of link 'base' (at "
                "most 1e9), found 0");
 }

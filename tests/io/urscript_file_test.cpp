@@ -26,10 +26,10 @@ using grpvss::testing::vector6;
 const std::string kSample = std::string(GRPVSS_SOURCE_DIR) + "/data/programs/ur5e_pick_and_place.script";
 constexpr double kRoughPi = 3.14159265358979;  // as the sample writes it
 
-RobotProgram parse(const std::string& text) { return parse_urscript(text, "t.script"); }
+RobotProgram parse_script(const std::string& text) { return parse_urscript(text, "t.script"); }
 
-void expect_error(const std::string& text, int line, const std::string& message) {
-  expect_input_error([&] { parse(text); }, "t.script", line, "t.script:" + std::to_string(line) + ": " + message);
+void expect_script_error(const std::string& text, int line, const std::string& message) {
+  expect_input_error([&] { parse_script(text); }, "t.script", line, "t.script:" + std::to_string(line) + ": " + message);
 }
 
 /// The pose p[x, y, z, rx, ry, rz] as the sample means it, composed by hand.
@@ -129,7 +129,7 @@ TEST(UrScriptFile, ReadsThePickAndPlaceSample) {
 }
 
 TEST(UrScriptFile, RotationVectorQuarterTurnAboutZMapsXToY) {
-  const RobotProgram program = parse("set_tcp(p[0, 0, 0, 0, 0, 0])\nmovel(p[0.1, 0.2, 0.3, 0, 0, 1.5707963267948966])\n");
+  const RobotProgram program = parse_script("set_tcp(p[0, 0, 0, 0, 0, 0])\nmovel(p[0.1, 0.2, 0.3, 0, 0, 1.5707963267948966])\n");
   const CartesianTarget& target = cartesian(program.motions.at(0).target);
   expect_vector_near(target.R_BT * Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), 1e-15);
   EXPECT_EQ(target.p_BT, Eigen::Vector3d(0.1, 0.2, 0.3));
@@ -149,7 +149,7 @@ TEST(UrScriptFile, TopLevelStatementsControlFlowAndCallsWithArguments) {
       "  end\n"
       "end\n"
       "movec(a, a, mode=1)\n";                    // 12
-  const RobotProgram program = parse(text);
+  const RobotProgram program = parse_script(text);
   EXPECT_EQ(program.name, "");
   ASSERT_EQ(program.motions.size(), 3u);
   EXPECT_EQ(program.motions[0].line, 2);
@@ -172,7 +172,7 @@ TEST(UrScriptFile, TopLevelStatementsControlFlowAndCallsWithArguments) {
 }
 
 TEST(UrScriptFile, GetInverseKinIsThePoseWithTheNearestConfiguration) {
-  const RobotProgram program = parse("set_tcp(p[0, 0, 0, 0, 0, 0])\nmovel(get_inverse_kin(p[0.3, 0, 0.2, 0, 0, 0]))\n");
+  const RobotProgram program = parse_script("set_tcp(p[0, 0, 0, 0, 0, 0])\nmovel(get_inverse_kin(p[0.3, 0, 0.2, 0, 0, 0]))\n");
   const CartesianTarget& target = cartesian(program.motions.at(0).target);
   EXPECT_EQ(target.p_BT, Eigen::Vector3d(0.3, 0, 0.2));
   const auto* near = std::get_if<UrNearestJoints>(&target.configuration);
@@ -181,50 +181,50 @@ TEST(UrScriptFile, GetInverseKinIsThePoseWithTheNearestConfiguration) {
 }
 
 TEST(UrScriptFile, UnknownValuesAreWarnedAndRejectedWhenAMotionNeedsThem) {
-  const RobotProgram program = parse("x = get_actual_tcp_pose()\nmovej([0, 0, 0, 0, 0, 0])\n");
+  const RobotProgram program = parse_script("x = get_actual_tcp_pose()\nmovej([0, 0, 0, 0, 0, 0])\n");
   ASSERT_EQ(program.warnings.size(), 2u);
   expect_warning(program.warnings[0], "t.script", 1,
                  "'x' is not computed: get_actual_tcp_pose(), which the reader does not evaluate");
-  expect_error("x = get_actual_tcp_pose()\nmovel(x)\n", 2,
+  expect_script_error("x = get_actual_tcp_pose()\nmovel(x)\n", 2,
                "expected a joint list or pose the reader can compute for pose of movel, found "
                "get_actual_tcp_pose(), which the reader does not evaluate");
-  expect_error("movel(wp9)\n", 1,
+  expect_script_error("movel(wp9)\n", 1,
                "expected a joint list or pose the reader can compute for pose of movel, found "
                "'wp9', which this program does not assign before line 1");
-  expect_error("movej(get_inverse_kin(p[0.3, 0, 0.2, 0, 0, 0], tcp=p[0, 0, 0.1, 0, 0, 0]))\n", 1,
+  expect_script_error("movej(get_inverse_kin(p[0.3, 0, 0.2, 0, 0, 0], tcp=p[0, 0, 0.1, 0, 0, 0]))\n", 1,
                "expected a joint list or pose the reader can compute for q of movej, found "
                "get_inverse_kin() for a tcp= other than the active one (not read)");
-  expect_error("movel(get_inverse_kin(p[0.3, 0, 0.2, 0, 0, 0], [0, 0, 0]))\n", 1,
+  expect_script_error("movel(get_inverse_kin(p[0.3, 0, 0.2, 0, 0, 0], [0, 0, 0]))\n", 1,
                "expected 6 joint values for qnear of get_inverse_kin, found a list of 3 numbers");
 }
 
 TEST(UrScriptFile, RejectsMalformedProgramsNamingFileLineAndExpectation) {
-  expect_error("def main():\n  movel([0, 0, 0, 0, 0])\nend\n", 2, "expected 6 joint values for pose of movel, found 5");
-  expect_error("\nmovep(p[0, 0, 0.1, 0, 0, 0])\n", 2, "expected a motion the reader reads (movej, movel, movec), found 'movep'");
-  expect_error("def main():\n  movej([0, 0, 0, 0, 0, 0])\n", 3, "expected an 'end' closing the 'def' of line 1, found end of file");
-  expect_error("movej([0, 0, 0, 0, 0, 0], speed=1)\n", 1, "expected a parameter of movej, found 'speed'");
-  expect_error("movel(p[0, 0, 0, 0, 0, 0], r=-0.1)\n", 1,
+  expect_script_error("def main():\n  movel([0, 0, 0, 0, 0])\nend\n", 2, "expected 6 joint values for pose of movel, found 5");
+  expect_script_error("\nmovep(p[0, 0, 0.1, 0, 0, 0])\n", 2, "expected a motion the reader reads (movej, movel, movec), found 'movep'");
+  expect_script_error("def main():\n  movej([0, 0, 0, 0, 0, 0])\n", 3, "expected an 'end' closing the 'def' of line 1, found end of file");
+  expect_script_error("movej([0, 0, 0, 0, 0, 0], speed=1)\n", 1, "expected a parameter of movej, found 'speed'");
+  expect_script_error("movel(p[0, 0, 0, 0, 0, 0], r=-0.1)\n", 1,
                "expected a non-negative number the reader can compute for r of movel, found -0.1");
-  expect_error("movel(p[1, 2, 3, 0, 0, 0], a=)\n", 1, "expected an argument, found ')'");
-  expect_error("movel(p[1, 2, 3])\n", 1, "expected 6 numbers in p[x, y, z, rx, ry, rz], found a list of 3 numbers");
-  expect_error("movel()\n", 1, "expected a value for pose of movel, found none");
-  expect_error("x = 1\nelif x:\n", 2, "expected 'elif' inside an if block, found 'elif' outside one");
-  expect_error("end\n", 1, "expected a statement ('end' closes no open block here), found 'end'");
-  expect_error("# nothing but a comment\n", 2, "expected a URScript program: statements, or a def ... end, found no statement");
-  expect_error("set_tcp([0, 0, 0.1, 0, 0, 0])\n", 1, "expected a pose the reader can compute for set_tcp, found a list of 6 numbers");
-  expect_error("if x > 1\n  movej([0, 0, 0, 0, 0, 0])\nend\n", 1, "expected ':' at the end of the if line, found '1'");
-  expect_error("def f():\n  f()\nend\nf()\n", 2,
+  expect_script_error("movel(p[1, 2, 3, 0, 0, 0], a=)\n", 1, "expected an argument, found ')'");
+  expect_script_error("movel(p[1, 2, 3])\n", 1, "expected 6 numbers in p[x, y, z, rx, ry, rz], found a list of 3 numbers");
+  expect_script_error("movel()\n", 1, "expected a value for pose of movel, found none");
+  expect_script_error("x = 1\nelif x:\n", 2, "expected 'elif' inside an if block, found 'elif' outside one");
+  expect_script_error("end\n", 1, "expected a statement ('end' closes no open block here), found 'end'");
+  expect_script_error("# nothing but a comment\n", 2, "expected a URScript program: statements, or a def ... end, found no statement");
+  expect_script_error("set_tcp([0, 0, 0.1, 0, 0, 0])\n", 1, "expected a pose the reader can compute for set_tcp, found a list of 6 numbers");
+  expect_script_error("if x > 1\n  movej([0, 0, 0, 0, 0, 0])\nend\n", 1, "expected ':' at the end of the if line, found '1'");
+  expect_script_error("def f():\n  f()\nend\nf()\n", 2,
                "expected calls nested at most 32 deep (recursion is not evaluated), found a call of f nested deeper");
-  expect_error("def f():\nend\ndef f():\nend\n", 3, "expected a function name not defined before (line 1), found 'f'");
-  expect_error("x = [1, 2] + 1\n", 1, "expected numbers for '+', found a list of 2 numbers");
-  expect_error("5 = x\n", 1, "expected a statement, found '5'");
+  expect_script_error("def f():\nend\ndef f():\nend\n", 3, "expected a function name not defined before (line 1), found 'f'");
+  expect_script_error("x = [1, 2] + 1\n", 1, "expected numbers for '+', found a list of 2 numbers");
+  expect_script_error("5 = x\n", 1, "expected a statement, found '5'");
   // An index far outside every integer type is reported, not converted (the fuzzer's finding).
-  expect_error("x = [1, 2][7.7e89]\n", 1, "expected an index below 2, found 7.7e+89");
-  expect_error("x = p[0, 0, 0, 0, 0, 0][-1e300]\n", 1, "expected a pose index 0..5, found -1e+300");
+  expect_script_error("x = [1, 2][7.7e89]\n", 1, "expected an index below 2, found 7.7e+89");
+  expect_script_error("x = p[0, 0, 0, 0, 0, 0][-1e300]\n", 1, "expected a pose index 0..5, found -1e+300");
 }
 
 TEST(UrScriptFile, AStatementContinuesInsideBrackets) {
-  const RobotProgram program = parse("movej([0, 0,\n  0, 0, 0, 0],\n  a=1)\nmovej([0, 0, 0, 0, 0, 0.5])\n");
+  const RobotProgram program = parse_script("movej([0, 0,\n  0, 0, 0, 0],\n  a=1)\nmovej([0, 0, 0, 0, 0, 0.5])\n");
   ASSERT_EQ(program.motions.size(), 2u);
   EXPECT_EQ(program.motions[0].line, 1);
   EXPECT_EQ(program.motions[0].speed.joint_acceleration, 1.0);

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "support/angles.hpp"
 #include "support/industrial_robots.hpp"
 #include "support/pose_error.hpp"
 #include "support/sample_robots.hpp"
@@ -15,7 +16,7 @@
 namespace grpvss::kinematics {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using grpvss::test::kPi;
 
 AnalyticIk opw_ik(const KinematicChain& chain) {
   const Recognition<OpwChainModel> r = recognise_opw(chain);

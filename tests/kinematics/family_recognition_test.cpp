@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "support/angles.hpp"
 #include "support/industrial_robots.hpp"
 #include "support/pose_error.hpp"
 #include "support/sample_robots.hpp"
@@ -13,7 +14,7 @@
 namespace grpvss::kinematics {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using grpvss::test::kPi;
 
 void expect_placement(const ModelPlacement& placement, const std::array<double, 6>& sign,
                       const std::array<double, 6>& offset) {

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "grpvss/kinematics/kinematic_chain.hpp"
+#include "support/angles.hpp"
 #include "support/kinematics_reference.hpp"
 #include "support/random_configurations.hpp"
 #include "support/sample_robots.hpp"
@@ -15,7 +16,7 @@
 namespace grpvss::kinematics {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using grpvss::test::kPi;
 
 TEST(ForwardKinematics, Ibm7545HomeMatchesThesis) {
   const RobotModel model = test::make_ibm7545_model();

@@ -13,6 +13,7 @@
 
 #include "grpvss/kinematics/forward_kinematics.hpp"
 #include "grpvss/kinematics/kinematic_chain.hpp"
+#include "support/angles.hpp"
 #include "support/pose_error.hpp"
 #include "support/random_configurations.hpp"
 #include "support/sample_robots.hpp"
@@ -20,8 +21,8 @@
 namespace grpvss::kinematics {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-double deg(double degrees) { return degrees * kPi / 180.0; }
+using grpvss::test::kPi;
+using grpvss::test::deg;
 double to_deg(double radians) { return radians * 180.0 / kPi; }
 
 void expect_joints_deg(const IkSolution& solution, double q1, double q2, double q3, double q4) {
@@ -118,7 +119,7 @@ std::vector<Eigen::VectorXd> all_valid_solutions(const RobotModel& model, const 
   return valid;
 }
 
-void round_trip(const RobotModel& model, std::uint64_t seed, int poses, int& positive_elbows,
+void ibm7545_round_trip(const RobotModel& model, std::uint64_t seed, int poses, int& positive_elbows,
                 int& negative_elbows, bool check_nearest = true) {
   const KinematicChain chain = make_chain(model);
   const auto ik = make_ibm7545_ik(model);
@@ -146,7 +147,7 @@ void round_trip(const RobotModel& model, std::uint64_t seed, int poses, int& pos
 
 TEST(Ibm7545Ik, RoundTripOnThesisLimits) {
   int positive = 0, negative = 0;
-  round_trip(test::make_ibm7545_model(), 21, 400, positive, negative);
+  ibm7545_round_trip(test::make_ibm7545_model(), 21, 400, positive, negative);
   EXPECT_EQ(positive, 400);  // joint 2 is limited to 0..135 deg: only one elbow is valid
 }
 
@@ -161,7 +162,7 @@ TEST(Ibm7545Ik, RoundTripBothElbowsOnWideLimits) {
   model.joints[3].minimum = deg(-400);
   model.joints[3].maximum = deg(400);
   int positive = 0, negative = 0;
-  round_trip(model, 22, 400, positive, negative);
+  ibm7545_round_trip(model, 22, 400, positive, negative);
   EXPECT_GT(positive, 50);
   EXPECT_GT(negative, 50);
 }
@@ -179,7 +180,7 @@ TEST(Ibm7545Ik, RoundTripWithDhOffsets) {
   model.joints[1].maximum = deg(150);
   ASSERT_TRUE(is_ibm7545_structure(model));
   int positive = 0, negative = 0;
-  round_trip(model, 23, 300, positive, negative, /*check_nearest=*/false);
+  ibm7545_round_trip(model, 23, 300, positive, negative, /*check_nearest=*/false);
   EXPECT_GT(positive, 30);
   EXPECT_GT(negative, 30);
 }

@@ -9,6 +9,7 @@
 #include "grpvss/kinematics/forward_kinematics.hpp"
 #include "grpvss/kinematics/ibm7545_ik.hpp"
 #include "grpvss/kinematics/kinematic_chain.hpp"
+#include "support/angles.hpp"
 #include "support/pose_error.hpp"
 #include "support/random_configurations.hpp"
 #include "support/sample_robots.hpp"
@@ -16,8 +17,8 @@
 namespace grpvss::kinematics {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-double deg(double degrees) { return degrees * kPi / 180.0; }
+using grpvss::test::kPi;
+using grpvss::test::deg;
 
 TEST(IkPluginLoader, SolvesThesisTargetsLikeTheClosedForm) {
   const RobotModel model = test::make_ibm7545_model();

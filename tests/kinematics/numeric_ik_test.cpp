@@ -8,6 +8,7 @@
 #include "grpvss/kinematics/forward_kinematics.hpp"
 #include "grpvss/kinematics/ibm7545_ik.hpp"
 #include "grpvss/kinematics/kinematic_chain.hpp"
+#include "support/angles.hpp"
 #include "support/pose_error.hpp"
 #include "support/random_configurations.hpp"
 #include "support/sample_robots.hpp"
@@ -15,12 +16,12 @@
 namespace grpvss::kinematics {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-double deg(double degrees) { return degrees * kPi / 180.0; }
+using grpvss::test::kPi;
+using grpvss::test::deg;
 
 // FK(IK(FK(q))) = FK(q) for random q within limits; q_near alternates between home and a
 // perturbed copy of the true configuration.
-void round_trip(const RobotModel& model, std::uint64_t seed, int poses) {
+void numeric_round_trip(const RobotModel& model, std::uint64_t seed, int poses) {
   const KinematicChain chain = make_chain(model);
   const auto ik = make_numeric_ik(model);
   std::mt19937_64 generator(seed);
@@ -48,9 +49,9 @@ void round_trip(const RobotModel& model, std::uint64_t seed, int poses) {
   EXPECT_EQ(solved, poses);
 }
 
-TEST(NumericIk, RoundTripPuma560) { round_trip(test::make_puma560_model(), 31, 300); }
+TEST(NumericIk, RoundTripPuma560) { numeric_round_trip(test::make_puma560_model(), 31, 300); }
 
-TEST(NumericIk, RoundTripIbm7545) { round_trip(test::make_ibm7545_model(), 32, 300); }
+TEST(NumericIk, RoundTripIbm7545) { numeric_round_trip(test::make_ibm7545_model(), 32, 300); }
 
 TEST(NumericIk, AgreesWithClosedFormOnThesisTargets) {
   const RobotModel model = test::make_ibm7545_model();

@@ -8,12 +8,13 @@
 #include <gtest/gtest.h>
 
 #include "grpvss/kinematics/arm_configuration.hpp"
+#include "support/angles.hpp"
 #include "support/pose_error.hpp"
 
 namespace grpvss::kinematics {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using grpvss::test::kPi;
 
 // ABB IRB 2400/10, metres (Brandstoetter et al. 2014).
 OpwParameters irb2400() { return {0.100, -0.135, 0.0, 0.615, 0.705, 0.755, 0.085}; }

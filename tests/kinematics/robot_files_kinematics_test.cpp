@@ -11,6 +11,7 @@
 #include "grpvss/kinematics/ibm7545_ik.hpp"
 #include "grpvss/kinematics/inverse_kinematics.hpp"
 #include "grpvss/kinematics/kinematic_chain.hpp"
+#include "support/angles.hpp"
 #include "support/pose_error.hpp"
 #include "support/random_configurations.hpp"
 #include "support/sample_robots.hpp"
@@ -18,10 +19,10 @@
 namespace grpvss::kinematics {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-double deg(double degrees) { return degrees * kPi / 180.0; }
+using grpvss::test::kPi;
+using grpvss::test::deg;
 
-RobotModel read(const std::string& relative) {
+RobotModel read_robot_fixture(const std::string& relative) {
   return io::read_robot_file(std::string(GRPVSS_SOURCE_DIR) + "/" + relative);
 }
 
@@ -39,7 +40,7 @@ void expect_same_kinematics(const RobotModel& a, const RobotModel& b) {
 }
 
 TEST(RobotFilesKinematics, Ibm7545FileMatchesInCodeModelAndThesisHome) {
-  const RobotModel model = read("data/ibm7545/robot.txt");
+  const RobotModel model = read_robot_fixture("data/ibm7545/robot.txt");
   expect_same_kinematics(model, test::make_ibm7545_model());
   EXPECT_TRUE(is_ibm7545_structure(model));
   const Eigen::Isometry3d X_WE = end_effector_pose(make_chain(model), Eigen::VectorXd::Zero(4));
@@ -47,7 +48,7 @@ TEST(RobotFilesKinematics, Ibm7545FileMatchesInCodeModelAndThesisHome) {
 }
 
 TEST(RobotFilesKinematics, Ibm7545FileThesisIkNumbers) {
-  const RobotModel model = read("data/ibm7545/robot.txt");
+  const RobotModel model = read_robot_fixture("data/ibm7545/robot.txt");
   const auto ik = make_default_ik(model);
   EXPECT_EQ(ik->name(), "IBM 7545 closed form");
   const IkSolution s1 = ik->solve(test::scara_target(0, 20, 8, deg(-30)), Eigen::VectorXd::Zero(4));
@@ -67,7 +68,7 @@ TEST(RobotFilesKinematics, Ibm7545FileThesisIkNumbers) {
 }
 
 TEST(RobotFilesKinematics, Puma560FileReadsAndRoundTrips) {
-  const RobotModel model = read("data/puma560/robot.txt");
+  const RobotModel model = read_robot_fixture("data/puma560/robot.txt");
   expect_same_kinematics(model, test::make_puma560_model());
   ASSERT_EQ(model.links.size(), 7u);
   for (const Link& link : model.links) {
@@ -92,7 +93,7 @@ TEST(RobotFilesKinematics, Puma560FileReadsAndRoundTrips) {
 
 // Home: arm stretched along x0 at shoulder height, forearm (z3) pointing up to the wrist.
 TEST(RobotFilesKinematics, Puma560HomePose) {
-  const RobotModel model = read("data/puma560/robot.txt");
+  const RobotModel model = read_robot_fixture("data/puma560/robot.txt");
   Workspace ws(model);
   forward_kinematics(make_chain(model), Eigen::VectorXd::Zero(6), ws);
   // Wrist centre = origin of frame 4: (a2 + a3, -d3, d1 + d4)  (z1 = -y0 turns d3 toward -y).

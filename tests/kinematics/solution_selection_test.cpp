@@ -7,12 +7,13 @@
 
 #include <gtest/gtest.h>
 
+#include "support/angles.hpp"
 #include "support/industrial_robots.hpp"
 
 namespace grpvss::kinematics {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using grpvss::test::kPi;
 
 AnalyticIk opw_ik(const KinematicChain& chain) { return AnalyticIk(chain, *recognise_opw(chain).model); }
 AnalyticIk ur_ik(const KinematicChain& chain) { return AnalyticIk(chain, *recognise_ur(chain).model); }

@@ -8,14 +8,15 @@
 #include <gtest/gtest.h>
 
 #include "grpvss/kinematics/arm_configuration.hpp"
+#include "support/angles.hpp"
 #include "support/pose_error.hpp"
 
 namespace grpvss::kinematics {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using grpvss::test::kPi;
 
-UrParameters ur5e() { return {0.1625, -0.425, -0.3922, 0.1333, 0.0997, 0.0996}; }
+UrParameters ur5e_parameters() { return {0.1625, -0.425, -0.3922, 0.1333, 0.0997, 0.0996}; }
 UrParameters ur10e() { return {0.1807, -0.6127, -0.57155, 0.17415, 0.11985, 0.11655}; }
 
 // Standard DH through Eigen's elementary transforms (independent of ur_kinematics.cpp).
@@ -43,20 +44,20 @@ TEST(UrKinematics, ForwardIsUrsDhProduct) {
   std::mt19937_64 generator(3);
   for (int trial = 0; trial < 200; ++trial) {
     const ModelAngles t = random_angles(generator);
-    EXPECT_LE(test::position_error(ur_forward(ur5e(), t), reference_forward(ur5e(), t)), 1e-15);
-    EXPECT_LE(test::rotation_error(ur_forward(ur5e(), t), reference_forward(ur5e(), t)), 1e-15);
+    EXPECT_LE(test::position_error(ur_forward(ur5e_parameters(), t), reference_forward(ur5e_parameters(), t)), 1e-15);
+    EXPECT_LE(test::rotation_error(ur_forward(ur5e_parameters(), t), reference_forward(ur5e_parameters(), t)), 1e-15);
   }
 }
 
 TEST(UrKinematics, ForwardAtZeroIsTheStretchedArm) {
   // Flange at (a2 + a3, -d4 - d6, d1 - d5), tool z along -y.
-  const Eigen::Isometry3d X = ur_forward(ur5e(), {0, 0, 0, 0, 0, 0});
+  const Eigen::Isometry3d X = ur_forward(ur5e_parameters(), {0, 0, 0, 0, 0, 0});
   EXPECT_NEAR((X.translation() - Eigen::Vector3d(-0.8172, -0.2329, 0.0628)).norm(), 0.0, 1e-15);
   EXPECT_NEAR((X.linear().col(2) - Eigen::Vector3d(0, -1, 0)).norm(), 0.0, 1e-15);
 }
 
 TEST(UrKinematics, ArmSidesAreTheWristPointAndElbowHeights) {
-  const UrParameters p = ur5e();
+  const UrParameters p = ur5e_parameters();
   std::mt19937_64 generator(4);
   for (int trial = 0; trial < 100; ++trial) {
     ModelAngles t = random_angles(generator);
@@ -99,12 +100,12 @@ void expect_round_trip(const UrParameters& p, std::uint64_t seed) {
 }
 
 TEST(UrKinematics, EveryBranchReachesThePoseAndOneIsTheOriginal) {
-  expect_round_trip(ur5e(), 21);
+  expect_round_trip(ur5e_parameters(), 21);
   expect_round_trip(ur10e(), 22);
 }
 
 TEST(UrKinematics, WristSingularPoseTakesTheGivenTheta6) {
-  const UrParameters p = ur5e();
+  const UrParameters p = ur5e_parameters();
   const ModelAngles t = {0.2, -1.0, 1.1, 0.4, 0.0, 0.7};
   const Eigen::Isometry3d X = ur_forward(p, t);
   bool found = false;
@@ -122,7 +123,7 @@ TEST(UrKinematics, WristSingularPoseTakesTheGivenTheta6) {
 
 TEST(UrKinematics, ShoulderSingularPoseHasBothShouldersEqual) {
   // P5 exactly d4 from axis 1 (P5 . x1 = 0): the two theta_1 coincide.
-  const UrParameters p = ur5e();
+  const UrParameters p = ur5e_parameters();
   Eigen::Isometry3d X = Eigen::Isometry3d::Identity();
   X.linear() = Eigen::AngleAxisd(kPi / 2, Eigen::Vector3d::UnitY()).toRotationMatrix();
   X.translation() = Eigen::Vector3d(0.0, -p.d4, 0.45) + p.d6 * X.linear().col(2);
@@ -144,11 +145,11 @@ TEST(UrKinematics, ShoulderSingularPoseHasBothShouldersEqual) {
 TEST(UrKinematics, UnreachablePosesHaveNoBranch) {
   Eigen::Isometry3d far = Eigen::Isometry3d::Identity();
   far.translation() = Eigen::Vector3d(2.0, 0.0, 0.5);
-  for (const ModelBranch& branch : ur_inverse(ur5e(), far)) EXPECT_FALSE(branch.valid);
+  for (const ModelBranch& branch : ur_inverse(ur5e_parameters(), far)) EXPECT_FALSE(branch.valid);
   // P5 nearer axis 1 than d4: no theta_1 at all.
   Eigen::Isometry3d inside = Eigen::Isometry3d::Identity();
-  inside.translation() = Eigen::Vector3d(0.05, 0.0, 0.5 + ur5e().d6);
-  for (const ModelBranch& branch : ur_inverse(ur5e(), inside)) EXPECT_FALSE(branch.valid);
+  inside.translation() = Eigen::Vector3d(0.05, 0.0, 0.5 + ur5e_parameters().d6);
+  for (const ModelBranch& branch : ur_inverse(ur5e_parameters(), inside)) EXPECT_FALSE(branch.valid);
 }
 
 }  // namespace

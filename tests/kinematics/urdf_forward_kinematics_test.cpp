@@ -15,6 +15,7 @@
 #include "grpvss/kinematics/fk_error_bound.hpp"
 #include "grpvss/kinematics/forward_kinematics.hpp"
 #include "grpvss/kinematics/urdf_chain.hpp"
+#include "support/data_paths.hpp"
 #include "support/urdf_reference.hpp"
 
 namespace grpvss::kinematics {
@@ -22,7 +23,7 @@ namespace {
 
 using Float50 = boost::multiprecision::cpp_bin_float_50;
 
-const std::string kRobots = std::string(GRPVSS_SOURCE_DIR) + "/../shared/robots/";
+using grpvss::test::kSharedRobots;
 
 struct UrdfCase {
   std::string urdf;
@@ -30,13 +31,13 @@ struct UrdfCase {
   std::string tip;
 };
 
-UrdfCase ur5e() { return {kRobots + "ur5e/ur5e.urdf", kRobots + "ur5e", ""}; }
-UrdfCase panda() { return {kRobots + "franka_panda/panda.urdf", kRobots + "franka_panda", "panda_hand_tcp"}; }
+UrdfCase ur5e_urdf_case() { return {kSharedRobots + "ur5e/ur5e.urdf", kSharedRobots + "ur5e", ""}; }
+UrdfCase panda() { return {kSharedRobots + "franka_panda/panda.urdf", kSharedRobots + "franka_panda", "panda_hand_tcp"}; }
 UrdfCase panda_arm() {
-  return {kRobots + "franka_panda/panda_arm_only.urdf", kRobots + "franka_panda", "panda_link8"};
+  return {kSharedRobots + "franka_panda/panda_arm_only.urdf", kSharedRobots + "franka_panda", "panda_link8"};
 }
 
-RobotDescription read(const UrdfCase& robot, double finger) {
+RobotDescription read_urdf_case(const UrdfCase& robot, double finger) {
   io::UrdfReadOptions options;
   options.tip = robot.tip;
   options.package_paths = {robot.package_directory};
@@ -131,7 +132,7 @@ Eigen::VectorXd random_q(const RobotDescription& d, std::mt19937_64& generator) 
 // random configurations.
 double worst_long_double_difference(const UrdfCase& robot, double finger, int configurations,
                                     std::uint64_t seed, std::size_t& vertices_checked) {
-  const RobotDescription d = read(robot, finger);
+  const RobotDescription d = read_urdf_case(robot, finger);
   const test::ReferenceUrdf urdf = test::read_reference_urdf(robot.urdf);
   const KinematicChain chain = make_chain(d);
   const PlacedRobot placed = placed_robot(d);
@@ -164,7 +165,7 @@ double worst_long_double_difference(const UrdfCase& robot, double finger, int co
 
 TEST(UrdfForwardKinematics, Ur5eEveryCollisionVertexWithin1e12OfTheUrdfRulesAt1000Configurations) {
   std::size_t checked = 0;
-  const double worst = worst_long_double_difference(ur5e(), 0.0, 1000, 11, checked);
+  const double worst = worst_long_double_difference(ur5e_urdf_case(), 0.0, 1000, 11, checked);
   std::printf("UR5e: %zu vertex placements, worst difference %.3e m\n", checked, worst);
   EXPECT_EQ(checked, 1000u * (212 + 702 + 998 + 534 + 597 + 677 + 73));
   EXPECT_LE(worst, 1e-12);
@@ -195,7 +196,7 @@ TEST(UrdfForwardKinematics, PandaArmOnlyEveryCollisionVertexWithin1e12At1000Conf
 // world vertex is within forward_kinematics_error_bound(chain, c) + its hull's link-frame error
 // of the exact real-number robot of the URDF's decimals (50-digit reference).
 void check_certified_bound(const UrdfCase& robot, double finger, int configurations, std::uint64_t seed) {
-  const RobotDescription d = read(robot, finger);
+  const RobotDescription d = read_urdf_case(robot, finger);
   const test::ReferenceUrdf urdf = test::read_reference_urdf(robot.urdf);
   const KinematicChain chain = make_chain(d);
   const PlacedRobot placed = placed_robot(d);
@@ -236,7 +237,7 @@ void check_certified_bound(const UrdfCase& robot, double finger, int configurati
 }
 
 TEST(UrdfForwardKinematics, WorldVerticesAreWithinTheCertifiedBoundOfThe50DigitUrdfRobot) {
-  check_certified_bound(ur5e(), 0.0, 25, 41);
+  check_certified_bound(ur5e_urdf_case(), 0.0, 25, 41);
   check_certified_bound(panda(), 0.03, 25, 42);
   check_certified_bound(panda_arm(), 0.0, 25, 43);
 }

@@ -11,6 +11,7 @@
 
 #include "grpvss/io/urdf_file.hpp"
 #include "grpvss/kinematics/urdf_chain.hpp"
+#include "support/data_paths.hpp"
 #include "support/urdf_reference.hpp"
 
 namespace grpvss::kinematics {
@@ -20,7 +21,7 @@ using Float50 = boost::multiprecision::cpp_bin_float_50;
 using Matrix3F = Eigen::Matrix<Float50, 3, 3>;
 using Vector3F = Eigen::Matrix<Float50, 3, 1>;
 
-const std::string kRobots = std::string(GRPVSS_SOURCE_DIR) + "/../shared/robots/";
+using grpvss::test::kSharedRobots;
 
 // A random decimal such as "-2.71828182845904523" (integer part < limit, 1..20 fraction digits).
 std::string random_decimal(std::mt19937_64& generator, int limit, bool allow_zero = true) {
@@ -292,8 +293,8 @@ TEST(LemmaUrdfFrames, CollisionPointsInLinkFramesAreWithinTheirBounds) {
   struct Case {
     std::string urdf, packages, tip;
   };
-  for (const Case& c : {Case{kRobots + "ur5e/ur5e.urdf", kRobots + "ur5e", ""},
-                        Case{kRobots + "franka_panda/panda.urdf", kRobots + "franka_panda", "panda_hand_tcp"}}) {
+  for (const Case& c : {Case{kSharedRobots + "ur5e/ur5e.urdf", kSharedRobots + "ur5e", ""},
+                        Case{kSharedRobots + "franka_panda/panda.urdf", kSharedRobots + "franka_panda", "panda_hand_tcp"}}) {
     io::UrdfReadOptions options;
     options.tip = c.tip;
     options.package_paths = {c.packages};

@@ -8,13 +8,14 @@
 #include <gtest/gtest.h>
 
 #include "grpvss/kinematics/forward_kinematics.hpp"
+#include "support/angles.hpp"
 #include "support/industrial_robots.hpp"
 
 namespace grpvss::kinematics {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-double deg(double d) { return d * kPi / 180; }
+using grpvss::test::kPi;
+using grpvss::test::deg;
 
 Eigen::VectorXd q_deg(double a1, double a2, double a3, double a4, double a5, double a6) {
   Eigen::VectorXd q(6);

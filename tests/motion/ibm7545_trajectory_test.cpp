@@ -10,15 +10,17 @@
 #include "grpvss/motion/kinematics_adapter.hpp"
 #include "grpvss/motion/trajectory.hpp"
 #include "grpvss/report/trajectory_report.hpp"
+#include "support/data_paths.hpp"
+
 
 namespace grpvss::motion {
 namespace {
 
-const std::string kData = std::string(GRPVSS_SOURCE_DIR) + "/data/ibm7545/";
+using grpvss::test::kIbm7545Data;
 
 struct Sample {
-  RobotModel robot = io::read_robot_file(kData + "robot.txt");
-  PathProgram program = io::read_path_file(kData + "path-output-sample.txt", robot);
+  RobotModel robot = io::read_robot_file(kIbm7545Data + "robot.txt");
+  PathProgram program = io::read_path_file(kIbm7545Data + "path-output-sample.txt", robot);
   Trajectory plan(PtpTiming timing) const {
     MotionModel options;
     options.timing = timing;

@@ -19,15 +19,17 @@
 #include "grpvss/kinematics/vendor_configuration.hpp"
 #include "grpvss/motion/program_path.hpp"
 #include "grpvss/motion/kinematics_access.hpp"
+#include "support/data_paths.hpp"
+
 
 namespace grpvss::motion {
 namespace {
 
-const std::string kSource = GRPVSS_SOURCE_DIR;
+using grpvss::test::kSourceDir;
 
 cell::ModelInputs load(const std::string& cell_file) {
   cell::ModelSources sources;
-  sources.cell_file = kSource + cell_file;
+  sources.cell_file = kSourceDir + cell_file;
   return cell::load_model_inputs(sources);
 }
 

@@ -1,14 +1,16 @@
 #include "grpvss/report/file_units.hpp"
+#include "support/angles.hpp"
 
 #include <cmath>
 #include <stdexcept>
 
 #include <gtest/gtest.h>
 
+
 namespace grpvss::report {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using grpvss::test::kPi;
 
 TEST(FileUnits, DegreesOfKnownAngles) {
   EXPECT_EQ(degrees(0.0), 0.0);

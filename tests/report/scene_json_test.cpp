@@ -10,6 +10,7 @@
 
 #include "grpvss/io/environment_file.hpp"
 #include "grpvss/io/robot_file.hpp"
+#include "support/data_paths.hpp"
 #include "support/kinematics_reference.hpp"
 
 namespace grpvss::report {
@@ -17,11 +18,11 @@ namespace {
 
 using nlohmann::json;
 
-const std::string kData = std::string(GRPVSS_SOURCE_DIR) + "/data/ibm7545/";
+using grpvss::test::kIbm7545Data;
 
 struct Ibm7545 {
-  RobotModel robot = io::read_robot_file(kData + "robot.txt");
-  Environment environment = io::read_environment_file(kData + "environment.txt");
+  RobotModel robot = io::read_robot_file(kIbm7545Data + "robot.txt");
+  Environment environment = io::read_environment_file(kIbm7545Data + "environment.txt");
 };
 
 /// Three steps at random joint values (fixed seed) plus the home configuration as start.

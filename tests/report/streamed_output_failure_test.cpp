@@ -21,14 +21,13 @@
 #include "grpvss/report/json_report_stream.hpp"
 #include "grpvss/report/spill_file.hpp"
 #include "grpvss/report/thesis_output.hpp"
+#include "support/data_paths.hpp"
 #include "support/text_files.hpp"
 
 namespace grpvss::report {
 namespace {
 
-std::string data(const std::string& name) {
-  return std::string(GRPVSS_SOURCE_DIR) + "/data/ibm7545/" + name;
-}
+using grpvss::test::ibm7545_file;
 
 /// Throws at the `limit`-th step, like a disk that fills up or a bug half-way.
 class FailingObserver : public certify::VerificationObserver {
@@ -45,9 +44,9 @@ class FailingObserver : public certify::VerificationObserver {
 class StreamFailure : public ::testing::Test {
  protected:
   void SetUp() override {
-    robot_ = io::read_robot_file(data("robot.txt"));
-    environment_ = io::read_environment_file(data("environment.txt"));
-    program_ = io::read_path_file(data("path.txt"), robot_);
+    robot_ = io::read_robot_file(ibm7545_file("robot.txt"));
+    environment_ = io::read_environment_file(ibm7545_file("environment.txt"));
+    program_ = io::read_path_file(ibm7545_file("path.txt"), robot_);
     kinematics_ = motion::make_kinematics_access(
         robot_, motion::select_ik({}, robot_, "robot.txt"));
     certify::SetupRequest request;

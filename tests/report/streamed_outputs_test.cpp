@@ -21,14 +21,13 @@
 #include "grpvss/report/json_report_stream.hpp"
 #include "grpvss/report/scene_json.hpp"
 #include "grpvss/report/thesis_output.hpp"
+#include "support/data_paths.hpp"
 #include "support/text_files.hpp"
 
 namespace grpvss::report {
 namespace {
 
-std::string data(const std::string& name) {
-  return std::string(GRPVSS_SOURCE_DIR) + "/data/ibm7545/" + name;
-}
+using grpvss::test::ibm7545_file;
 
 const nlohmann::json kInputs = {{"robot", "r"}, {"environment", "e"}, {"path", "p"}, {"ik", "ik"}};
 const InputDigests kDigests = {{"robot.txt", "aa"}, {"environment.txt", "bb"}, {"path.txt", "cc"}};
@@ -44,9 +43,9 @@ struct Case {
 class StreamedOutputs : public ::testing::TestWithParam<Case> {
  protected:
   void SetUp() override {
-    robot_ = io::read_robot_file(data("robot.txt"));
-    environment_ = io::read_environment_file(data("environment.txt"));
-    program_ = io::read_path_file(data(GetParam().path_file), robot_);
+    robot_ = io::read_robot_file(ibm7545_file("robot.txt"));
+    environment_ = io::read_environment_file(ibm7545_file("environment.txt"));
+    program_ = io::read_path_file(ibm7545_file(GetParam().path_file), robot_);
     kinematics_ = motion::make_kinematics_access(
         robot_, motion::select_ik({}, robot_, "robot.txt"));
     certify::SetupRequest request;

@@ -8,12 +8,10 @@
 #include <stdexcept>
 
 #include "grpvss/kinematics/forward_kinematics.hpp"
+#include "support/angles.hpp"
 
 namespace grpvss::test {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-double deg(double degrees) { return degrees * kPi / 180.0; }
 
 // One <joint> element of the URDF: only what a serial chain needs.
 struct UrdfJoint {

@@ -2,11 +2,10 @@
 
 #include <cmath>
 
+#include "support/angles.hpp"
+
 namespace grpvss::test {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-double deg(double degrees) { return degrees * kPi / 180.0; }
 
 Joint revolute(double alpha_deg, double d, double a, double min_deg, double max_deg,
                double acc_deg, double dec_deg) {

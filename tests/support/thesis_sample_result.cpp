@@ -3,11 +3,11 @@
 #include <cmath>
 #include <vector>
 
+#include "support/angles.hpp"
+
 namespace grpvss::test {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // As the readers convert (io/units.hpp): degrees * (pi/180).
 double radians(double degrees) { return degrees * (kPi / 180.0); }
