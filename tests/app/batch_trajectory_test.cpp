@@ -20,6 +20,7 @@
 
 namespace {
 
+using grpvss::test::kIbm7545Data;
 using grpvss::test::kUr5ePostNoSelfCell;
 using grpvss::test::kTestTrajectories;
 
@@ -115,7 +116,7 @@ TEST_F(BatchTrajectory, ATrajectoryTheRobotCannotRunIsThatJobsErrorWithVerifysMe
 }
 
 TEST_F(BatchTrajectory, AThesisRobotJobWithATrajectoryIsRefusedAtTheTrajectorysJointNames) {
-  const std::string data = std::string(GRPVSS_SOURCE_DIR) + "/data/ibm7545/";
+  const std::string& data = kIbm7545Data;
   std::ofstream(directory_ + "/m.jsonl")
       << R"({"robot":")" << data << R"(robot.txt","env":")" << data
       << R"(environment.txt","tolerance":0.5,"trajectory":")" << kTestTrajectories

@@ -19,6 +19,7 @@
 
 namespace {
 
+using grpvss::test::kIbm7545Data;
 using grpvss::test::kTestCells;
 
 using grpvss::test::CliRun;
@@ -62,7 +63,7 @@ TEST_F(CellCli, AUr5ePathThroughThePostIsACollisionOfTheForearmWithThePost) {
 
 TEST_F(CellCli, ACellWithThesisRobotFilesIsRefusedBeforeAnyWork) {
   const CliRun verify = run_cli(dir(), "verify --cell " + kTestCells + "ur5e-post.yaml --robot " +
-                                           GRPVSS_SOURCE_DIR "/data/ibm7545/robot.txt --path " +
+                                           kIbm7545Data + "robot.txt --path " +
                                            kTestCells + "ur5e-clear.txt");
   EXPECT_EQ(verify.exit_code, grpvss::app::kExitInputError) << verify.out << verify.err;
   EXPECT_NE(verify.err.find("either --cell or --robot with --env, not both"), std::string::npos)
@@ -70,7 +71,7 @@ TEST_F(CellCli, ACellWithThesisRobotFilesIsRefusedBeforeAnyWork) {
 }
 
 TEST_F(CellCli, WithoutACellOrAToleranceTheRunIsRefused) {
-  const std::string data = GRPVSS_SOURCE_DIR "/data/ibm7545/";
+  const std::string& data = kIbm7545Data;
   const CliRun verify = run_cli(dir(), "verify --robot " + data + "robot.txt --env " + data +
                                            "environment.txt --path " + data + "path.txt");
   EXPECT_EQ(verify.exit_code, grpvss::app::kExitInputError) << verify.out << verify.err;

@@ -19,14 +19,15 @@
 #include "grpvss/io/path_file.hpp"
 #include "grpvss/io/robot_file.hpp"
 #include "grpvss/motion/kinematics_adapter.hpp"
+#include "support/data_paths.hpp"
 
 namespace {
 
-const std::string kData = std::string(GRPVSS_SOURCE_DIR) + "/data/ibm7545/";
+using grpvss::test::kIbm7545Data;
 
 // The sample environment's two obstacles and `far` unit boxes (2 in. tall) on a 5 in. grid.
 std::string environment_text(int far) {
-  const grpvss::Environment sample = grpvss::io::read_environment_file(kData + "environment.txt");
+  const grpvss::Environment sample = grpvss::io::read_environment_file(kIbm7545Data + "environment.txt");
   std::string text = "90.\n1.\n" + std::to_string(far + 2) + "\n";
   for (const grpvss::HullPoints& hull : sample.obstacles) {
     text += "HULL " + std::to_string(hull.points.size()) + "\n";
@@ -48,7 +49,7 @@ std::string environment_text(int far) {
 constexpr const char* kSwingPath = "2\n1\n2.,3.\n0.,3.\n0.,3.\n0.,3.\n1\n0.,3.\n0.,3.\n0.,3.\n0.,3.\n";
 
 void BM_VerifyAmongFarObstacles(benchmark::State& state) {
-  const grpvss::RobotModel robot = grpvss::io::read_robot_file(kData + "robot.txt");
+  const grpvss::RobotModel robot = grpvss::io::read_robot_file(kIbm7545Data + "robot.txt");
   const std::string text = environment_text(static_cast<int>(state.range(0)));
   const grpvss::PathProgram program = grpvss::io::parse_path_file(kSwingPath, "swing.txt", robot);
   const auto kinematics = grpvss::motion::make_kinematics_access(

@@ -7,15 +7,16 @@
 #include "grpvss/io/robot_file.hpp"
 #include "grpvss/motion/kinematics_adapter.hpp"
 #include "grpvss/motion/trajectory.hpp"
+#include "support/data_paths.hpp"
 
 namespace {
 
-const std::string kData = std::string(GRPVSS_SOURCE_DIR) + "/data/ibm7545/";
+using grpvss::test::kIbm7545Data;
 
 void BM_PlanOutputSamplePath(benchmark::State& state) {
-  const grpvss::RobotModel robot = grpvss::io::read_robot_file(kData + "robot.txt");
+  const grpvss::RobotModel robot = grpvss::io::read_robot_file(kIbm7545Data + "robot.txt");
   const grpvss::PathProgram program =
-      grpvss::io::read_path_file(kData + "path-output-sample.txt", robot);
+      grpvss::io::read_path_file(kIbm7545Data + "path-output-sample.txt", robot);
   const auto access = grpvss::motion::make_kinematics_access(
       robot, grpvss::motion::select_ik({}, robot, "robot.txt"));
   grpvss::motion::MotionModel options;

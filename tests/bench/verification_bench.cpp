@@ -31,12 +31,13 @@
 #include "grpvss/io/robot_file.hpp"
 #include "grpvss/motion/kinematics_adapter.hpp"
 #include "grpvss/motion/trajectory.hpp"
+#include "support/data_paths.hpp"
 
 namespace {
 
 using grpvss::certify::ResolutionMode;
 
-const std::string kData = std::string(GRPVSS_SOURCE_DIR) + "/data/ibm7545/";
+using grpvss::test::kIbm7545Data;
 constexpr double kTolerance = 0.5;
 
 struct Operation {
@@ -54,8 +55,8 @@ grpvss::motion::KinematicsAccess ibm_access(const grpvss::RobotModel& robot) {
 const Operation& ptp_operation() {
   static const Operation operation = [] {
     Operation op;
-    op.robot = grpvss::io::read_robot_file(kData + "robot.txt");
-    op.environment = grpvss::io::read_environment_file(kData + "bench-environment.txt");
+    op.robot = grpvss::io::read_robot_file(kIbm7545Data + "robot.txt");
+    op.environment = grpvss::io::read_environment_file(kIbm7545Data + "bench-environment.txt");
     op.program = grpvss::io::parse_path_file("1\n1\n50.,3.\n50.,3.\n4.,0.3\n50.,3.\n",
                                              "bench-ptp.txt", op.robot);
     op.kinematics = ibm_access(op.robot);
@@ -67,8 +68,8 @@ const Operation& ptp_operation() {
 const Operation& cp_operation() {
   static const Operation operation = [] {
     Operation op;
-    op.robot = grpvss::io::read_robot_file(kData + "robot.txt");
-    op.environment = grpvss::io::read_environment_file(kData + "bench-environment.txt");
+    op.robot = grpvss::io::read_robot_file(kIbm7545Data + "robot.txt");
+    op.environment = grpvss::io::read_environment_file(kIbm7545Data + "bench-environment.txt");
     // The line starts where the output sample's PTP(WCS) segment ends.
     const grpvss::PathProgram approach = grpvss::io::parse_path_file(
         "1\n2\n0.,20.,8.,0.,0.,1.,141.\n3.\n3.\n0.3\n3.\n", "bench-approach.txt", op.robot);
@@ -138,7 +139,7 @@ void BM_VerifyPtpOperationPostBelowThePath(benchmark::State& state) {
   static const std::string files[] = {"bench-environment-near-miss.txt",
                                       "bench-environment-within-tolerance.txt"};
   Operation op = ptp_operation();
-  op.environment = grpvss::io::read_environment_file(kData + files[state.range(0)]);
+  op.environment = grpvss::io::read_environment_file(kIbm7545Data + files[state.range(0)]);
   measure(state, op, ResolutionMode::kCertified);
 }
 BENCHMARK(BM_VerifyPtpOperationPostBelowThePath)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
@@ -159,7 +160,7 @@ BENCHMARK(BM_VerifyCpOperation)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 // 1: thesis.
 void BM_VerifyCpOperationThroughAPost(benchmark::State& state) {
   Operation op = cp_operation();
-  op.environment = grpvss::io::read_environment_file(kData + "bench-environment-cp-line.txt");
+  op.environment = grpvss::io::read_environment_file(kIbm7545Data + "bench-environment-cp-line.txt");
   measure(state, op, mode_of(state));
 }
 BENCHMARK(BM_VerifyCpOperationThroughAPost)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
@@ -270,7 +271,7 @@ BENCHMARK(BM_ProbeOperationSteps)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMicr
 void BM_InterferencePointsOfOperation(benchmark::State& state) {
   Operation op = state.range(0) == 1 ? cp_operation() : ptp_operation();
   if (state.range(0) == 1) {
-    op.environment = grpvss::io::read_environment_file(kData + "bench-environment-cp-line.txt");
+    op.environment = grpvss::io::read_environment_file(kIbm7545Data + "bench-environment-cp-line.txt");
   }
   const grpvss::certify::RobotCell cell(
       op.robot, op.environment,

@@ -13,9 +13,12 @@
 #include "grpvss/io/path_file.hpp"
 #include "grpvss/io/robot_file.hpp"
 #include "grpvss/motion/kinematics_adapter.hpp"
+#include "support/data_paths.hpp"
 
 namespace grpvss::certify {
 namespace {
+
+using grpvss::test::ibm7545_file;
 
 StepRecord step_with(int index, int segment, double time, std::vector<PairContact> contacts) {
   StepRecord step;
@@ -79,10 +82,6 @@ TEST(InterferenceEpisodeTracker, AStartInContactOpensAnEpisodeAtStepZero) {
   EXPECT_EQ(tracker.episodes()[0].last_collision_step, 0);
 }
 
-std::string data(const std::string& name) {
-  return std::string(GRPVSS_SOURCE_DIR) + "/data/ibm7545/" + name;
-}
-
 // Every step's contacts agree with its flags and its points, and every episode is exactly a
 // maximal run of steps carrying its pair.
 void expect_consistent(const VerificationResult& result) {
@@ -121,8 +120,8 @@ class Ibm7545Episodes : public ::testing::Test {
  protected:
   VerificationRun run(const std::string& environment_file, const PathProgram& program,
                       ClearClaim claim = ClearClaim::kMotion) {
-    robot_ = io::read_robot_file(data("robot.txt"));
-    environment_ = io::read_environment_file(data(environment_file));
+    robot_ = io::read_robot_file(ibm7545_file("robot.txt"));
+    environment_ = io::read_environment_file(ibm7545_file(environment_file));
     program_ = program;
     kinematics_ =
         motion::make_kinematics_access(robot_, motion::select_ik({}, robot_, "robot.txt"));
@@ -139,7 +138,7 @@ class Ibm7545Episodes : public ::testing::Test {
 
 // The Table 3 PTP operation crosses the post (obstacle 0) with the quill (link 4 hull 0).
 TEST_F(Ibm7545Episodes, TheTable3PtpOperationHasOneEpisodeOfTheQuillInThePost) {
-  const RobotModel robot = io::read_robot_file(data("robot.txt"));
+  const RobotModel robot = io::read_robot_file(ibm7545_file("robot.txt"));
   const VerificationRun ptp =
       run("bench-environment.txt",
           io::parse_path_file("1\n1\n50.,3.\n50.,3.\n4.,0.3\n50.,3.\n", "ptp.txt", robot),
@@ -165,8 +164,8 @@ TEST_F(Ibm7545Episodes, TheTable3PtpOperationHasOneEpisodeOfTheQuillInThePost) {
 // The thesis's sample path: link 3's two hulls hit obstacle 0 in segment 1, the quill only
 // comes within the tolerance; in both modes the episodes match the steps.
 TEST_F(Ibm7545Episodes, TheSamplePathsEpisodesMatchItsStepsInBothModes) {
-  const RobotModel robot = io::read_robot_file(data("robot.txt"));
-  const PathProgram program = io::read_path_file(data("path.txt"), robot);
+  const RobotModel robot = io::read_robot_file(ibm7545_file("robot.txt"));
+  const PathProgram program = io::read_path_file(ibm7545_file("path.txt"), robot);
   const VerificationRun certified = run("environment.txt", program);
   expect_consistent(certified.result);
   std::set<std::tuple<int, int, int>> colliding;

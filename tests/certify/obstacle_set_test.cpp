@@ -14,14 +14,13 @@
 #include "grpvss/certify/robot_cell.hpp"
 #include "grpvss/io/environment_file.hpp"
 #include "grpvss/io/robot_file.hpp"
+#include "support/data_paths.hpp"
 #include "support/random_configurations.hpp"
 
 namespace grpvss::certify {
 namespace {
 
-std::string data(const std::string& name) {
-  return std::string(GRPVSS_SOURCE_DIR) + "/data/ibm7545/" + name;
-}
+using grpvss::test::ibm7545_file;
 
 // A unit box at (x, y, 0) with a point inside it (not a vertex of its hull).
 HullPoints box_with_inner_point(double x, double y) {
@@ -36,7 +35,7 @@ HullPoints box_with_inner_point(double x, double y) {
 // The sample cell's two obstacles and `far` boxes 300 to 800 inches away, as the resource
 // test's many-obstacle environment.
 Environment sample_with_far_boxes(int far) {
-  Environment environment = io::read_environment_file(data("environment.txt"));
+  Environment environment = io::read_environment_file(ibm7545_file("environment.txt"));
   for (int i = 0; i < far; ++i) {
     environment.obstacles.push_back(box_with_inner_point(300 + 5 * (i % 100), -250 + 5 * (i / 100)));
   }
@@ -85,7 +84,7 @@ TEST(ObstacleSet, ThreadsSharingTheSetSeeOneBuild) {
 }
 
 TEST(ObstacleSet, ProbesAmongFarObstaclesBuildOnlyTheNearOnes) {
-  const RobotModel robot = io::read_robot_file(data("robot.txt"));
+  const RobotModel robot = io::read_robot_file(ibm7545_file("robot.txt"));
   const Environment environment = sample_with_far_boxes(2000);
   CellSettings settings;
   settings.tolerance = 0.5;

@@ -10,10 +10,11 @@
 #include <gtest/gtest.h>
 
 #include "grpvss/model/robot_program.hpp"
+#include "support/angles.hpp"
 
 namespace grpvss::testing {
 
-inline constexpr double kPi = 3.14159265358979323846;
+using grpvss::test::kPi;
 inline constexpr double kDegree = kPi / 180.0;
 
 /// KUKA's A, B, C written out: R = Rz(A) Ry(B) Rx(C), multiplied by hand.

@@ -5,12 +5,9 @@
 #include "grpvss/io/robot_file.hpp"
 #include "grpvss/motion/kinematics_adapter.hpp"
 
+#include "support/data_paths.hpp"
 namespace grpvss::test {
 namespace {
-
-std::string data(const std::string& name) {
-  return std::string(GRPVSS_SOURCE_DIR) + "/data/ibm7545/" + name;
-}
 
 Ibm7545Run run(Ibm7545Run inputs, certify::ClearClaim claim) {
   inputs.kinematics = motion::make_kinematics_access(
@@ -29,8 +26,8 @@ Ibm7545Run run(Ibm7545Run inputs, certify::ClearClaim claim) {
 Ibm7545Run verify_ibm7545(const std::string& environment_file, const std::string& path_text,
                           certify::ClearClaim claim) {
   Ibm7545Run inputs;
-  inputs.robot = io::read_robot_file(data("robot.txt"));
-  inputs.environment = io::read_environment_file(data(environment_file));
+  inputs.robot = io::read_robot_file(ibm7545_file("robot.txt"));
+  inputs.environment = io::read_environment_file(ibm7545_file(environment_file));
   inputs.program = io::parse_path_file(path_text, "path.txt", inputs.robot);
   return run(std::move(inputs), claim);
 }
@@ -38,9 +35,9 @@ Ibm7545Run verify_ibm7545(const std::string& environment_file, const std::string
 Ibm7545Run verify_ibm7545_files(const std::string& environment_file, const std::string& path_file,
                                 certify::ClearClaim claim) {
   Ibm7545Run inputs;
-  inputs.robot = io::read_robot_file(data("robot.txt"));
-  inputs.environment = io::read_environment_file(data(environment_file));
-  inputs.program = io::read_path_file(data(path_file), inputs.robot);
+  inputs.robot = io::read_robot_file(ibm7545_file("robot.txt"));
+  inputs.environment = io::read_environment_file(ibm7545_file(environment_file));
+  inputs.program = io::read_path_file(ibm7545_file(path_file), inputs.robot);
   return run(std::move(inputs), claim);
 }
 
