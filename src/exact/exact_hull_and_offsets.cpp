@@ -27,10 +27,13 @@
 #include <string>
 #include <tuple>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "grpvss/exact/convex_polytope.hpp"
 #include "grpvss/exact/minkowski_offset.hpp"
+#include "grpvss/exact/polytope_skeleton.hpp"
+#include "grpvss/geometry/hull_skeleton.hpp"
 #include "extended_precision.hpp"
 
 namespace grpvss::geometry {
@@ -854,28 +857,124 @@ enum class Filtered { kTrue, kFalse, kUnknown };
 /// The same test in interval arithmetic (caller holds a Protect_FPU_rounding<true> scope):
 /// n = (v1 - v0) x (v2 - v0) and g = min_h n.(v0 - h) enclose the exact values, so a
 /// certain sign of g and of g^2 - r^2 |n|^2 is the exact answer.
+using IV = CGAL::Interval_nt<false>;
+
+/// An enclosure of the exact face normal n = (v1 - v0) x (v2 - v0) (caller holds a
+/// Protect_FPU_rounding<true> scope).
+std::array<IV, 3> face_normal_interval(const Eigen::Vector3d& v0, const Eigen::Vector3d& v1,
+                                       const Eigen::Vector3d& v2) {
+  const IV ux = IV(v1.x()) - v0.x(), uy = IV(v1.y()) - v0.y(), uz = IV(v1.z()) - v0.z();
+  const IV wx = IV(v2.x()) - v0.x(), wy = IV(v2.y()) - v0.y(), wz = IV(v2.z()) - v0.z();
+  return {uy * wz - uz * wy, uz * wx - ux * wz, ux * wy - uy * wx};
+}
+
+/// An enclosure of n.(a - b) for the exact n inside `n` (caller holds the rounding scope).
+IV dot_difference_interval(const std::array<IV, 3>& n, const Eigen::Vector3d& a,
+                           const Eigen::Vector3d& b) {
+  return n[0] * (IV(a.x()) - b.x()) + n[1] * (IV(a.y()) - b.y()) + n[2] * (IV(a.z()) - b.z());
+}
+
+/// The verdict from an enclosure [g_lo, g_hi] of g = c - max n.h: certain signs of g and of
+/// g^2 - r^2 |n|^2 are the exact answer.
+Filtered ball_sum_verdict(double g_lo, double g_hi, const std::array<IV, 3>& n, double radius) {
+  if (g_hi < 0.0) return Filtered::kFalse;
+  if (!(g_lo >= 0.0)) return Filtered::kUnknown;
+  const IV g(g_lo, g_hi);
+  const IV slack = g * g - IV(radius) * IV(radius) * (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  if (slack.inf() >= 0.0) return Filtered::kTrue;
+  if (slack.sup() < 0.0) return Filtered::kFalse;
+  return Filtered::kUnknown;
+}
+
 Filtered face_contains_ball_sum_interval(const Eigen::Vector3d& v0, const Eigen::Vector3d& v1,
                                          const Eigen::Vector3d& v2,
                                          const std::vector<Eigen::Vector3d>& inner,
                                          double radius) {
-  using IV = CGAL::Interval_nt<false>;
-  const IV ux = IV(v1.x()) - v0.x(), uy = IV(v1.y()) - v0.y(), uz = IV(v1.z()) - v0.z();
-  const IV wx = IV(v2.x()) - v0.x(), wy = IV(v2.y()) - v0.y(), wz = IV(v2.z()) - v0.z();
-  const IV nx = uy * wz - uz * wy, ny = uz * wx - ux * wz, nz = ux * wy - uy * wx;
+  const std::array<IV, 3> n = face_normal_interval(v0, v1, v2);
   double g_lo = std::numeric_limits<double>::infinity();
   double g_hi = std::numeric_limits<double>::infinity();
   for (const auto& h : inner) {
-    const IV g = nx * (IV(v0.x()) - h.x()) + ny * (IV(v0.y()) - h.y()) + nz * (IV(v0.z()) - h.z());
+    const IV g = dot_difference_interval(n, v0, h);
     g_lo = std::min(g_lo, g.inf());
     g_hi = std::min(g_hi, g.sup());
   }
-  if (g_hi < 0.0) return Filtered::kFalse;
-  if (!(g_lo >= 0.0)) return Filtered::kUnknown;
-  const IV g(g_lo, g_hi);
-  const IV slack = g * g - IV(radius) * IV(radius) * (nx * nx + ny * ny + nz * nz);
-  if (slack.inf() >= 0.0) return Filtered::kTrue;
-  if (slack.sup() < 0.0) return Filtered::kFalse;
-  return Filtered::kUnknown;
+  return ball_sum_verdict(g_lo, g_hi, n, radius);
+}
+
+/// At most this many inner vertices tied at the top (a face of `inner` parallel to the outer
+/// face: the usual case in a Minkowski sum); a bigger plateau is left to the scan.
+constexpr int kMaxTiedVertices = 96;
+
+/// An enclosure [lo, hi] of g = min_h n.(v0 - h) over `inner` (the exact hull's vertices,
+/// `skeleton` its edge graph) for the exact n inside `n`, from a set T of vertices only: the
+/// climb's end (from `start`, then updated to it) and the vertices connected to it whose
+/// values tie with it. T is proven to hold a minimiser when every neighbour y outside T has
+/// g_y >= every g_t (t in T) certainly; nullopt where it does not (the caller scans).
+/// proof: proofs/offset-containment.md#lemma-climbed-support
+std::optional<std::pair<double, double>> climbed_gap_enclosure(
+    const std::array<IV, 3>& n, const Eigen::Vector3d& v0,
+    const std::vector<Eigen::Vector3d>& inner, const HullSkeleton& skeleton, int& start) {
+  const Eigen::Vector3d direction(CGAL::to_double(n[0]), CGAL::to_double(n[1]),
+                                  CGAL::to_double(n[2]));
+  const int x = climb_support_index(inner, skeleton, start, direction);
+  start = x;
+  const auto point = [&](int i) -> const Eigen::Vector3d& { return inner[static_cast<std::size_t>(i)]; };
+  const auto row = [&](int i) {
+    const auto at = static_cast<std::size_t>(i);
+    return std::pair<const int*, const int*>(skeleton.neighbours.data() + skeleton.first[at],
+                                             skeleton.neighbours.data() + skeleton.first[at + 1]);
+  };
+  // Which vertices count as tied only decides how much is checked, never what is claimed.
+  const double top = direction.dot(point(x));
+  const double tie = 1e-12 * direction.cwiseAbs().sum() *
+                     (point(x).cwiseAbs().maxCoeff() + v0.cwiseAbs().maxCoeff() + 1e-300);
+  std::array<int, kMaxTiedVertices> tied{};
+  int tied_count = 0;
+  tied[static_cast<std::size_t>(tied_count++)] = x;
+  const auto is_tied = [&](int i) {
+    return std::find(tied.begin(), tied.begin() + tied_count, i) != tied.begin() + tied_count;
+  };
+  for (int k = 0; k < tied_count; ++k) {
+    const auto [first, last] = row(tied[static_cast<std::size_t>(k)]);
+    for (const int* y = first; y != last; ++y) {
+      if (is_tied(*y) || !(direction.dot(point(*y)) >= top - tie)) continue;
+      if (tied_count == kMaxTiedVertices) return std::nullopt;
+      tied[static_cast<std::size_t>(tied_count++)] = *y;
+    }
+  }
+  double lo = std::numeric_limits<double>::infinity();
+  double hi = std::numeric_limits<double>::infinity();
+  double largest_hi = -std::numeric_limits<double>::infinity();
+  for (int k = 0; k < tied_count; ++k) {
+    const IV g = dot_difference_interval(n, v0, point(tied[static_cast<std::size_t>(k)]));
+    lo = std::min(lo, g.inf());
+    hi = std::min(hi, g.sup());
+    largest_hi = std::max(largest_hi, g.sup());
+  }
+  for (int k = 0; k < tied_count; ++k) {
+    const auto [first, last] = row(tied[static_cast<std::size_t>(k)]);
+    for (const int* y = first; y != last; ++y) {
+      if (!is_tied(*y) && !(dot_difference_interval(n, v0, point(*y)).inf() >= largest_hi)) {
+        return std::nullopt;
+      }
+    }
+  }
+  return std::pair<double, double>(lo, hi);
+}
+
+/// face_contains_ball_sum_interval() with min g taken over the climbed, proven set T instead
+/// of over every inner point; the scan where T is not proven. `start`: the climb's warm start.
+/// `climbed` counts the faces T decided (not scanned).
+Filtered face_contains_ball_sum_climbed(const Eigen::Vector3d& v0, const Eigen::Vector3d& v1,
+                                        const Eigen::Vector3d& v2,
+                                        const std::vector<Eigen::Vector3d>& inner,
+                                        const HullSkeleton& skeleton, double radius, int& start,
+                                        int& climbed) {
+  const std::array<IV, 3> n = face_normal_interval(v0, v1, v2);
+  const auto gap = climbed_gap_enclosure(n, v0, inner, skeleton, start);
+  if (!gap) return face_contains_ball_sum_interval(v0, v1, v2, inner, radius);
+  ++climbed;
+  return ball_sum_verdict(gap->first, gap->second, n, radius);
 }
 
 }  // namespace
@@ -909,6 +1008,34 @@ bool contains_ball_sum_exactly(const ConvexPolytope& outer,
 bool contains_ball_sum_exactly(const ConvexPolytope& outer, const ConvexPolytope& inner,
                                double radius) {
   return contains_ball_sum_exactly(outer, inner.vertices(), radius);
+}
+
+// proof: proofs/offset-containment.md#lemma-climbed-support (max n.h at a proven vertex)
+bool contains_ball_sum_by_climbing(const ConvexPolytope& outer, const ConvexPolytope& inner,
+                                   double radius, int* faces_climbed) {
+  require_radius(radius, /*allow_zero=*/true);
+  const std::vector<Eigen::Vector3d>& inner_vertices = inner.vertices();
+  const HullSkeleton skeleton = vertex_skeleton(inner);
+  std::vector<std::size_t> undecided;
+  int climbed = 0;
+  {
+    CGAL::Protect_FPU_rounding<true> guard;
+    int start = 0;  // neighbouring faces have close normals: each climb starts at the last end
+    for (std::size_t f = 0; f < outer.faces().size(); ++f) {
+      const auto& loop = outer.faces()[f];
+      const auto& v = outer.vertices();
+      const Filtered verdict = face_contains_ball_sum_climbed(v[loop[0]], v[loop[1]], v[loop[2]],
+                                                              inner_vertices, skeleton, radius,
+                                                              start, climbed);
+      if (faces_climbed != nullptr) *faces_climbed = climbed;
+      if (verdict == Filtered::kFalse) return false;
+      if (verdict == Filtered::kUnknown) undecided.push_back(f);
+    }
+  }
+  for (std::size_t f : undecided) {
+    if (!face_contains_ball_sum_exact(face_plane(outer, f), inner_vertices, radius)) return false;
+  }
+  return true;
 }
 
 bool contains_ball_exactly(const ConvexPolytope& p, double radius) {
@@ -1004,7 +1131,7 @@ ConvexPolytope minkowski_offset(const ConvexPolytope& hull, double radius, Offse
       for (const auto& q : shape_pts) sums.push_back(h + q);
     }
     ConvexPolytope candidate = ConvexPolytope::from_points(sums);
-    if (contains_ball_sum_exactly(candidate, hull, radius)) return candidate;
+    if (contains_ball_sum_by_climbing(candidate, hull, radius)) return candidate;
     inflate = (inflate == 0.0) ? radius * 0x1p-40 + 8.0 * ulp : 2.0 * inflate;
   }
   throw std::logic_error("minkowski_offset: no rounded candidate contains hull (+) B(0, r)");

@@ -19,7 +19,7 @@ std::optional<ConvexPolytope> recheck_offset(const std::vector<Eigen::Vector3d>&
   // Vertices are the first occurrences of extreme input points: equal counts mean every
   // proposed point is a distinct vertex.
   if (offset->vertices().size() != proposed.size()) return std::nullopt;
-  if (!contains_ball_sum_exactly(*offset, hull, radius)) return std::nullopt;
+  if (!contains_ball_sum_by_climbing(*offset, hull, radius)) return std::nullopt;
   return offset;
 }
 

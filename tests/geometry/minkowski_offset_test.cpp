@@ -175,5 +175,72 @@ TEST(MinkowskiOffset, FilteredContainmentAgreesWithExactReferenceNearTheThreshol
   EXPECT_GT(near_false, 0);
 }
 
+// contains_ball_sum_by_climbing (proofs/offset-containment.md#lemma-climbed-support) decides
+// exactly what the scan decides. Near the threshold radius only the governing face's support
+// value separates the answers, so a support vertex the climb claimed but that is not the
+// maximum would accept a radius the reference rejects. Hulls: the IBM 7545 links (small,
+// with parallel faces: tied vertex sets) and 60-240 random points on a sphere (mesh-like
+// hulls of hundreds of vertices).
+TEST(MinkowskiOffset, ClimbedContainmentAgreesWithTheScanAndTheReferenceAtTheThreshold) {
+  std::mt19937_64 rng(20261201);
+  std::vector<Points> hulls = testing::ibm7545_hulls();
+  std::normal_distribution<double> gauss(0.0, 1.0);
+  for (const int count : {60, 120, 240}) {
+    Points sphere;
+    for (int i = 0; i < count; ++i) {
+      Eigen::Vector3d p(gauss(rng), gauss(rng), gauss(rng));
+      sphere.push_back(0.07 * p.normalized() + Eigen::Vector3d(0.01, -0.02, 0.3));
+    }
+    hulls.push_back(sphere);
+  }
+  int near_true = 0, near_false = 0;
+  int sphere_faces = 0, sphere_faces_climbed = 0;
+  for (std::size_t trial = 0; trial < hulls.size(); ++trial) {
+    const auto pts = testing::transformed(hulls[trial], testing::random_rotation(rng),
+                                          Eigen::Vector3d(0.4, -0.25, 0.75));
+    const ConvexPolytope hull = ConvexPolytope::from_points(pts);
+    const double radius = 0.004;
+    const auto shape = trial % 2 == 0 ? OffsetShape::kRhombicuboctahedron : OffsetShape::kCube;
+    const ConvexPolytope grown = minkowski_offset(hull, radius, shape);
+    const double threshold =
+        radius - ball_sum_containment_report(grown, hull.vertices(), radius).worst_protrusion;
+    for (int k = -3; k <= 3; ++k) {
+      const double r = threshold * (1.0 + k * 0x1p-46);
+      const bool expected = testing::reference_contains_ball_sum(grown.vertices(), hull.vertices(), r);
+      EXPECT_EQ(contains_ball_sum_by_climbing(grown, hull, r), expected) << trial << " " << k;
+      EXPECT_EQ(contains_ball_sum_exactly(grown, hull, r), expected) << trial << " " << k;
+      (expected ? near_true : near_false) += 1;
+    }
+    if (trial >= hulls.size() - 3) {
+      int climbed = 0;
+      ASSERT_TRUE(contains_ball_sum_by_climbing(grown, hull, radius, &climbed));
+      sphere_faces += static_cast<int>(grown.faces().size());
+      sphere_faces_climbed += climbed;
+    }
+    for (const double r : {0.0, 0.5 * radius, radius, 2.0 * radius}) {
+      EXPECT_EQ(contains_ball_sum_by_climbing(grown, hull, r),
+                testing::reference_contains_ball_sum(grown.vertices(), hull.vertices(), r))
+          << trial << " " << r;
+    }
+  }
+  EXPECT_GT(near_true, 0);
+  EXPECT_GT(near_false, 0);
+  // The climb, not the scan, decided almost every face of the mesh-like offsets.
+  EXPECT_GT(sphere_faces_climbed, 0.95 * sphere_faces) << sphere_faces_climbed << " of " << sphere_faces;
+}
+
+// Outer and inner faces parallel (a box and its cube offset): every face's support is a whole
+// face of the box (four tied vertices), proven as a set, at the exact threshold radius.
+TEST(MinkowskiOffset, ClimbedContainmentOfABoxInItsGrownBoxProvesTiedFaces) {
+  const ConvexPolytope hull = ConvexPolytope::from_points(testing::box({0, 0, 0}, {1, 2, 3}));
+  const ConvexPolytope grown = minkowski_offset(hull, 0.5, OffsetShape::kCube);
+  int climbed = 0;
+  EXPECT_TRUE(contains_ball_sum_by_climbing(grown, hull, 0.5, &climbed));
+  EXPECT_EQ(climbed, static_cast<int>(grown.faces().size()));
+  EXPECT_FALSE(contains_ball_sum_by_climbing(grown, hull, 0.5 + 0x1p-40));
+  EXPECT_FALSE(contains_ball_sum_by_climbing(hull, grown, 0.0));
+  EXPECT_TRUE(contains_ball_sum_by_climbing(hull, hull, 0.0));
+}
+
 }  // namespace
 }  // namespace grpvss::geometry

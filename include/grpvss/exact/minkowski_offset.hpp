@@ -46,6 +46,15 @@ ConvexPolytope minkowski_offset(const ConvexPolytope& hull, double radius, Offse
 /// (\f$g = c - \max n\cdot h \ge 0\f$ and \f$g^2 \ge r^2|n|^2\f$). radius >= 0 required.
 bool contains_ball_sum_exactly(const ConvexPolytope& outer, const ConvexPolytope& inner,
                                double radius);
+/// \brief The same decision, each face's max n.h taken at a vertex of \p inner found by climbing
+/// its edge graph and proven maximal by its neighbours (interval arithmetic); faces where no
+/// vertex is proven are scanned as above. Same answer, O(climb) instead of O(|inner|) per
+/// face: what the verifier uses (minkowski_offset, recheck_offset). The certificate checker
+/// keeps the scan. proof: proofs/offset-containment.md#lemma-climbed-support
+/// \p faces_climbed, when given, receives how many faces the climbed set decided or passed to
+/// the exact test without a scan (the rest were scanned).
+bool contains_ball_sum_by_climbing(const ConvexPolytope& outer, const ConvexPolytope& inner,
+                                   double radius, int* faces_climbed = nullptr);
 /// \brief Same, with inner given as points (only their convex hull matters; a single point
 /// {0,0,0} checks ball containment).
 bool contains_ball_sum_exactly(const ConvexPolytope& outer,

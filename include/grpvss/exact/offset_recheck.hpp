@@ -19,7 +19,7 @@ namespace grpvss::geometry {
 ///   the points themselves, never read);
 /// - every proposed point is a vertex of that hull (no duplicates, no interior points), so
 ///   the points can serve as the offset's vertex list (`LinkHull::expanded_L`) unchanged;
-/// - contains_ball_sum_exactly(hull of proposed, hull, radius) (Lemma 4 of
+/// - contains_ball_sum_by_climbing(hull of proposed, hull, radius) (Lemmas 4 and 4a of
 ///   proofs/offset-containment.md, decided in exact arithmetic).
 /// Nothing about where the points came from is assumed.
 /// \throws std::invalid_argument unless radius is finite and >= 0.
