@@ -1,10 +1,13 @@
 #include "cell_environment.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 
 #include <fmt/format.h>
 
@@ -22,9 +25,11 @@ namespace {
 
 using kinematics::BoundedPoints;
 
-// The convex pieces of one obstacle in its own frame, model units, each with its error.
+// The convex pieces of one obstacle in its own frame, model units, each with its error, and
+// what the shape's reading warned about (text without the obstacle's name).
 struct ShapePieces {
   std::vector<BoundedPoints> pieces;
+  std::vector<io::InputWarning> warnings;
 };
 
 // Box, cylinder, sphere: polytopes that contain the shape of the (scaled) stored sizes; the
@@ -56,8 +61,7 @@ geometry::DecomposeMode decompose_mode(MeshDecomposition mode) {
   return geometry::DecomposeMode::kHull;
 }
 
-ShapePieces mesh_pieces(const CellObstacle& obstacle, double scale,
-                        std::vector<io::InputWarning>& warnings) {
+ShapePieces mesh_pieces(const CellObstacle& obstacle, double scale) {
   io::MeshReadOptions read_options;
   read_options.scale = obstacle.scale * scale;
   read_options.scale_is_exact = obstacle.scale_is_exact && scale == 1.0;
@@ -65,16 +69,16 @@ ShapePieces mesh_pieces(const CellObstacle& obstacle, double scale,
   geometry::DecompositionOptions options;
   options.mode = decompose_mode(obstacle.decompose);
   const geometry::ConvexPieces convex = geometry::decompose_mesh(mesh.mesh, options);
+  ShapePieces pieces;
   for (const geometry::ShapeWarning& warning : convex.warnings) {
-    warnings.push_back({warning.file, warning.line, obstacle.name + ": " + warning.text});
+    pieces.warnings.push_back({warning.file, warning.line, warning.text});
   }
   if (obstacle.decompose == MeshDecomposition::kHull && convex.volume_ratio) {
-    warnings.push_back({obstacle.file, 0,
-                        fmt::format("{}: decompose: hull covers {:.3g} times the mesh's volume "
-                                    "(parts or exact cover less)",
-                                    obstacle.name, *convex.volume_ratio)});
+    pieces.warnings.push_back({obstacle.file, 0,
+                               fmt::format("decompose: hull covers {:.3g} times the mesh's volume "
+                                           "(parts or exact cover less)",
+                                           *convex.volume_ratio)});
   }
-  ShapePieces pieces;
   for (const std::vector<Eigen::Vector3d>& piece : convex.pieces) {
     // The product of two scale factors rounds once more than the reader accounts for.
     const double extra = scaling_error(largest_l1_norm(piece), 2.0);
@@ -95,10 +99,9 @@ ShapePieces environment_pieces(const CellObstacle& obstacle, double scale) {
   return pieces;
 }
 
-ShapePieces obstacle_pieces(const CellObstacle& obstacle, double scale,
-                            std::vector<io::InputWarning>& warnings) {
+ShapePieces obstacle_pieces(const CellObstacle& obstacle, double scale) {
   switch (obstacle.shape) {
-    case CellObstacle::Shape::kMesh: return mesh_pieces(obstacle, scale, warnings);
+    case CellObstacle::Shape::kMesh: return mesh_pieces(obstacle, scale);
     case CellObstacle::Shape::kThesisEnvironment: return environment_pieces(obstacle, scale);
     default: return primitive_pieces(obstacle, scale);
   }
@@ -106,15 +109,44 @@ ShapePieces obstacle_pieces(const CellObstacle& obstacle, double scale,
 
 // Primitive shapes reject sizes beyond their limits with std::invalid_argument.
 ShapePieces checked_obstacle_pieces(const CellObstacle& obstacle, double scale,
-                                    const std::string& cell_file,
-                                    std::vector<io::InputWarning>& warnings) {
+                                    const std::string& cell_file) {
   try {
-    return obstacle_pieces(obstacle, scale, warnings);
+    return obstacle_pieces(obstacle, scale);
   } catch (const std::invalid_argument& error) {
     throw InputError(cell_file, obstacle.line, "a shape the exact stage accepts",
                      obstacle.name + ": " + error.what());
   }
 }
+
+// Everything obstacle_pieces() reads of an obstacle: two obstacles with equal keys have equal
+// pieces and warnings (the pose is applied afterwards).
+using ShapeKey = std::tuple<int, std::string, std::array<double, 3>, std::array<double, 3>,
+                            double, double, bool, int>;
+
+ShapeKey shape_key(const CellObstacle& obstacle) {
+  const auto triple = [](const Eigen::Vector3d& v) { return std::array<double, 3>{v.x(), v.y(), v.z()}; };
+  return {static_cast<int>(obstacle.shape), obstacle.file, triple(obstacle.box_size),
+          triple(obstacle.scale), obstacle.radius, obstacle.length, obstacle.scale_is_exact,
+          static_cast<int>(obstacle.decompose)};
+}
+
+// The pieces of each distinct shape, built once per cell: a cell places the same mesh (a
+// fixture, a bin) or the same post many times, and reading, decomposing and the exact checks
+// of circumscribed shapes are the cost of loading it.
+class ShapePiecesOnce {
+ public:
+  ShapePiecesOnce(double scale, const std::string& cell_file) : scale_(scale), cell_file_(cell_file) {}
+  const ShapePieces& of(const CellObstacle& obstacle) {
+    auto [at, inserted] = built_.try_emplace(shape_key(obstacle));
+    if (inserted) at->second = checked_obstacle_pieces(obstacle, scale_, cell_file_);
+    return at->second;
+  }
+
+ private:
+  double scale_;
+  const std::string& cell_file_;
+  std::map<ShapeKey, ShapePieces> built_;
+};
 
 void use_thesis_constants(const CellDescription& cell, Environment& environment) {
   if (cell.thesis_constants) {
@@ -136,8 +168,12 @@ void use_thesis_constants(const CellDescription& cell, Environment& environment)
 Environment load_cell_environment(const CellDescription& cell, double scale,
                                   std::vector<io::InputWarning>& warnings) {
   Environment environment;
+  ShapePiecesOnce shapes(scale, cell.source);
   for (const CellObstacle& obstacle : cell.obstacles) {
-    const ShapePieces pieces = checked_obstacle_pieces(obstacle, scale, cell.source, warnings);
+    const ShapePieces& pieces = shapes.of(obstacle);
+    for (const io::InputWarning& warning : pieces.warnings) {
+      warnings.push_back({warning.file, warning.line, obstacle.name + ": " + warning.text});
+    }
     const ScaledPose pose = scaled_pose(obstacle.pose, scale);
     const kinematics::BoundedProduct X_WO = pose.product();
     for (const BoundedPoints& piece : pieces.pieces) {

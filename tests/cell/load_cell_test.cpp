@@ -7,6 +7,7 @@
 #include <iterator>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include <unistd.h>
 
@@ -119,6 +120,31 @@ TEST_F(LoadCell, AQuaternionPosePlacesAnObstacleAsItsRpyTwin) {
   }
   EXPECT_GT(cell.environment.point_error, 0.0);
   EXPECT_LT(cell.environment.point_error, 1e-14);
+}
+
+// A shape placed several times is built once per cell (cell_environment.cpp): each placement
+// has exactly the pieces a cell with that obstacle alone gives, and its own named warnings.
+TEST_F(LoadCell, ARepeatedShapeGivesEachPlacementItsOwnPiecesAndWarnings) {
+  const std::string fixture = "mesh: " + kSixAxis + "meshes/u_fixture.stl, decompose: hull";
+  const std::string second = "  - {name: b, " + fixture + ", pose: {xyz: [0.5, 0, 0.2], rpy: [0, 0, 1]}}\n";
+  const std::string post = "  - {name: p2, cylinder: {radius: 0.04, length: 1.2}, pose: {xyz: [1, 1, 0]}}\n";
+  const grpvss::cell::LoadedCell both = grpvss::cell::load_cell(write(
+      "obstacles:\n  - {name: a, " + fixture + ", pose: {xyz: [1, 0, 0]}}\n" + second +
+      "  - {name: p1, cylinder: {radius: 0.04, length: 1.2}}\n" + post));
+  const grpvss::cell::LoadedCell alone = grpvss::cell::load_cell(write("obstacles:\n" + second + post));
+  ASSERT_EQ(both.environment.names, (std::vector<std::string>{"a", "b", "p1", "p2"}));
+  ASSERT_EQ(alone.environment.names, (std::vector<std::string>{"b", "p2"}));
+  EXPECT_EQ(both.environment.obstacles[1].points, alone.environment.obstacles[0].points);
+  EXPECT_EQ(both.environment.obstacles[3].points, alone.environment.obstacles[1].points);
+  EXPECT_NE(both.environment.obstacles[0].points, both.environment.obstacles[1].points);
+  // The U's hull covers more than the U: each placement warns under its own name.
+  std::vector<std::string> warned;
+  for (const grpvss::io::InputWarning& warning : both.warnings) {
+    if (warning.text.find(": decompose: hull covers") != std::string::npos) {
+      warned.push_back(warning.text.substr(0, warning.text.find(':')));
+    }
+  }
+  EXPECT_EQ(warned, (std::vector<std::string>{"a", "b"}));
 }
 
 TEST(QuaternionRotation, ItsBoundIsTheDecimalsFourUlpsPlusAFewUlps) {
