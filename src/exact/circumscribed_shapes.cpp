@@ -10,6 +10,8 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <memory>
+#include <mutex>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -148,15 +150,41 @@ double smallest_plane_distance(const Geodesic& g) {
   return smallest;
 }
 
+/// The frequency-nu unit sphere with its hull's nearest face plane distance (the display
+/// offsets of unit normals, to ~1e-16) and its triangles' smallest plane distance: both
+/// depend on nu alone.
+struct UnitGeodesic {
+  Geodesic sphere;
+  double nearest_face_offset = 0.0;
+  double smallest_triangle_distance = 0.0;
+};
+
+/// The unit sphere of frequency nu, built once per process (a robot of capsules and a cell of
+/// spheres ask for the same few). Only proposals come from it: every scaled sphere is checked
+/// exactly.
+const UnitGeodesic& unit_geodesic(int nu) {
+  static std::mutex mutex;
+  static std::map<int, std::unique_ptr<const UnitGeodesic>> built;
+  const std::lock_guard<std::mutex> lock(mutex);
+  std::unique_ptr<const UnitGeodesic>& slot = built[nu];
+  if (!slot) {
+    auto unit = std::make_unique<UnitGeodesic>();
+    unit->sphere = geodesic_sphere(nu);
+    const ConvexPolytope unit_hull = ConvexPolytope::from_points(unit->sphere.points);
+    const std::vector<double>& offsets = unit_hull.face_offsets();
+    unit->nearest_face_offset = *std::min_element(offsets.begin(), offsets.end());
+    unit->smallest_triangle_distance = smallest_plane_distance(unit->sphere);
+    slot = std::move(unit);
+  }
+  return *slot;
+}
+
 /// The frequency-nu sphere scaled so that its hull's face planes lie at distance >= radius,
 /// if a candidate passes the exact checks (containment and overshoot).
 std::optional<std::vector<Eigen::Vector3d>> scaled_geodesic_sphere(int nu, double radius,
                                                                    double max_overshoot) {
-  const Geodesic unit = geodesic_sphere(nu);
-  // Display offsets of unit normals: each face plane's distance from the centre, to ~1e-16.
-  const ConvexPolytope unit_hull = ConvexPolytope::from_points(unit.points);
-  const std::vector<double>& offsets = unit_hull.face_offsets();
-  const double nearest = *std::min_element(offsets.begin(), offsets.end());
+  const Geodesic& unit = unit_geodesic(nu).sphere;
+  const double nearest = unit_geodesic(nu).nearest_face_offset;
   for (int attempt = 0; attempt < kAttempts; ++attempt) {
     const double scale = radius / nearest * inflation(attempt);
     std::vector<Eigen::Vector3d> points;
@@ -169,6 +197,31 @@ std::optional<std::vector<Eigen::Vector3d>> scaled_geodesic_sphere(int nu, doubl
   }
   return std::nullopt;
 }
+
+/// Results of a pure shape function by its arguments, kept for the process (a robot of
+/// capsules repeats a few radii; a cell repeats its posts). At most kMaxEntries are kept: a
+/// long-lived process (batch, the Python module) meeting endless new sizes stops adding.
+template <class Key>
+class ShapeMemo {
+ public:
+  template <class Build>
+  std::vector<Eigen::Vector3d> get(const Key& key, Build build) {
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      const auto found = built_.find(key);
+      if (found != built_.end()) return found->second;
+    }
+    std::vector<Eigen::Vector3d> points = build();  // outside the lock: it may take milliseconds
+    const std::lock_guard<std::mutex> lock(mutex_);
+    if (built_.size() < kMaxEntries) built_.emplace(key, points);
+    return points;
+  }
+
+ private:
+  static constexpr std::size_t kMaxEntries = 4096;
+  std::mutex mutex_;
+  std::map<Key, std::vector<Eigen::Vector3d>> built_;
+};
 
 }  // namespace
 
@@ -197,6 +250,17 @@ std::vector<Eigen::Vector3d> circumscribed_cylinder(double radius, double length
                                                     double max_relative_overshoot) {
   require_dimension(radius, "cylinder radius");
   require_dimension(length, "cylinder length");
+  require_overshoot(max_relative_overshoot);  // before the lookup: a NaN key would match anything
+  static ShapeMemo<std::array<double, 3>> memo;
+  return memo.get({radius, length, max_relative_overshoot}, [&] {
+    return build_circumscribed_cylinder(radius, length, max_relative_overshoot);
+  });
+}
+
+std::vector<Eigen::Vector3d> build_circumscribed_cylinder(double radius, double length,
+                                                          double max_relative_overshoot) {
+  require_dimension(radius, "cylinder radius");
+  require_dimension(length, "cylinder length");
   const int n = cylinder_polygon_sides(max_relative_overshoot);
   const double half = length / 2.0;
   for (int attempt = 0; attempt < kAttempts; ++attempt) {
@@ -219,7 +283,7 @@ std::vector<Eigen::Vector3d> circumscribed_cylinder(double radius, double length
 int sphere_subdivision_frequency(double max_relative_overshoot) {
   require_overshoot(max_relative_overshoot);
   int nu = 1;
-  while (1.0 / smallest_plane_distance(geodesic_sphere(nu)) - 1.0 >
+  while (1.0 / unit_geodesic(nu).smallest_triangle_distance - 1.0 >
          max_relative_overshoot * (1.0 - kOvershootMargin)) {
     ++nu;
   }
@@ -227,6 +291,14 @@ int sphere_subdivision_frequency(double max_relative_overshoot) {
 }
 
 std::vector<Eigen::Vector3d> circumscribed_sphere(double radius, double max_relative_overshoot) {
+  require_dimension(radius, "sphere radius");
+  require_overshoot(max_relative_overshoot);
+  static ShapeMemo<std::array<double, 2>> memo;
+  return memo.get({radius, max_relative_overshoot},
+                  [&] { return build_circumscribed_sphere(radius, max_relative_overshoot); });
+}
+
+std::vector<Eigen::Vector3d> build_circumscribed_sphere(double radius, double max_relative_overshoot) {
   require_dimension(radius, "sphere radius");
   const int first = sphere_subdivision_frequency(max_relative_overshoot);
   // The hull's faces are normally the subdivision triangles; if not, a finer sphere is tried.

@@ -151,5 +151,23 @@ TEST(CircumscribedSphere, SampledBallPointsAreInsideByAnIndependentHull) {
   EXPECT_THROW(circumscribed_sphere(std::nan("")), std::invalid_argument);
 }
 
+// The shapes are kept per process by their arguments: a second call returns exactly what a
+// fresh build (with its exact check) returns, and invalid arguments are refused before any
+// lookup (a NaN overshoot must not match a kept entry).
+TEST(CircumscribedShapes, KeptResultsAreTheFreshBuildsAndBadArgumentsStillThrow) {
+  for (int round = 0; round < 2; ++round) {
+    EXPECT_EQ(circumscribed_sphere(0.09, 0.01), build_circumscribed_sphere(0.09, 0.01));
+    EXPECT_EQ(circumscribed_sphere(0.055, 0.1), build_circumscribed_sphere(0.055, 0.1));
+    EXPECT_EQ(circumscribed_cylinder(0.04, 1.2, 0.01), build_circumscribed_cylinder(0.04, 1.2, 0.01));
+    EXPECT_EQ(circumscribed_cylinder(0.04, 0.6, 0.01), build_circumscribed_cylinder(0.04, 0.6, 0.01));
+  }
+  EXPECT_NE(circumscribed_cylinder(0.04, 1.2, 0.01), circumscribed_cylinder(0.04, 0.6, 0.01));
+  EXPECT_THROW(circumscribed_cylinder(0.04, 1.2, std::nan("")), std::invalid_argument);
+  EXPECT_THROW(circumscribed_sphere(0.09, std::nan("")), std::invalid_argument);
+  EXPECT_THROW(circumscribed_cylinder(0.04, 1.2, 0.0005), std::invalid_argument);
+  EXPECT_THROW(build_circumscribed_sphere(-1.0, 0.01), std::invalid_argument);
+  EXPECT_THROW(build_circumscribed_cylinder(0.04, 0.0, 0.01), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace grpvss::geometry

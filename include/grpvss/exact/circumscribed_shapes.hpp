@@ -40,8 +40,12 @@ int cylinder_polygon_sides(double max_relative_overshoot);
 /// and x <-> y.
 /// \throws std::invalid_argument unless radius and length are finite, > 0, <= 1e6, and
 ///         1e-3 <= max_relative_overshoot <= 1; std::logic_error if no candidate verifies.
+/// Kept per process by its arguments (the result is a function of them alone).
 std::vector<Eigen::Vector3d> circumscribed_cylinder(
     double radius, double length, double max_relative_overshoot = kDefaultRelativeOvershoot);
+/// circumscribed_cylinder() built and checked now (not kept); the same arguments are required.
+std::vector<Eigen::Vector3d> build_circumscribed_cylinder(double radius, double length,
+                                                          double max_relative_overshoot);
 
 /// \brief Subdivision frequency of the geodesic icosphere used for a sphere: the smallest
 /// \f$\nu\f$ whose subdivided, projected icosahedron (10 nu^2 + 2 vertices) has every
@@ -55,7 +59,11 @@ int sphere_subdivision_frequency(double max_relative_overshoot);
 /// exactly (sphere_inside_exactly) — with overshoot <= max_relative_overshoot (checked
 /// exactly, spherical_overshoot_at_most). Returns the hull vertices.
 /// \throws as circumscribed_cylinder().
+/// Kept per process by its arguments, as circumscribed_cylinder().
 std::vector<Eigen::Vector3d> circumscribed_sphere(
     double radius, double max_relative_overshoot = kDefaultRelativeOvershoot);
+/// circumscribed_sphere() built and checked now (not kept); the same arguments are required.
+std::vector<Eigen::Vector3d> build_circumscribed_sphere(double radius,
+                                                        double max_relative_overshoot);
 
 }  // namespace grpvss::geometry
