@@ -130,6 +130,11 @@ ShapeKey shape_key(const CellObstacle& obstacle) {
           static_cast<int>(obstacle.decompose)};
 }
 
+bool finite_sizes(const CellObstacle& obstacle) {
+  return obstacle.box_size.allFinite() && obstacle.scale.allFinite() &&
+         std::isfinite(obstacle.radius) && std::isfinite(obstacle.length);
+}
+
 // The pieces of each distinct shape, built once per cell: a cell places the same mesh (a
 // fixture, a bin) or the same post many times, and reading, decomposing and the exact checks
 // of circumscribed shapes are the cost of loading it.
@@ -137,6 +142,11 @@ class ShapePiecesOnce {
  public:
   ShapePiecesOnce(double scale, const std::string& cell_file) : scale_(scale), cell_file_(cell_file) {}
   const ShapePieces& of(const CellObstacle& obstacle) {
+    // A size that is not finite would compare equal to any key: built (and refused) unkept.
+    if (!finite_sizes(obstacle)) {
+      unkept_ = checked_obstacle_pieces(obstacle, scale_, cell_file_);
+      return unkept_;
+    }
     auto [at, inserted] = built_.try_emplace(shape_key(obstacle));
     if (inserted) at->second = checked_obstacle_pieces(obstacle, scale_, cell_file_);
     return at->second;
@@ -146,6 +156,7 @@ class ShapePiecesOnce {
   double scale_;
   const std::string& cell_file_;
   std::map<ShapeKey, ShapePieces> built_;
+  ShapePieces unkept_;
 };
 
 void use_thesis_constants(const CellDescription& cell, Environment& environment) {

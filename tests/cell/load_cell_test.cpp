@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include "grpvss/cell/load_cell.hpp"
+#include "grpvss/io/cell_file.hpp"
 #include "grpvss/common/input_error.hpp"
 #include "grpvss/kinematics/forward_kinematics.hpp"
 #include "grpvss/kinematics/kinematic_chain.hpp"
@@ -145,6 +146,20 @@ TEST_F(LoadCell, ARepeatedShapeGivesEachPlacementItsOwnPiecesAndWarnings) {
     }
   }
   EXPECT_EQ(warned, (std::vector<std::string>{"a", "b"}));
+}
+
+// A description built without the reader (the API overload) may hold a size that is not
+// finite: it must still be refused, not matched to a kept shape of the same kind.
+TEST_F(LoadCell, ANonFiniteSizeIsRefusedEvenAfterAKeptShapeOfItsKind) {
+  grpvss::io::CellReadResult read = grpvss::io::read_cell_file(write(
+      "obstacles:\n  - {name: a, box: [0.3, 0.2, 0.1]}\n  - {name: b, box: [0.3, 0.2, 0.1]}\n"));
+  read.cell.obstacles[1].box_size.x() = std::numeric_limits<double>::quiet_NaN();
+  try {
+    grpvss::cell::load_cell(read.cell, read.warnings);
+    ADD_FAILURE() << "a NaN box size was accepted";
+  } catch (const grpvss::InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("b: "), std::string::npos) << error.what();
+  }
 }
 
 TEST(QuaternionRotation, ItsBoundIsTheDecimalsFourUlpsPlusAFewUlps) {
