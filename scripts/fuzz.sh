@@ -25,25 +25,44 @@ export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:allocator_may_return_null=0}
 export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
 # Leaks inside third-party libraries that are not ours to fix, each listed and explained there.
 export LSAN_OPTIONS="${LSAN_OPTIONS:-suppressions=$here/fuzz/lsan.supp}"
-status=0
-summary=()
-for target in "${targets[@]}"; do
-  corpus="$build_dir/corpus/$target"
-  artifacts="$build_dir/artifacts/$target"
+# One target per core at a time (GRPVSS_JOBS, default nproc): each libFuzzer run is single-
+# threaded, so two cores fuzz two readers for the same seconds each in half the wall time.
+jobs="${GRPVSS_JOBS:-$(nproc)}"
+fuzz_one() {
+  local target="$1"
+  local corpus="$build_dir/corpus/$target" artifacts="$build_dir/artifacts/$target"
+  local log="$build_dir/$target.log" result="$build_dir/$target.result"
   mkdir -p "$corpus" "$artifacts"
-  log="$build_dir/$target.log"
-  echo "fuzz: $target for ${seconds}s" >&2
   # -timeout: one input taking longer than 10 s is a hang; -rss_limit_mb bounds memory.
   if "$build_dir/fuzz/${target}_fuzzer" "$corpus" "$here/fuzz/corpus/$target" \
       -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=65536 \
       -print_final_stats=1 -artifact_prefix="$artifacts/" >"$log" 2>&1; then
+    local runs
     runs="$(grep -o 'Done [0-9]* runs' "$log" | grep -o '[0-9]*' || echo '?')"
-    summary+=("$target: $runs executions in ${seconds}s, no finding")
+    echo "$target: $runs executions in ${seconds}s, no finding" >"$result"
   else
+    echo "$target: FINDING (see $log and $artifacts/)" >"$result"
+  fi
+}
+for target in "${targets[@]}"; do
+  rm -f "$build_dir/$target.result"
+  while [ "$(jobs -rp | wc -l)" -ge "$jobs" ]; do wait -n || true; done
+  echo "fuzz: $target for ${seconds}s" >&2
+  fuzz_one "$target" &
+done
+wait
+status=0
+for target in "${targets[@]}"; do
+  result="$build_dir/$target.result"
+  if [ ! -f "$result" ]; then
+    echo "fuzz: $target: FINDING (the run left no result; see $build_dir/$target.log)"
     status=1
-    summary+=("$target: FINDING (see $log and $artifacts/)")
-    tail -n 40 "$log" >&2
+  elif grep -q ': FINDING' "$result"; then
+    echo "fuzz: $(cat "$result")"
+    tail -n 40 "$build_dir/$target.log" >&2
+    status=1
+  else
+    echo "fuzz: $(cat "$result")"
   fi
 done
-printf 'fuzz: %s\n' "${summary[@]}"
 exit "$status"
