@@ -901,10 +901,6 @@ Filtered face_contains_ball_sum_interval(const Eigen::Vector3d& v0, const Eigen:
   return ball_sum_verdict(g_lo, g_hi, n, radius);
 }
 
-/// At most this many inner vertices tied at the top (a face of `inner` parallel to the outer
-/// face: the usual case in a Minkowski sum); a bigger plateau is left to the scan.
-constexpr int kMaxTiedVertices = 96;
-
 /// An enclosure [lo, hi] of g = min_h n.(v0 - h) over `inner` (the exact hull's vertices,
 /// `skeleton` its edge graph) for the exact n inside `n`, from a set T of vertices only: the
 /// climb's end (from `start`, then updated to it) and the vertices connected to it whose
@@ -919,46 +915,23 @@ std::optional<std::pair<double, double>> climbed_gap_enclosure(
   const int x = climb_support_index(inner, skeleton, start, direction);
   start = x;
   const auto point = [&](int i) -> const Eigen::Vector3d& { return inner[static_cast<std::size_t>(i)]; };
-  const auto row = [&](int i) {
-    const auto at = static_cast<std::size_t>(i);
-    return std::pair<const int*, const int*>(skeleton.neighbours.data() + skeleton.first[at],
-                                             skeleton.neighbours.data() + skeleton.first[at + 1]);
-  };
-  // Which vertices count as tied only decides how much is checked, never what is claimed.
-  const double top = direction.dot(point(x));
   const double tie = 1e-12 * direction.cwiseAbs().sum() *
                      (point(x).cwiseAbs().maxCoeff() + v0.cwiseAbs().maxCoeff() + 1e-300);
-  std::array<int, kMaxTiedVertices> tied{};
-  int tied_count = 0;
-  tied[static_cast<std::size_t>(tied_count++)] = x;
-  const auto is_tied = [&](int i) {
-    return std::find(tied.begin(), tied.begin() + tied_count, i) != tied.begin() + tied_count;
-  };
-  for (int k = 0; k < tied_count; ++k) {
-    const auto [first, last] = row(tied[static_cast<std::size_t>(k)]);
-    for (const int* y = first; y != last; ++y) {
-      if (is_tied(*y) || !(direction.dot(point(*y)) >= top - tie)) continue;
-      if (tied_count == kMaxTiedVertices) return std::nullopt;
-      tied[static_cast<std::size_t>(tied_count++)] = *y;
-    }
-  }
+  TiedSupportSet tied;
+  if (!tied.gather(inner, skeleton, direction, x, tie)) return std::nullopt;
   double lo = std::numeric_limits<double>::infinity();
   double hi = std::numeric_limits<double>::infinity();
   double largest_hi = -std::numeric_limits<double>::infinity();
-  for (int k = 0; k < tied_count; ++k) {
-    const IV g = dot_difference_interval(n, v0, point(tied[static_cast<std::size_t>(k)]));
+  for (int k = 0; k < tied.size(); ++k) {
+    const IV g = dot_difference_interval(n, v0, point(tied.member(k)));
     lo = std::min(lo, g.inf());
     hi = std::min(hi, g.sup());
     largest_hi = std::max(largest_hi, g.sup());
   }
-  for (int k = 0; k < tied_count; ++k) {
-    const auto [first, last] = row(tied[static_cast<std::size_t>(k)]);
-    for (const int* y = first; y != last; ++y) {
-      if (!is_tied(*y) && !(dot_difference_interval(n, v0, point(*y)).inf() >= largest_hi)) {
-        return std::nullopt;
-      }
-    }
-  }
+  const bool proven = tied.every_outside_neighbour(skeleton, [&](int y) {
+    return dot_difference_interval(n, v0, point(y)).inf() >= largest_hi;
+  });
+  if (!proven) return std::nullopt;
   return std::pair<double, double>(lo, hi);
 }
 

@@ -1,9 +1,7 @@
 #include "grpvss/exact/placed_separation.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
-#include <cstdint>
 #include <limits>
 #include <stdexcept>
 #include <vector>
@@ -23,30 +21,6 @@ double gamma4_up() {
   const double u = std::numeric_limits<double>::epsilon() / 2;
   return div_up(mul_up(4.0, u), sub_down(1.0, mul_up(4.0, u)));
 }
-
-/// At most this many vertices tied at the top: a bigger plateau (a CAD hull's flat face seen
-/// head on) is left to the scan.
-constexpr int kMaxTied = 96;
-
-/// Which vertices are in the tied set, in O(1): vertex i is marked when its stamp is the current
-/// generation (one array per thread, grown to the largest template seen; a new generation
-/// clears every mark at once).
-class TiedMarks {
- public:
-  void begin(std::size_t vertices) {
-    if (stamps_.size() < vertices) stamps_.resize(vertices, 0);
-    if (++generation_ == 0) {  // wrapped: old stamps could equal the new generation
-      std::fill(stamps_.begin(), stamps_.end(), 0);
-      generation_ = 1;
-    }
-  }
-  void mark(int i) { stamps_[static_cast<std::size_t>(i)] = generation_; }
-  bool marked(int i) const { return stamps_[static_cast<std::size_t>(i)] == generation_; }
-
- private:
-  std::vector<std::uint32_t> stamps_;
-  std::uint32_t generation_ = 0;
-};
 
 /// The common case of tied_support_upper() with T = {x}, proven while climbing: each visited
 /// vertex's neighbours are valued in directed rounding once, and the climb stops where every
@@ -95,44 +69,20 @@ std::optional<double> tied_support_upper(const std::vector<Vector3d>& v, const H
                                          const Vector3d& m, double max_abs, int& climb_start) {
   const int x = climb_support_index(v, skeleton, climb_start, m);
   climb_start = x;
-  const auto at = [&](int i) -> const Vector3d& { return v[static_cast<std::size_t>(i)]; };
-  const auto neighbours = [&](int i) {
-    const auto row = static_cast<std::size_t>(i);
-    return std::pair<const int*, const int*>(skeleton.neighbours.data() + skeleton.first[row],
-                                             skeleton.neighbours.data() + skeleton.first[row + 1]);
-  };
-  // Which vertices count as tied only decides how much is checked, never what is claimed.
-  const double top_estimate = m.dot(at(x));
   const double tie = 1e-12 * (std::fabs(m[0]) + std::fabs(m[1]) + std::fabs(m[2])) * max_abs;
-  thread_local TiedMarks marks;
-  marks.begin(v.size());
-  std::array<int, kMaxTied> tied{};
-  int tied_count = 0;
-  tied[tied_count++] = x;
-  marks.mark(x);
-  const auto is_tied = [&](int i) { return marks.marked(i); };
-  for (int k = 0; k < tied_count; ++k) {
-    const auto [first, last] = neighbours(tied[static_cast<std::size_t>(k)]);
-    for (const int* y = first; y != last; ++y) {
-      if (is_tied(*y) || !(m.dot(at(*y)) >= top_estimate - tie)) continue;
-      if (tied_count == kMaxTied) return std::nullopt;
-      tied[static_cast<std::size_t>(tied_count++)] = *y;
-      marks.mark(*y);
-    }
-  }
+  TiedSupportSet tied;
+  if (!tied.gather(v, skeleton, m, x, tie)) return std::nullopt;
   double lowest = std::numeric_limits<double>::infinity();
   double highest = -std::numeric_limits<double>::infinity();
-  for (int k = 0; k < tied_count; ++k) {
-    const Vector3d& p = at(tied[static_cast<std::size_t>(k)]);
+  for (int k = 0; k < tied.size(); ++k) {
+    const Vector3d& p = v[static_cast<std::size_t>(tied.member(k))];
     lowest = std::min(lowest, dot_down(m.data(), p.data()));
     highest = std::max(highest, dot_up(m.data(), p.data()));
   }
-  for (int k = 0; k < tied_count; ++k) {
-    const auto [first, last] = neighbours(tied[static_cast<std::size_t>(k)]);
-    for (const int* y = first; y != last; ++y) {
-      if (!is_tied(*y) && !(dot_up(m.data(), at(*y).data()) <= lowest)) return std::nullopt;
-    }
-  }
+  const bool proven = tied.every_outside_neighbour(skeleton, [&](int y) {
+    return dot_up(m.data(), v[static_cast<std::size_t>(y)].data()) <= lowest;
+  });
+  if (!proven) return std::nullopt;
   return highest;
 }
 

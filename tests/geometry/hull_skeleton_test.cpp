@@ -5,6 +5,7 @@
 #include "grpvss/exact/polytope_skeleton.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <random>
 
@@ -170,6 +171,94 @@ TEST(HullSkeleton, GjkRefusesASkeletonOfAnotherPointSet) {
                std::invalid_argument);
   EXPECT_THROW(gjk(test::cube(Vector3d(3, 0, 0), 1.0), more, nullptr, nullptr, 0, &skeleton),
                std::invalid_argument);
+}
+
+
+// An n-gon prism between z = 0 and z = 1 (radius 1): the top face has n vertices.
+std::vector<Vector3d> polygon_prism(int n) {
+  std::vector<Vector3d> points;
+  for (int k = 0; k < n; ++k) {
+    const double angle = 2.0 * 3.14159265358979323846 * k / n;
+    points.emplace_back(std::cos(angle), std::sin(angle), 0.0);
+    points.emplace_back(std::cos(angle), std::sin(angle), 1.0);
+  }
+  return points;
+}
+
+std::vector<int> members_of(const TiedSupportSet& set) {
+  std::vector<int> members;
+  for (int k = 0; k < set.size(); ++k) members.push_back(set.member(k));
+  std::sort(members.begin(), members.end());
+  return members;
+}
+
+std::vector<int> vertices_with_z(const ConvexPolytope& hull, double z) {
+  std::vector<int> found;
+  for (std::size_t i = 0; i < hull.vertices().size(); ++i) {
+    if (hull.vertices()[i].z() == z) found.push_back(static_cast<int>(i));
+  }
+  return found;
+}
+
+// The tied set of a climb that ends on a face facing d is that whole face, whatever vertex of
+// it the climb ended on; the neighbours outside it are the faces' other ends (here the
+// bottom face), each visited; no vertex outside the face is a member.
+TEST(TiedSupportSet, IsTheFaceFacingTheDirectionAndItsOutsideNeighboursAreTheOtherEnds) {
+  for (const int n : {4, 17, 60}) {
+    const ConvexPolytope prism = ConvexPolytope::from_points(polygon_prism(n));
+    const HullSkeleton skeleton = vertex_skeleton(prism);
+    const std::vector<int> top = vertices_with_z(prism, 1.0);
+    const std::vector<int> bottom = vertices_with_z(prism, 0.0);
+    ASSERT_EQ(static_cast<int>(top.size()), n);
+    for (const int end : {top.front(), top.back()}) {
+      TiedSupportSet tied;
+      ASSERT_TRUE(tied.gather(prism.vertices(), skeleton, Vector3d(0, 0, 1), end, 1e-12));
+      EXPECT_EQ(members_of(tied), top) << n << "-gon";
+      for (const int b : bottom) EXPECT_FALSE(tied.contains(b));
+      std::vector<int> outside;
+      EXPECT_TRUE(tied.every_outside_neighbour(skeleton, [&](int y) {
+        outside.push_back(y);
+        return true;
+      }));
+      std::sort(outside.begin(), outside.end());
+      EXPECT_EQ(outside, bottom) << n << "-gon";
+      // The first outside neighbour that fails ends the check with false.
+      EXPECT_FALSE(tied.every_outside_neighbour(skeleton, [](int) { return false; }));
+    }
+  }
+}
+
+// A plateau of more than kMaxMembers vertices is refused (the callers scan); a tilted
+// direction ties only the climb's end.
+TEST(TiedSupportSet, RefusesAPlateauAboveItsBoundAndTiesOneVertexOffTheFace) {
+  const int n = TiedSupportSet::kMaxMembers + 1;
+  const ConvexPolytope prism = ConvexPolytope::from_points(polygon_prism(n));
+  const HullSkeleton skeleton = vertex_skeleton(prism);
+  const int end = vertices_with_z(prism, 1.0).front();
+  TiedSupportSet tied;
+  EXPECT_FALSE(tied.gather(prism.vertices(), skeleton, Vector3d(0, 0, 1), end, 1e-12));
+  const Vector3d tilted(0.3, 0.1, 1.0);
+  const int top = climb_support_index(prism.vertices(), skeleton, end, tilted);
+  ASSERT_TRUE(tied.gather(prism.vertices(), skeleton, tilted, top, 1e-12));
+  EXPECT_EQ(members_of(tied), std::vector<int>{top});
+}
+
+// One set per thread at a time: a later gather can only take marks away from an earlier
+// set (whose checks then test those members as neighbours, which is stricter), never make it
+// claim a vertex it did not gather.
+TEST(TiedSupportSet, ALaterGatherNeverAddsMembersToAnEarlierSet) {
+  const ConvexPolytope prism = ConvexPolytope::from_points(polygon_prism(8));
+  const HullSkeleton skeleton = vertex_skeleton(prism);
+  const std::vector<int> top = vertices_with_z(prism, 1.0);
+  const std::vector<int> bottom = vertices_with_z(prism, 0.0);
+  TiedSupportSet first;
+  TiedSupportSet second;
+  ASSERT_TRUE(first.gather(prism.vertices(), skeleton, Vector3d(0, 0, 1), top.front(), 1e-12));
+  ASSERT_TRUE(second.gather(prism.vertices(), skeleton, Vector3d(0, 0, -1), bottom.front(), 1e-12));
+  EXPECT_EQ(members_of(second), bottom);
+  for (int v = 0; v < skeleton.point_count(); ++v) {
+    if (first.contains(v)) EXPECT_TRUE(std::binary_search(top.begin(), top.end(), v)) << v;
+  }
 }
 
 }  // namespace
