@@ -53,7 +53,7 @@ endfunction()
 
 # Every stage, in data-flow order; a stage may only name earlier ones in DEPENDS.
 function(grpvss_add_stages)
-  grpvss_add_stage(common PUBLIC_LIBS Eigen3::Eigen)
+  grpvss_add_stage(common PUBLIC_LIBS Eigen3::Eigen PkgConfig::NETTLE)
   grpvss_add_stage(model DEPENDS common)
   grpvss_add_stage(io DEPENDS model
                    PRIVATE_LIBS fmt::fmt nlohmann_json::nlohmann_json urdfdom::urdfdom_model
@@ -70,9 +70,8 @@ function(grpvss_add_stages)
   # The checker sees the exact predicates, the model, the motion and the certificate format:
   # never the verifier (certify), which it re-checks.
   grpvss_add_stage(checker DEPENDS evidence exact PRIVATE_LIBS gmpxx gmp fmt::fmt)
-  grpvss_add_stage(certify DEPENDS evidence exact PRIVATE_LIBS fmt::fmt OpenSSL::Crypto)
-  grpvss_add_stage(report DEPENDS certify io cell
-                   PUBLIC_LIBS fmt::fmt PRIVATE_LIBS OpenSSL::Crypto)
+  grpvss_add_stage(certify DEPENDS evidence exact PRIVATE_LIBS fmt::fmt)
+  grpvss_add_stage(report DEPENDS certify io cell PUBLIC_LIBS fmt::fmt)
   target_compile_definitions(grpvss_report PRIVATE GRPVSS_VERSION="${PROJECT_VERSION}")
   # Many verifications on all cores, sharing each robot cell read-only (docs/batch.md).
   grpvss_add_stage(batch DEPENDS report

@@ -8,7 +8,7 @@ cd "$here"
 debian_packages=(
   build-essential cmake pkg-config
   libcgal-dev libgmp-dev libmpfr-dev libeigen3-dev libboost-dev
-  libcli11-dev nlohmann-json3-dev libfmt-dev libssl-dev
+  libcli11-dev nlohmann-json3-dev libfmt-dev nettle-dev
   libgtest-dev libgmock-dev libbenchmark-dev bsdutils
   liburdfdom-dev libassimp-dev libtinyxml2-dev libyaml-cpp-dev
   pybind11-dev python3-dev python3-numpy python3-pytest python3-distributed

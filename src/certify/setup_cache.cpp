@@ -11,7 +11,8 @@
 #include <system_error>
 
 #include <fmt/core.h>
-#include <openssl/evp.h>
+
+#include "grpvss/common/sha256.hpp"
 
 namespace grpvss::certify {
 namespace {
@@ -19,17 +20,6 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr const char* kMagic = "grpvss-setup-cache 1";
-
-std::string sha256_hex(const std::string& bytes) {
-  std::array<unsigned char, EVP_MAX_MD_SIZE> digest{};
-  unsigned int length = 0;
-  if (EVP_Digest(bytes.data(), bytes.size(), digest.data(), &length, EVP_sha256(), nullptr) != 1) {
-    throw std::runtime_error("OpenSSL: SHA-256 failed");
-  }
-  std::string hex;
-  for (unsigned int i = 0; i < length; ++i) hex += fmt::format("{:02x}", digest[i]);
-  return hex;
-}
 
 // Hexadecimal floating point: exact, and read back bit for bit by strtod.
 void append_point(std::string& out, const Eigen::Vector3d& p) {

@@ -2,55 +2,11 @@
 
 #include <array>
 #include <fstream>
-#include <memory>
-#include <stdexcept>
-
-#include <fmt/core.h>
-#include <openssl/evp.h>
 
 #include "grpvss/common/input_error.hpp"
+#include "grpvss/common/sha256.hpp"
 
 namespace grpvss::report {
-
-namespace {
-
-/// An EVP SHA-256 context that frees itself.
-class Sha256 {
- public:
-  Sha256() : context_(EVP_MD_CTX_new(), &EVP_MD_CTX_free) {
-    if (!context_ || EVP_DigestInit_ex(context_.get(), EVP_sha256(), nullptr) != 1) {
-      throw std::runtime_error("OpenSSL: cannot initialise SHA-256");
-    }
-  }
-
-  void update(const char* data, std::size_t size) {
-    if (EVP_DigestUpdate(context_.get(), data, size) != 1) {
-      throw std::runtime_error("OpenSSL: SHA-256 update failed");
-    }
-  }
-
-  std::string hex_digest() {
-    std::array<unsigned char, EVP_MAX_MD_SIZE> digest{};
-    unsigned int length = 0;
-    if (EVP_DigestFinal_ex(context_.get(), digest.data(), &length) != 1) {
-      throw std::runtime_error("OpenSSL: SHA-256 final failed");
-    }
-    std::string hex;
-    for (unsigned int i = 0; i < length; ++i) hex += fmt::format("{:02x}", digest[i]);
-    return hex;
-  }
-
- private:
-  std::unique_ptr<EVP_MD_CTX, decltype(&EVP_MD_CTX_free)> context_;
-};
-
-}  // namespace
-
-std::string sha256_hex(std::string_view bytes) {
-  Sha256 hash;
-  hash.update(bytes.data(), bytes.size());
-  return hash.hex_digest();
-}
 
 std::string sha256_hex_of_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);

@@ -1,10 +1,11 @@
 #pragma once
 /// \file
 /// \brief SHA-256 digests of the three input files, so a report names exactly what it verified.
-/// The hashing is OpenSSL's (libcrypto), never hand-written.
+/// The hashing is Nettle's (grpvss/common/sha256.hpp), never hand-written.
 
 #include <string>
-#include <string_view>
+
+#include "grpvss/common/sha256.hpp"
 
 namespace grpvss::report {
 
@@ -25,7 +26,7 @@ struct InputDigests {
 };
 
 /// SHA-256 of `bytes`, lowercase hex.
-std::string sha256_hex(std::string_view bytes);
+using grpvss::sha256_hex;
 
 /// SHA-256 of the file's bytes, lowercase hex.
 /// \throws InputError (file = `path`, line 0) if the file cannot be read.
