@@ -16,6 +16,7 @@
 #include "grpvss/io/mesh_file.hpp"
 #include "grpvss/io/resource_path.hpp"
 #include "grpvss/io/text_file.hpp"
+#include "round_trip_text.hpp"
 #include "urdf_joint_values.hpp"
 #include "urdf_tree.hpp"
 #include "urdf_xml.hpp"
@@ -29,12 +30,6 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 std::string text_of(const Eigen::Vector3d& v) {
   char buffer[128];
   std::snprintf(buffer, sizeof buffer, "%.17g %.17g %.17g", v.x(), v.y(), v.z());
-  return buffer;
-}
-
-std::string round_trip_text(double x) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%.17g", x);
   return buffer;
 }
 

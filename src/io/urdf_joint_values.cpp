@@ -8,15 +8,10 @@
 
 #include "grpvss/common/input_error.hpp"
 #include "grpvss/common/unit_roundoff.hpp"
+#include "round_trip_text.hpp"
 
 namespace grpvss::io {
 namespace {
-
-std::string round_trip_text(double x) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%.17g", x);
-  return buffer;
-}
 
 class SideJointResolver {
  public:

@@ -76,7 +76,7 @@ std::string temporary_directory() {
   return directory;
 }
 
-cell::LoadedCell load(const std::string& name, const std::string& text) {
+cell::LoadedCell load_cell_text(const std::string& name, const std::string& text) {
   const std::string file = temporary_directory() + "/" + name;
   std::ofstream(file) << text;
   return cell::load_cell(file);
@@ -92,7 +92,7 @@ const FreeRobot& free_robot(Robot robot) {
   auto& entry = cache[robot];
   if (!entry) {
     entry = std::make_unique<FreeRobot>();
-    entry->cell = load(robot == Robot::kUr5e ? "free-ur5e.yaml" : "free-panda.yaml",
+    entry->cell = load_cell_text(robot == Robot::kUr5e ? "free-ur5e.yaml" : "free-panda.yaml",
                        "units: m\n" + robot_yaml(robot) + allowed_yaml(robot) + "tolerance: 0.005\n");
     entry->oracle = std::make_unique<test::UrdfCellOracle>(entry->cell);
   }
@@ -204,7 +204,7 @@ struct Statistics {
 
 void run_case(Robot robot, int index, std::uint64_t seed, Statistics& stats) {
   const UrdfCase c = random_case(robot, seed);
-  const cell::LoadedCell loaded = load(fmt::format("case-{}.yaml", seed), c.cell_text);
+  const cell::LoadedCell loaded = load_cell_text(fmt::format("case-{}.yaml", seed), c.cell_text);
   const PathProgram program = io::parse_path_file(c.path_text, "path.txt", loaded.robot);
   const test::UrdfCellOracle oracle(loaded);
   using Clock = std::chrono::steady_clock;

@@ -4,18 +4,13 @@
 
 #include "grpvss/io/trajectory_file.hpp"
 #include "support/input_error_expectations.hpp"
+#include "support/joint_vector.hpp"
 
 namespace grpvss::io {
 namespace {
 
+using grpvss::test::vector;
 using grpvss::testing::expect_input_error;
-
-Eigen::VectorXd vector(std::initializer_list<double> values) {
-  Eigen::VectorXd v(static_cast<Eigen::Index>(values.size()));
-  Eigen::Index i = 0;
-  for (double x : values) v[i++] = x;
-  return v;
-}
 
 void expect_csv_error(const std::string& text, int line, const std::string& message) {
   expect_input_error([&] { parse_trajectory_csv(text, "t.csv"); }, "t.csv", line,

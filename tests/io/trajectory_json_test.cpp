@@ -5,18 +5,13 @@
 
 #include "grpvss/io/trajectory_file.hpp"
 #include "support/input_error_expectations.hpp"
+#include "support/joint_vector.hpp"
 
 namespace grpvss::io {
 namespace {
 
+using grpvss::test::vector;
 using grpvss::testing::expect_input_error;
-
-Eigen::VectorXd vector(std::initializer_list<double> values) {
-  Eigen::VectorXd v(static_cast<Eigen::Index>(values.size()));
-  Eigen::Index i = 0;
-  for (double x : values) v[i++] = x;
-  return v;
-}
 
 /// A document with joints a, b whose points are on lines 4, 5, ... (one per line).
 std::string document(const std::vector<std::string>& points) {

@@ -9,26 +9,20 @@
 
 #include "grpvss/kinematics/arm_configuration.hpp"
 #include "support/angles.hpp"
+#include "support/model_angles.hpp"
 #include "support/pose_error.hpp"
 
 namespace grpvss::kinematics {
 namespace {
 
+using grpvss::test::angle_difference;
 using grpvss::test::kPi;
+using grpvss::test::random_angles;
 
 // ABB IRB 2400/10, metres (Brandstoetter et al. 2014).
 OpwParameters irb2400() { return {0.100, -0.135, 0.0, 0.615, 0.705, 0.755, 0.085}; }
 // An arm with every length non-zero, the shoulder offset b included.
 OpwParameters skewed() { return {0.15, -0.04, 0.09, 0.5, 0.6, 0.55, 0.1}; }
-
-ModelAngles random_angles(std::mt19937_64& generator) {
-  std::uniform_real_distribution<double> uniform(-kPi, kPi);
-  ModelAngles t;
-  for (double& value : t) value = uniform(generator);
-  return t;
-}
-
-double angle_difference(double a, double b) { return std::abs(std::remainder(a - b, 2 * kPi)); }
 
 TEST(OpwKinematics, ForwardAtZeroPlacesTheFlangeAboveTheWristCentre) {
   const Eigen::Isometry3d X = opw_forward(irb2400(), {0, 0, 0, 0, 0, 0});

@@ -9,12 +9,15 @@
 
 #include "grpvss/kinematics/arm_configuration.hpp"
 #include "support/angles.hpp"
+#include "support/model_angles.hpp"
 #include "support/pose_error.hpp"
 
 namespace grpvss::kinematics {
 namespace {
 
+using grpvss::test::angle_difference;
 using grpvss::test::kPi;
+using grpvss::test::random_angles;
 
 UrParameters ur5e_parameters() { return {0.1625, -0.425, -0.3922, 0.1333, 0.0997, 0.0996}; }
 UrParameters ur10e() { return {0.1807, -0.6127, -0.57155, 0.17415, 0.11985, 0.11655}; }
@@ -30,15 +33,6 @@ Eigen::Isometry3d reference_forward(const UrParameters& p, const ModelAngles& t)
   return dh(t[0], p.d1, 0, kPi / 2) * dh(t[1], 0, p.a2, 0) * dh(t[2], 0, p.a3, 0) *
          dh(t[3], p.d4, 0, kPi / 2) * dh(t[4], p.d5, 0, -kPi / 2) * dh(t[5], p.d6, 0, 0);
 }
-
-ModelAngles random_angles(std::mt19937_64& generator) {
-  std::uniform_real_distribution<double> uniform(-kPi, kPi);
-  ModelAngles t;
-  for (double& value : t) value = uniform(generator);
-  return t;
-}
-
-double angle_difference(double a, double b) { return std::abs(std::remainder(a - b, 2 * kPi)); }
 
 TEST(UrKinematics, ForwardIsUrsDhProduct) {
   std::mt19937_64 generator(3);
