@@ -57,7 +57,12 @@ function(grpvss_add_stages)
   grpvss_add_stage(model DEPENDS common)
   grpvss_add_stage(io DEPENDS model
                    PRIVATE_LIBS fmt::fmt nlohmann_json::nlohmann_json urdfdom::urdfdom_model
-                                assimp::assimp tinyxml2::tinyxml2 yaml-cpp)
+                                tinyxml2::tinyxml2 yaml-cpp ${CMAKE_DL_LIBS})
+  # assimp is loaded when a process reads its first mesh (io/assimp_import.cpp, dlopen): its
+  # headers and the name of its library, not a link (docs/performance.md#process-start).
+  target_include_directories(grpvss_io SYSTEM PRIVATE
+                             $<TARGET_PROPERTY:assimp::assimp,INTERFACE_INCLUDE_DIRECTORIES>)
+  target_compile_definitions(grpvss_io PRIVATE GRPVSS_ASSIMP_LIBRARY="${GRPVSS_ASSIMP_SONAME}")
   grpvss_add_stage(kinematics DEPENDS model PRIVATE_LIBS fmt::fmt ${CMAKE_DL_LIBS})
   grpvss_add_stage(motion DEPENDS kinematics PRIVATE_LIBS fmt::fmt gmpxx gmp)
   grpvss_add_stage(geometry DEPENDS model)

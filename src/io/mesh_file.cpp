@@ -10,12 +10,11 @@
 #include <string>
 #include <system_error>
 
-#include <assimp/Importer.hpp>
-#include <assimp/config.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 #include <Eigen/Core>
 
+#include "assimp_import.hpp"
 #include "grpvss/common/input_error.hpp"
 #include "grpvss/io/text_file.hpp"
 
@@ -152,15 +151,9 @@ PlacedVertex place_vertex(const aiVector3D& v, const NodeTransform& transform,
   return {p, bound.norm()};
 }
 
-const aiScene* import_scene(Assimp::Importer& importer, const std::string& path,
-                            const MeshReadOptions& options) {
-  importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION,
-                           !options.apply_collada_up_axis);
+ImportedScene import_scene(const std::string& path, const MeshReadOptions& options) {
   // Triangulate splits polygons without moving vertices; no step that transforms positions.
-  const aiScene* scene = importer.ReadFile(path, aiProcess_Triangulate);
-  if (scene == nullptr) {
-    throw InputError(path, 0, "a mesh assimp can read", importer.GetErrorString());
-  }
+  ImportedScene scene = import_with_assimp(path, aiProcess_Triangulate, options.apply_collada_up_axis);
   if (scene->mRootNode == nullptr) {
     throw InputError(path, 0, "a mesh with a scene node", "none");
   }
@@ -268,8 +261,7 @@ MeshFile read_mesh_file(const std::string& path, const MeshReadOptions& options)
   const MeshFormat format = format_of(path);
   check_file(path);
   check_scale(path, options.scale);
-  Assimp::Importer importer;
-  const aiScene* scene = import_scene(importer, path, options);
+  const ImportedScene scene = import_scene(path, options);
   NodeTransform root;
   if (format == MeshFormat::kCollada && options.apply_collada_up_axis) {
     // assimp turned the file's up axis onto +y; one exact turn more puts it on +z.

@@ -9,10 +9,12 @@
 
 namespace grpvss::test {
 
-CliRun run_cli(const std::string& directory, const std::string& arguments) {
+CliRun run_cli(const std::string& directory, const std::string& arguments,
+               const std::string& environment) {
   const std::string out = directory + "/.stdout";
   const std::string err = directory + "/.stderr";
-  const int status = std::system(("cd " + directory + " && " + GRPVSS_CLI + " " + arguments +
+  const std::string prefix = environment.empty() ? "" : environment + " ";
+  const int status = std::system(("cd " + directory + " && " + prefix + GRPVSS_CLI + " " + arguments +
                                   " > " + out + " 2> " + err)
                                      .c_str());
   CliRun run;

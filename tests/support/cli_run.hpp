@@ -13,8 +13,10 @@ struct CliRun {
   std::string err;     ///< standard error
 };
 
-/// `grpvss <arguments>` run by the shell in `directory`.
-CliRun run_cli(const std::string& directory, const std::string& arguments);
+/// `grpvss <arguments>` run by the shell in `directory`; `environment` ("NAME=value ...", shell
+/// words) is set for that run only.
+CliRun run_cli(const std::string& directory, const std::string& arguments,
+               const std::string& environment = "");
 
 /// The N of `steps: N` in verify's summary, -1 when the summary has none.
 int summary_steps(const std::string& summary);
