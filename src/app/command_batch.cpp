@@ -38,7 +38,7 @@ struct BatchTally {
   }
 };
 
-void print_summary(const BatchTally& tally, std::size_t jobs, double seconds) {
+void print_batch_summary(const BatchTally& tally, std::size_t jobs, double seconds) {
   std::string counts;
   for (const auto& [verdict, count] : tally.counts) {
     counts += fmt::format("{}{} {}", counts.empty() ? "" : ", ", count, verdict);
@@ -77,7 +77,7 @@ int run_batch_command(const BatchArguments& args) {
         });
   }
   const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
-  if (!args.quiet) print_summary(tally, manifest.jobs.size(), elapsed.count());
+  if (!args.quiet) print_batch_summary(tally, manifest.jobs.size(), elapsed.count());
   return tally.exit_code;
 }
 

@@ -34,7 +34,7 @@ void validate_vectors(const std::vector<Eigen::VectorXd>& vectors, int joints, c
   }
 }
 
-void validate(const JointTrajectory& trajectory) {
+void validate_trajectory(const JointTrajectory& trajectory) {
   const int waypoints = trajectory.waypoint_count();
   require(waypoints >= 1, "at least one waypoint");
   require(trajectory.joint_count() >= 1, "at least one joint");
@@ -70,7 +70,7 @@ void check_round_to_nearest() {
 
 JointTrajectoryMotion::JointTrajectoryMotion(JointTrajectory trajectory)
     : trajectory_(std::move(trajectory)) {
-  validate(trajectory_);
+  validate_trajectory(trajectory_);
   interpolation_ = trajectory_.has_velocities() ? JointInterpolation::kCubicHermite
                                                 : JointInterpolation::kLinear;
 }

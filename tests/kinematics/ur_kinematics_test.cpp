@@ -67,7 +67,7 @@ TEST(UrKinematics, ArmSidesAreTheWristPointAndElbowHeights) {
   }
 }
 
-void expect_round_trip(const UrParameters& p, std::uint64_t seed) {
+void expect_ur_round_trip(const UrParameters& p, std::uint64_t seed) {
   std::mt19937_64 generator(seed);
   for (int trial = 0; trial < 1000; ++trial) {
     const ModelAngles t = random_angles(generator);
@@ -94,8 +94,8 @@ void expect_round_trip(const UrParameters& p, std::uint64_t seed) {
 }
 
 TEST(UrKinematics, EveryBranchReachesThePoseAndOneIsTheOriginal) {
-  expect_round_trip(ur5e_parameters(), 21);
-  expect_round_trip(ur10e(), 22);
+  expect_ur_round_trip(ur5e_parameters(), 21);
+  expect_ur_round_trip(ur10e(), 22);
 }
 
 TEST(UrKinematics, WristSingularPoseTakesTheGivenTheta6) {
