@@ -11,20 +11,11 @@
 #include "grpvss/motion/cp_line.hpp"
 #include "grpvss/motion/ptp_motion.hpp"
 #include "support/exact_hull_lp.hpp"
+#include "support/oracle_margins.hpp"
 #include "support/kinematics_reference.hpp"
 
 namespace grpvss::test {
 namespace {
-
-// Margins far above double rounding (coordinates here are < 10^3, a dot product's rounding
-// ~10^-13 |v|_1 (1 + scale)): a plane or sphere gap larger than this separates exactly.
-double rounding_margin(double scale) { return 1e-9 * (1.0 + scale); }
-
-double max_abs(const std::vector<Eigen::Vector3d>& points) {
-  double largest = 0.0;
-  for (const auto& p : points) largest = std::max(largest, p.cwiseAbs().maxCoeff());
-  return largest;
-}
 
 // The smallest distance from above, overall and for the 1-based `segment`.
 void keep_upper(OraclePathResult& result, int segment, double upper) {
@@ -75,7 +66,7 @@ Eigen::Vector3d gilbert_direction(const std::vector<Eigen::Vector3d>& a, const E
 void float_features(const std::vector<Eigen::Vector3d>& points, std::vector<Eigen::Vector3d>& normals,
                     std::vector<Eigen::Vector3d>& edges) {
   const std::size_t n = points.size();
-  const double slack = 1e-9 * (1.0 + max_abs(points));
+  const double slack = 1e-9 * (1.0 + max_abs_coordinate(points));
   auto add_unique = [](std::vector<Eigen::Vector3d>& list, const Eigen::Vector3d& d, bool oriented) {
     for (const auto& e : list) {
       if (e.dot(d) > 1.0 - 1e-9 || (!oriented && e.dot(d) < -1.0 + 1e-9)) return;
@@ -231,7 +222,7 @@ OracleContact MotionOracle::check(const Eigen::VectorXd& q, bool stop_at_contact
         const double scale = center_W.cwiseAbs().maxCoeff() + hull.radius +
                              obstacle.center.cwiseAbs().maxCoeff() + obstacle.radius;
         const double sphere_gap = (center_W - obstacle.center).norm() - hull.radius -
-                                  obstacle.radius - 3.0 * rounding_margin(scale);
+                                  obstacle.radius - 3.0 * oracle_rounding_margin(scale);
         // The spheres prove separation, and the gap bounds the distance from below: nothing
         // to learn from this pair.
         if (sphere_gap > 0.0 && sphere_gap >= result.min_distance_estimate) continue;
@@ -241,13 +232,13 @@ OracleContact MotionOracle::check(const Eigen::VectorXd& q, bool stop_at_contact
           placed_ready = true;
         }
         // Pre-filter: a plane normal to v with a gap beyond rounding over EVERY point.
-        const double scale_points = std::max(max_abs(placed), max_abs(obstacle.points));
+        const double scale_points = std::max(max_abs_coordinate(placed), max_abs_coordinate(obstacle.points));
         auto plane_gap = [&](const Eigen::Vector3d& v) {
           double hull_low = std::numeric_limits<double>::infinity();
           double obstacle_high = -std::numeric_limits<double>::infinity();
           for (const auto& p : placed) hull_low = std::min(hull_low, v.dot(p));
           for (const auto& p : obstacle.points) obstacle_high = std::max(obstacle_high, v.dot(p));
-          return hull_low - obstacle_high - rounding_margin(scale_points) * v.lpNorm<1>();
+          return hull_low - obstacle_high - oracle_rounding_margin(scale_points) * v.lpNorm<1>();
         };
         const Eigen::Vector3d gilbert =
             gilbert_direction(placed, center_W, obstacle.points, obstacle.center);

@@ -14,23 +14,14 @@
 #include "grpvss/kinematics/urdf_chain.hpp"
 #include "grpvss/motion/ptp_motion.hpp"
 #include "support/exact_hull_lp.hpp"
+#include "support/oracle_margins.hpp"
 
 namespace grpvss::test {
 namespace {
 
-// A plane or sphere gap beyond this separates exactly (coordinates < 10 m here, a dot
-// product's rounding ~1e-15 |v|_1 (1 + scale)).
-double rounding_margin(double scale) { return 1e-9 * (1.0 + scale); }
-
-double max_abs(const std::vector<Eigen::Vector3d>& points) {
-  double largest = 0.0;
-  for (const auto& p : points) largest = std::max(largest, p.cwiseAbs().maxCoeff());
-  return largest;
-}
-
 // Gilbert's 1966 iteration (Frank-Wolfe on conv(A - B)): proposes a direction only.
 // `v` starts at a point of conv(A - B).
-Eigen::Vector3d gilbert_direction(const std::vector<Eigen::Vector3d>& a, const std::vector<Eigen::Vector3d>& b,
+Eigen::Vector3d gilbert_direction_from_start(const std::vector<Eigen::Vector3d>& a, const std::vector<Eigen::Vector3d>& b,
                                   Eigen::Vector3d v) {
   if (v.squaredNorm() == 0.0) return Eigen::Vector3d::UnitX();
   // 256 iterations towards a near-optimal plane; nearly touching pairs (1e-8 m over hulls of a
@@ -255,18 +246,18 @@ std::vector<std::vector<std::vector<Eigen::Vector3d>>> UrdfCellOracle::place(con
 }
 
 bool UrdfCellOracle::decide(const Shape& a, const Shape& b, double& distance, Eigen::Vector3d* direction) const {
-  const double scale = std::max(max_abs(a.points), max_abs(b.points));
-  const double sphere_gap = (a.center - b.center).norm() - a.radius - b.radius - 3.0 * rounding_margin(scale);
+  const double scale = std::max(max_abs_coordinate(a.points), max_abs_coordinate(b.points));
+  const double sphere_gap = (a.center - b.center).norm() - a.radius - b.radius - 3.0 * oracle_rounding_margin(scale);
   if (sphere_gap > 0.0) {
     distance = sphere_gap;
     return false;
   }
-  const Eigen::Vector3d v = gilbert_direction(a.points, b.points, start_point(a, b, direction));
+  const Eigen::Vector3d v = gilbert_direction_from_start(a.points, b.points, start_point(a, b, direction));
   if (direction != nullptr) *direction = v;
   double a_low = std::numeric_limits<double>::infinity(), b_high = -a_low;
   for (const auto& p : a.points) a_low = std::min(a_low, v.dot(p));
   for (const auto& p : b.points) b_high = std::max(b_high, v.dot(p));
-  const double gap = a_low - b_high - rounding_margin(scale) * v.lpNorm<1>();
+  const double gap = a_low - b_high - oracle_rounding_margin(scale) * v.lpNorm<1>();
   if (gap > 0.0) {
     distance = gap / v.norm();
     return false;
