@@ -4,7 +4,7 @@
 #include <cmath>
 #include <optional>
 
-#include <Eigen/SVD>
+#include <Eigen/Eigenvalues>
 
 #include "grpvss/kinematics/jacobian.hpp"
 #include "grpvss/motion/cp_line.hpp"
@@ -55,11 +55,17 @@ double CpModelCheck::reach(const SegmentPath& path, double s, const Eigen::Vecto
 
 bool CpModelCheck::near_singularity(const Eigen::VectorXd& q) {
   kinematics::forward_kinematics(cell_->chain(), q, workspace_);
-  const Eigen::MatrixXd jacobian = kinematics::point_jacobian(
+  const Eigen::Matrix<double, 3, Eigen::Dynamic> jacobian = kinematics::point_jacobian(
       cell_->chain(), workspace_, cell_->robot().joint_count(), Eigen::Vector3d::Zero());
   if (jacobian.cols() < 3) return false;
-  Eigen::JacobiSVD<Eigen::MatrixXd> svd(jacobian);
-  return svd.singularValues().minCoeff() < settings_.singular_value_threshold;
+  // The smallest singular value of the 3 x n Jacobian is the square root of the smallest
+  // eigenvalue of J J^T (3 x 3, closed form): a tenth of an SVD's cost. Its rounding, about
+  // eps |J|^2 in the eigenvalue, is ~1e-11 in sigma at the 1e-3 threshold.
+  const Eigen::Matrix3d gram = jacobian * jacobian.transpose();
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen;
+  eigen.computeDirect(gram, Eigen::EigenvaluesOnly);
+  const double threshold = settings_.singular_value_threshold;
+  return eigen.eigenvalues()(0) < threshold * threshold;
 }
 
 bool CpModelCheck::unreachable_next_to_a_limit(const SegmentPath& path, double s,

@@ -22,7 +22,7 @@
 namespace grpvss::geometry {
 namespace {
 
-using Q = CGAL::Gmpq;
+using Gmpq = CGAL::Gmpq;
 using CGAL::Mpzf;
 using testing::reference_crossing;
 using testing::reference_plane_side;
@@ -30,7 +30,7 @@ using testing::reference_round;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-Q to_rational(const Mpzf& x) { return static_cast<Q>(x); }
+Gmpq to_rational(const Mpzf& x) { return static_cast<Gmpq>(x); }
 
 /// A double with a random significand and an exponent in [-exponent_range, exponent_range].
 double random_double(std::mt19937_64& rng, int exponent_range) {

@@ -15,7 +15,7 @@ using grpvss::testing::first_lines;
 using grpvss::testing::source_file_text;
 using grpvss::testing::with_line_replaced;
 
-std::string sample() { return source_file_text("data/ibm7545/environment.txt"); }
+std::string sample_environment_text() { return source_file_text("data/ibm7545/environment.txt"); }
 
 void parse_environment_text(const std::string& text) { parse_environment_file(text, "environment.txt"); }
 
@@ -44,7 +44,7 @@ TEST(EnvironmentFile, ReadsTheIbm7545Sample) {
 
 TEST(EnvironmentFile, AcceptsHullsOfAnyPointCountWithTheHullKeyword) {
   // A 4-point hull, a thesis 16-point hull, and a 5-point hull, in one file.
-  const std::string body = first_lines(sample(), 19);  // angle, L, NOB = 2, first hull
+  const std::string body = first_lines(sample_environment_text(), 19);  // angle, L, NOB = 2, first hull
   const std::string text = with_line_replaced(body, 3, "3") + "HULL 4\n" +
                            tetrahedron_lines(4) + "# a comment line\nhull 5\n" +
                            tetrahedron_lines(5);
@@ -72,7 +72,7 @@ TEST(EnvironmentFile, RejectsAHullOfFewerThanFourPoints) {
 }
 
 TEST(EnvironmentFile, RejectsMorePointsThanTheFileBudgetBeforeReadingThem) {
-  const std::string text = first_lines(sample(), 19) + "HULL 1000000\n";
+  const std::string text = first_lines(sample_environment_text(), 19) + "HULL 1000000\n";
   expect_input_error([&] { parse_environment_text(text); }, "environment.txt", 20,
                      "environment.txt:20: expected at most 1000000 hull points in the file, "
                      "found 1000016 points by the end of hull 2 of the environment");
@@ -86,36 +86,36 @@ TEST(EnvironmentFile, RejectsADeclaredHullThatEndsEarly) {
 }
 
 TEST(EnvironmentFile, RejectsAFileEndingInsideAHull) {
-  expect_input_error([] { parse_environment_text(first_lines(sample(), 30)); }, "environment.txt", 31,
+  expect_input_error([] { parse_environment_text(first_lines(sample_environment_text(), 30)); }, "environment.txt", 31,
                      "environment.txt:31: expected 3 numbers for point 12 of hull 2 of the "
                      "environment (x, y, z), found end of file");
 }
 
 TEST(EnvironmentFile, RejectsAHullLineWithTwoNumbers) {
-  expect_input_error([] { parse_environment_text(with_line_replaced(sample(), 6, "20,15")); }, "environment.txt", 6,
+  expect_input_error([] { parse_environment_text(with_line_replaced(sample_environment_text(), 6, "20,15")); }, "environment.txt", 6,
                      "environment.txt:6: expected 3 numbers for point 3 of hull 1 of the "
                      "environment (x, y, z), found 2 numbers");
 }
 
 TEST(EnvironmentFile, RejectsAnAngleOutsideTheOpenInterval) {
-  expect_input_error([] { parse_environment_text(with_line_replaced(sample(), 1, "0")); }, "environment.txt", 1,
+  expect_input_error([] { parse_environment_text(with_line_replaced(sample_environment_text(), 1, "0")); }, "environment.txt", 1,
                      "environment.txt:1: expected a smallest angle theta strictly between 0 and "
                      "180 degrees, found 0");
-  expect_input_error([] { parse_environment_text(with_line_replaced(sample(), 1, "180.")); }, "environment.txt", 1,
+  expect_input_error([] { parse_environment_text(with_line_replaced(sample_environment_text(), 1, "180.")); }, "environment.txt", 1,
                      "environment.txt:1: expected a smallest angle theta strictly between 0 and "
                      "180 degrees, found 180");
 }
 
 TEST(EnvironmentFile, RejectsANonPositiveThickness) {
-  expect_input_error([] { parse_environment_text(with_line_replaced(sample(), 2, "-5")); }, "environment.txt", 2,
+  expect_input_error([] { parse_environment_text(with_line_replaced(sample_environment_text(), 2, "-5")); }, "environment.txt", 2,
                      "environment.txt:2: expected a positive smallest thickness L, found -5");
 }
 
 TEST(EnvironmentFile, RejectsNegativeNonIntegerAndAbsurdHullCounts) {
-  expect_input_error([] { parse_environment_text(with_line_replaced(sample(), 3, "-2")); }, "environment.txt", 3,
+  expect_input_error([] { parse_environment_text(with_line_replaced(sample_environment_text(), 3, "-2")); }, "environment.txt", 3,
                      "environment.txt:3: expected the number of obstacle hulls NOB between 0 and "
                      "100000, found -2");
-  expect_input_error([] { parse_environment_text(with_line_replaced(sample(), 3, "2.0")); }, "environment.txt", 3,
+  expect_input_error([] { parse_environment_text(with_line_replaced(sample_environment_text(), 3, "2.0")); }, "environment.txt", 3,
                      "environment.txt:3: expected an integer for the number of obstacle hulls "
                      "NOB, found '2.0'");
   expect_input_error([] { parse_environment_text("90\n5\n100001\n"); }, "environment.txt", 3,
@@ -132,7 +132,7 @@ TEST(EnvironmentFile, RejectsCoincidentPoints) {
 }
 
 TEST(EnvironmentFile, RejectsAHullWhosePointsAreCoplanar) {
-  std::string text = sample();
+  std::string text = sample_environment_text();
   for (int line = 28; line <= 35; ++line) {  // top octagon of hull 2 down onto z = 15
     text = with_line_replaced(text, line, "-12,10,15");
   }
@@ -168,7 +168,7 @@ TEST(EnvironmentFile, ParsesTheExtensionExampleOfTheDocumentation) {
 }
 
 TEST(EnvironmentFile, RejectsTrailingGarbage) {
-  expect_input_error([] { parse_environment_text(sample() + "1,2,3\n"); }, "environment.txt", 36,
+  expect_input_error([] { parse_environment_text(sample_environment_text() + "1,2,3\n"); }, "environment.txt", 36,
                      "environment.txt:36: expected end of file after the last obstacle hull, "
                      "found '1'");
 }

@@ -22,7 +22,7 @@ const RobotModel& ibm7545() {
   return robot;
 }
 
-std::string sample() { return source_file_text("data/ibm7545/path.txt"); }
+std::string sample_path_text() { return source_file_text("data/ibm7545/path.txt"); }
 
 void parse_path_text(const std::string& text) { parse_path_file(text, "path.txt", ibm7545()); }
 
@@ -84,7 +84,7 @@ TEST(PathFile, ReadsTheOutputSamplePath) {
 TEST(PathFile, LeavesJointTargetsOutsideTheLimitsToTheMotionStage) {
   // Joint 1's limits are [0, 200] degrees; thesis error 3 is decided later, not here.
   const PathProgram program =
-      parse_path_file(with_line_replaced(sample(), 3, "-30.,3."), "path.txt", ibm7545());
+      parse_path_file(with_line_replaced(sample_path_text(), 3, "-30.,3."), "path.txt", ibm7545());
   EXPECT_EQ(std::get<PtpJointSegment>(program.segments[0].spec).target[0], -30 * kDeg);
 }
 
@@ -95,66 +95,66 @@ TEST(PathFile, ReplacesAZeroAxisByUnitZWhenTheAngleIsZero) {
 }
 
 TEST(PathFile, RejectsAZeroAxisWithANonzeroAngle) {
-  expect_input_error([] { parse_path_text(with_line_replaced(sample(), 14, "-20.,-5.,2.,0.,0.,0.,30.")); },
+  expect_input_error([] { parse_path_text(with_line_replaced(sample_path_text(), 14, "-20.,-5.,2.,0.,0.,0.,30.")); },
                      "path.txt", 14,
                      "path.txt:14: expected a rotation axis (KX, KY, KZ) of nonzero length for "
                      "KTHETA = 30 in segment 3, found (0, 0, 0)");
 }
 
 TEST(PathFile, RejectsASegmentTypeOtherThanOneTwoOrThreeAsThesisError6) {
-  expect_input_error([] { parse_path_text(with_line_replaced(sample(), 7, "4")); }, "path.txt", 7,
+  expect_input_error([] { parse_path_text(with_line_replaced(sample_path_text(), 7, "4")); }, "path.txt", 7,
                      "path.txt:7: expected segment type 1, 2 or 3 (thesis error 6 in segment 2), "
                      "found 4");
-  expect_input_error([] { parse_path_text(with_line_replaced(sample(), 2, "0")); }, "path.txt", 2,
+  expect_input_error([] { parse_path_text(with_line_replaced(sample_path_text(), 2, "0")); }, "path.txt", 2,
                      "path.txt:2: expected segment type 1, 2 or 3 (thesis error 6 in segment 1), "
                      "found 0");
 }
 
 TEST(PathFile, RejectsZeroOrNegativeVelocities) {
-  expect_input_error([] { parse_path_text(with_line_replaced(sample(), 5, "5.,0")); }, "path.txt", 5,
+  expect_input_error([] { parse_path_text(with_line_replaced(sample_path_text(), 5, "5.,0")); }, "path.txt", 5,
                      "path.txt:5: expected a positive desired velocity VELDES_3 in segment 1, "
                      "found 0");
-  expect_input_error([] { parse_path_text(with_line_replaced(sample(), 12, "-3.")); }, "path.txt", 12,
+  expect_input_error([] { parse_path_text(with_line_replaced(sample_path_text(), 12, "-3.")); }, "path.txt", 12,
                      "path.txt:12: expected a positive desired velocity VELDES_4 in segment 2, "
                      "found -3");
 }
 
 TEST(PathFile, RejectsAJointLineWithOneNumber) {
-  expect_input_error([] { parse_path_text(with_line_replaced(sample(), 4, "50.")); }, "path.txt", 4,
+  expect_input_error([] { parse_path_text(with_line_replaced(sample_path_text(), 4, "50.")); }, "path.txt", 4,
                      "path.txt:4: expected 2 numbers for joint 2 of segment 1 (q_target, VELDES), "
                      "found 1 number");
 }
 
 TEST(PathFile, RejectsAWorldTargetWithSixNumbers) {
-  expect_input_error([] { parse_path_text(with_line_replaced(sample(), 8, "0.,20.,8.,0.,0.,-1.")); },
+  expect_input_error([] { parse_path_text(with_line_replaced(sample_path_text(), 8, "0.,20.,8.,0.,0.,-1.")); },
                      "path.txt", 8,
                      "path.txt:8: expected 7 numbers for the target of segment 2 (XEND, YEND, ZEND, "
                      "KX, KY, KZ, KTHETA), found 6 numbers");
 }
 
 TEST(PathFile, RejectsATruncatedFile) {
-  expect_input_error([] { parse_path_text(first_lines(sample(), 10)); }, "path.txt", 11,
+  expect_input_error([] { parse_path_text(first_lines(sample_path_text(), 10)); }, "path.txt", 11,
                      "path.txt:11: expected 1 number for the desired velocity VELDES_3 of segment "
                      "2, found end of file");
-  expect_input_error([] { parse_path_text(first_lines(sample(), 13)); }, "path.txt", 14,
+  expect_input_error([] { parse_path_text(first_lines(sample_path_text(), 13)); }, "path.txt", 14,
                      "path.txt:14: expected 7 numbers for the target of segment 3 (XEND, YEND, "
                      "ZEND, KX, KY, KZ, KTHETA), found end of file");
 }
 
 TEST(PathFile, RejectsBadSegmentCounts) {
-  expect_input_error([] { parse_path_text(with_line_replaced(sample(), 1, "0")); }, "path.txt", 1,
+  expect_input_error([] { parse_path_text(with_line_replaced(sample_path_text(), 1, "0")); }, "path.txt", 1,
                      "path.txt:1: expected the number of motion segments NOMS between 1 and "
                      "1000000, found 0");
-  expect_input_error([] { parse_path_text(with_line_replaced(sample(), 1, "three")); }, "path.txt", 1,
+  expect_input_error([] { parse_path_text(with_line_replaced(sample_path_text(), 1, "three")); }, "path.txt", 1,
                      "path.txt:1: expected an integer for the number of motion segments NOMS, "
                      "found 'three'");
 }
 
 TEST(PathFile, RejectsNonNumbersAndInfinity) {
-  expect_input_error([] { parse_path_text(with_line_replaced(sample(), 3, "50.,fast")); }, "path.txt", 3,
+  expect_input_error([] { parse_path_text(with_line_replaced(sample_path_text(), 3, "50.,fast")); }, "path.txt", 3,
                      "path.txt:3: expected a number for joint 1 of segment 1 (q_target, VELDES), "
                      "found 'fast'");
-  expect_input_error([] { parse_path_text(with_line_replaced(sample(), 14, "-20.,-5.,2.,0.,0.,-1.,inf")); },
+  expect_input_error([] { parse_path_text(with_line_replaced(sample_path_text(), 14, "-20.,-5.,2.,0.,0.,-1.,inf")); },
                      "path.txt", 14,
                      "path.txt:14: expected a finite number for the target of segment 3 (XEND, "
                      "YEND, ZEND, KX, KY, KZ, KTHETA), found 'inf'");
@@ -162,7 +162,7 @@ TEST(PathFile, RejectsNonNumbersAndInfinity) {
 
 TEST(PathFile, RejectsTrailingGarbage) {
   // A fourth segment that NOMS = 3 does not announce.
-  expect_input_error([] { parse_path_text(sample() + "3\n15.,2.,8.,0.,0.,-1.,30.\n"); }, "path.txt", 15,
+  expect_input_error([] { parse_path_text(sample_path_text() + "3\n15.,2.,8.,0.,0.,-1.,30.\n"); }, "path.txt", 15,
                      "path.txt:15: expected end of file after segment 3, found '3'");
 }
 

@@ -17,7 +17,7 @@ using grpvss::testing::with_line_replaced;
 
 const std::string kRobotPath = std::string(GRPVSS_SOURCE_DIR) + "/data/ibm7545/robot.txt";
 
-std::string sample() { return source_file_text("data/ibm7545/robot.txt"); }
+std::string sample_robot_text() { return source_file_text("data/ibm7545/robot.txt"); }
 
 /// Parses `text` as "robot.txt" (the name every message below starts with).
 void parse_robot_text(const std::string& text) { parse_robot_file(text, "robot.txt"); }
@@ -96,19 +96,19 @@ TEST(RobotFile, ReportsAnUnreadableFile) {
 }
 
 TEST(RobotFile, RejectsAFileEndingInsideAHull) {
-  expect_input_error([] { parse_robot_text(first_lines(sample(), 100)); }, "robot.txt", 101,
+  expect_input_error([] { parse_robot_text(first_lines(sample_robot_text(), 100)); }, "robot.txt", 101,
                      "robot.txt:101: expected 3 numbers for point 9 of hull 2 of link 1 (x, y, z), "
                      "found end of file");
 }
 
 TEST(RobotFile, RejectsAFileEndingBeforeTheHullCount) {
-  expect_input_error([] { parse_robot_text(first_lines(sample(), 9)); }, "robot.txt", 10,
+  expect_input_error([] { parse_robot_text(first_lines(sample_robot_text(), 9)); }, "robot.txt", 10,
                      "robot.txt:10: expected an integer for the number of hulls NOBAR_0 of link 0, "
                      "found end of file");
 }
 
 TEST(RobotFile, RejectsAFileEndingInsideTheJointRows) {
-  expect_input_error([] { parse_robot_text(first_lines(sample(), 4)); }, "robot.txt", 5,
+  expect_input_error([] { parse_robot_text(first_lines(sample_robot_text(), 4)); }, "robot.txt", 5,
                      "robot.txt:5: expected 8 numbers for joint 2 (alpha, d, a, home, MIN, MAX, "
                      "acc, dec), found end of file");
 }
@@ -119,91 +119,91 @@ TEST(RobotFile, RejectsAnEmptyFile) {
 }
 
 TEST(RobotFile, RejectsAHullPointWithTwoNumbers) {
-  expect_input_error([] { parse_robot_text(with_line_replaced(sample(), 20, "1,2")); }, "robot.txt", 20,
+  expect_input_error([] { parse_robot_text(with_line_replaced(sample_robot_text(), 20, "1,2")); }, "robot.txt", 20,
                      "robot.txt:20: expected 3 numbers for point 10 of hull 1 of link 0 (x, y, z), "
                      "found 2 numbers");
 }
 
 TEST(RobotFile, RejectsAJointRowWithSevenNumbers) {
   expect_input_error(
-      [] { parse_robot_text(with_line_replaced(sample(), 7, "0.0,0.0,0.0,0.0,0.0,9.8,0.7")); }, "robot.txt", 7,
+      [] { parse_robot_text(with_line_replaced(sample_robot_text(), 7, "0.0,0.0,0.0,0.0,0.0,9.8,0.7")); }, "robot.txt", 7,
       "robot.txt:7: expected 8 numbers for joint 3 (theta, alpha, a, home, MIN, MAX, acc, dec), "
       "found 7 numbers");
 }
 
 TEST(RobotFile, RejectsANonNumber) {
   expect_input_error(
-      [] { parse_robot_text(with_line_replaced(sample(), 3, "0.0,25.5,abc,0.0,0.0,200.0,2.,1.8")); },
+      [] { parse_robot_text(with_line_replaced(sample_robot_text(), 3, "0.0,25.5,abc,0.0,0.0,200.0,2.,1.8")); },
       "robot.txt", 3,
       "robot.txt:3: expected a number for joint 1 (alpha, d, a, home, MIN, MAX, acc, dec), "
       "found 'abc'");
 }
 
 TEST(RobotFile, RejectsNaNAndInfinity) {
-  expect_input_error([] { parse_robot_text(with_line_replaced(sample(), 150, "1.,NaN,7")); }, "robot.txt", 150,
+  expect_input_error([] { parse_robot_text(with_line_replaced(sample_robot_text(), 150, "1.,NaN,7")); }, "robot.txt", 150,
                      "robot.txt:150: expected a finite number for point 6 of hull 1 of link 3 "
                      "(x, y, z), found 'NaN'");
-  expect_input_error([] { parse_robot_text(with_line_replaced(sample(), 75, "inf")); }, "robot.txt", 75,
+  expect_input_error([] { parse_robot_text(with_line_replaced(sample_robot_text(), 75, "inf")); }, "robot.txt", 75,
                      "robot.txt:75: expected a finite number for the thickness D_1 of link 1, "
                      "found 'inf'");
 }
 
 TEST(RobotFile, RejectsGiganticMagnitude) {
-  expect_input_error([] { parse_robot_text(with_line_replaced(sample(), 11, "5.875,2e9,0")); }, "robot.txt", 11,
+  expect_input_error([] { parse_robot_text(with_line_replaced(sample_robot_text(), 11, "5.875,2e9,0")); }, "robot.txt", 11,
                      "robot.txt:11: expected a number of magnitude at most 1e9 for point 1 of hull 1 "
                      "of link 0 (x, y, z), found '2e9'");
 }
 
 TEST(RobotFile, RejectsMinAboveMax) {
   expect_input_error(
-      [] { parse_robot_text(with_line_replaced(sample(), 3, "0.0,25.5,15.8,0.0,10.0,0.0,2.,1.8")); },
+      [] { parse_robot_text(with_line_replaced(sample_robot_text(), 3, "0.0,25.5,15.8,0.0,10.0,0.0,2.,1.8")); },
       "robot.txt", 3, "robot.txt:3: expected MIN <= MAX for joint 1, found MIN 10 > MAX 0");
 }
 
 TEST(RobotFile, RejectsHomeOutsideTheLimits) {
   expect_input_error(
-      [] { parse_robot_text(with_line_replaced(sample(), 3, "0.0,25.5,15.8,250,0.0,200.0,2.,1.8")); },
+      [] { parse_robot_text(with_line_replaced(sample_robot_text(), 3, "0.0,25.5,15.8,250,0.0,200.0,2.,1.8")); },
       "robot.txt", 3,
       "robot.txt:3: expected home within [MIN, MAX] = [0, 200] for joint 1, found home 250");
   expect_input_error(
-      [] { parse_robot_text(with_line_replaced(sample(), 7, "0.0,0.0,0.0,-0.5,0.0,9.8,0.7,0.6")); },
+      [] { parse_robot_text(with_line_replaced(sample_robot_text(), 7, "0.0,0.0,0.0,-0.5,0.0,9.8,0.7,0.6")); },
       "robot.txt", 7,
       "robot.txt:7: expected home within [MIN, MAX] = [0, 9.8] for joint 3, found home -0.5");
 }
 
 TEST(RobotFile, RejectsZeroOrNegativeAccelerationAndDeceleration) {
   expect_input_error(
-      [] { parse_robot_text(with_line_replaced(sample(), 5, "180.0,0.0,9.8,0.0,0.0,135.0,0,1.8")); },
+      [] { parse_robot_text(with_line_replaced(sample_robot_text(), 5, "180.0,0.0,9.8,0.0,0.0,135.0,0,1.8")); },
       "robot.txt", 5, "robot.txt:5: expected a positive maximum acceleration acc for joint 2, found 0");
   expect_input_error(
-      [] { parse_robot_text(with_line_replaced(sample(), 9, "0.0,15.05,0.0,0.0,-180.0,180.0,2.,-1.8")); },
+      [] { parse_robot_text(with_line_replaced(sample_robot_text(), 9, "0.0,15.05,0.0,0.0,-180.0,180.0,2.,-1.8")); },
       "robot.txt", 9,
       "robot.txt:9: expected a positive maximum deceleration dec for joint 4, found -1.8");
 }
 
 TEST(RobotFile, RejectsAJointIndicatorOtherThanZeroOrOne) {
-  expect_input_error([] { parse_robot_text(with_line_replaced(sample(), 4, "2")); }, "robot.txt", 4,
+  expect_input_error([] { parse_robot_text(with_line_replaced(sample_robot_text(), 4, "2")); }, "robot.txt", 4,
                      "robot.txt:4: expected the joint type IND_2: 0 (revolute) or 1 (prismatic), "
                      "found 2");
 }
 
 TEST(RobotFile, RejectsANonIntegerCount) {
-  expect_input_error([] { parse_robot_text(with_line_replaced(sample(), 1, "4.5")); }, "robot.txt", 1,
+  expect_input_error([] { parse_robot_text(with_line_replaced(sample_robot_text(), 1, "4.5")); }, "robot.txt", 1,
                      "robot.txt:1: expected an integer for the number of joints N, found '4.5'");
-  expect_input_error([] { parse_robot_text(with_line_replaced(sample(), 76, "2.")); }, "robot.txt", 76,
+  expect_input_error([] { parse_robot_text(with_line_replaced(sample_robot_text(), 76, "2.")); }, "robot.txt", 76,
                      "robot.txt:76: expected an integer for the number of hulls NOBAR_1 of link 1, "
                      "found '2.'");
 }
 
 TEST(RobotFile, RejectsZeroAndAbsurdJointCounts) {
-  expect_input_error([] { parse_robot_text(with_line_replaced(sample(), 1, "0")); }, "robot.txt", 1,
+  expect_input_error([] { parse_robot_text(with_line_replaced(sample_robot_text(), 1, "0")); }, "robot.txt", 1,
                      "robot.txt:1: expected the number of joints N between 1 and 64, found 0");
-  expect_input_error([] { parse_robot_text(with_line_replaced(sample(), 1, "65")); }, "robot.txt", 1,
+  expect_input_error([] { parse_robot_text(with_line_replaced(sample_robot_text(), 1, "65")); }, "robot.txt", 1,
                      "robot.txt:1: expected the number of joints N between 1 and 64, found 65");
 }
 
 TEST(RobotFile, RejectsNegativeAndAbsurdHullCounts) {
-  expect_input_error([] { parse_robot_text(with_line_replaced(sample(), 10, "-1")); }, "robot.txt", 10,
+  expect_input_error([] { parse_robot_text(with_line_replaced(sample_robot_text(), 10, "-1")); }, "robot.txt", 10,
                      "robot.txt:10: expected the number of hulls NOBAR_0 of link 0 between 0 and "
                      "100000, found -1");
   // Rejected before any hull is read or allocated.
@@ -213,17 +213,17 @@ TEST(RobotFile, RejectsNegativeAndAbsurdHullCounts) {
 }
 
 TEST(RobotFile, RejectsZeroThickness) {
-  expect_input_error([] { parse_robot_text(with_line_replaced(sample(), 143, "0")); }, "robot.txt", 143,
+  expect_input_error([] { parse_robot_text(with_line_replaced(sample_robot_text(), 143, "0")); }, "robot.txt", 143,
                      "robot.txt:143: expected a positive thickness D_3 of link 3, found 0");
 }
 
 TEST(RobotFile, RejectsTrailingGarbage) {
-  expect_input_error([] { parse_robot_text(sample() + "\n7\n"); }, "robot.txt", 196,
+  expect_input_error([] { parse_robot_text(sample_robot_text() + "\n7\n"); }, "robot.txt", 196,
                      "robot.txt:196: expected end of file after the hulls of link 4, found '7'");
 }
 
 TEST(RobotFile, RejectsACoplanarHullAtItsFirstLine) {
-  std::string text = sample();
+  std::string text = sample_robot_text();
   for (int line = 187; line <= 194; ++line) {  // lower octagon of link 4's hull onto z = 0
     text = with_line_replaced(text, line, "0.5,0.5,0");
   }
@@ -233,7 +233,7 @@ TEST(RobotFile, RejectsACoplanarHullAtItsFirstLine) {
 }
 
 TEST(RobotFile, RejectsACollinearHull) {
-  std::string text = sample();
+  std::string text = sample_robot_text();
   for (int line = 179; line <= 194; ++line) {
     text = with_line_replaced(text, line, std::to_string(line - 179) + ",0,0");
   }
