@@ -50,39 +50,44 @@ int expect_agreement_with_svd(const RobotCell& cell, double threshold, std::uint
   return singular;
 }
 
-TEST(CpSingularity, TheStretchedScaraElbowIsSingularAndTheBentOneIsNot) {
+// Calls visit(cell) with the IBM 7545 in its sample cell (tolerance 0.5 in.); the cell refers
+// to the robot and environment, which live here.
+template <class Visit>
+void with_ibm7545_cell(Visit visit) {
   const RobotModel robot = io::read_robot_file(test::ibm7545_file("robot.txt"));
   const Environment environment = io::read_environment_file(test::ibm7545_file("environment.txt"));
   CellSettings cell_settings;
   cell_settings.tolerance = 0.5;
-  const RobotCell cell(robot, environment, cell_settings);
-  CpModelCheck check(cell, CpModelSettings{});
-  Eigen::VectorXd q = Eigen::VectorXd::Zero(robot.joint_count());
-  q[1] = 0.0;  // elbow straight: the arm's reach direction loses its radial motion
-  EXPECT_TRUE(check.near_singularity(q));
-  EXPECT_LT(reference_smallest_singular_value(cell, q), 1e-12);
-  q[1] = 1e-5;  // sigma ~ 1e-5 x the forearm: still below 1e-3
-  EXPECT_TRUE(check.near_singularity(q));
-  q[1] = 0.5;
-  EXPECT_FALSE(check.near_singularity(q));
-  // The vertical joint's column is the unit z: sigma_min is at most 1 (in. per in.).
-  EXPECT_NEAR(reference_smallest_singular_value(cell, q), 1.0, 1e-12);
+  visit(RobotCell(robot, environment, cell_settings));
+}
+
+TEST(CpSingularity, TheStretchedScaraElbowIsSingularAndTheBentOneIsNot) {
+  with_ibm7545_cell([](const RobotCell& cell) {
+    const RobotModel& robot = cell.robot();
+    CpModelCheck check(cell, CpModelSettings{});
+    Eigen::VectorXd q = Eigen::VectorXd::Zero(robot.joint_count());
+    q[1] = 0.0;  // elbow straight: the arm's reach direction loses its radial motion
+    EXPECT_TRUE(check.near_singularity(q));
+    EXPECT_LT(reference_smallest_singular_value(cell, q), 1e-12);
+    q[1] = 1e-5;  // sigma ~ 1e-5 x the forearm: still below 1e-3
+    EXPECT_TRUE(check.near_singularity(q));
+    q[1] = 0.5;
+    EXPECT_FALSE(check.near_singularity(q));
+    // The vertical joint's column is the unit z: sigma_min is at most 1 (in. per in.).
+    EXPECT_NEAR(reference_smallest_singular_value(cell, q), 1.0, 1e-12);
+  });
 }
 
 TEST(CpSingularity, AgreesWithAnSvdOnRandomConfigurations) {
-  {
-    const RobotModel robot = io::read_robot_file(test::ibm7545_file("robot.txt"));
-    const Environment environment = io::read_environment_file(test::ibm7545_file("environment.txt"));
-    CellSettings cell_settings;
-    cell_settings.tolerance = 0.5;
-    const RobotCell cell(robot, environment, cell_settings);
+  with_ibm7545_cell([](const RobotCell& cell) {
+    const RobotModel& robot = cell.robot();
     expect_agreement_with_svd(cell, 1e-3, 1);
     // A threshold that random configurations straddle: both answers are exercised.
     EXPECT_GT(expect_agreement_with_svd(cell, 0.2 * reference_smallest_singular_value(
                                                         cell, Eigen::VectorXd::Constant(robot.joint_count(), 0.3)),
                                         2),
               0);
-  }
+  });
   for (const std::string& file : {kSourceDir + "/tests/data/cells/ur5e-post.yaml",
                                   kSourceDir + "/data/sixaxis/cell.yaml"}) {
     const cell::LoadedCell loaded = cell::load_cell(file);
