@@ -70,12 +70,18 @@ class Ibm7545Ik final : public InverseKinematics {
     const Eigen::Vector4d near = q_near;
     const double bearing = std::atan2(p.y(), p.x());
     const double elbow = std::acos(c2);
+    // The two elbow branches mirror each other: theta2 = +-elbow, and the angle between the
+    // bearing and link 1 is +-atan2(a2 sin(elbow), a1 + a2 cos(elbow)), with sin(elbow) =
+    // sqrt(1 - c2^2) and cos(elbow) = c2. One atan2 serves both branches (a CP line solves
+    // the IK every 0.5 in.; the trigonometry was most of its cost).
+    const double sin_elbow = std::sqrt(std::max(0.0, (1.0 - c2) * (1.0 + c2)));
+    const double link1_from_bearing = std::atan2(a2 * sin_elbow, a1 + a2 * c2);
     bool solved = false;
     Eigen::Vector4d best_q;
     double best_distance = std::numeric_limits<double>::infinity();
     for (const double branch : {1.0, -1.0}) {
       const double theta2 = branch * elbow;
-      const double theta1 = bearing - std::atan2(a2 * std::sin(theta2), a1 + a2 * std::cos(theta2));
+      const double theta1 = bearing - branch * link1_from_bearing;
       // yaw = theta1 + theta2 - theta3_offset - theta4, theta_i = dh_i.theta + q_i.
       const double theta4 = theta1 + theta2 - dh3.theta - yaw;
       Eigen::Vector4d q;

@@ -90,6 +90,40 @@ TEST(Ibm7545Ik, RecognisesTheStructure) {
   EXPECT_FALSE(is_ibm7545_structure(model));
 }
 
+// At the stretched (theta2 = 0) and the folded (theta2 = 180 deg) elbow both branches meet:
+// sin(elbow) is 0 there (or the square root of a rounded negative number, clamped to 0).
+// Each pose round-trips within 1e-8, and the straight elbow is found at joint 2's limit 0.
+TEST(Ibm7545Ik, StretchedAndFoldedElbowsRoundTrip) {
+  RobotModel model = test::make_ibm7545_model();
+  model.joints[1].minimum = deg(-180);
+  model.joints[1].maximum = deg(180);
+  const KinematicChain chain = make_chain(model);
+  const auto ik = make_ibm7545_ik(model);
+  for (const double elbow_deg : {0.0, 180.0, -180.0}) {
+    for (const double q1_deg : {10.0, 95.0, 170.0}) {
+      Eigen::VectorXd q_true(4);
+      q_true << deg(q1_deg), deg(elbow_deg), 3.0, deg(20.0);
+      const Eigen::Isometry3d X_target = end_effector_pose(chain, q_true);
+      const IkSolution solution = ik->solve(X_target, q_true);
+      ASSERT_EQ(solution.status, IkStatus::kSolved) << q1_deg << " " << elbow_deg;
+      const Eigen::Isometry3d X_solved = end_effector_pose(chain, solution.q);
+      EXPECT_LT(test::position_error(X_solved, X_target), 1e-8) << q1_deg << " " << elbow_deg;
+      EXPECT_LT(test::rotation_error(X_solved, X_target), 1e-8) << q1_deg << " " << elbow_deg;
+      EXPECT_NEAR(std::abs(solution.q[1]), std::abs(q_true[1]), 1e-6) << q1_deg << " " << elbow_deg;
+    }
+  }
+  // On the thesis's limits (joint 2 in [0, 135] deg) the stretched arm is at the limit.
+  const RobotModel thesis = test::make_ibm7545_model();
+  Eigen::VectorXd stretched(4);
+  stretched << deg(40.0), 0.0, 2.0, deg(-30.0);
+  const IkSolution solution = make_ibm7545_ik(thesis)->solve(
+      end_effector_pose(make_chain(thesis), stretched), Eigen::VectorXd::Zero(4));
+  ASSERT_EQ(solution.status, IkStatus::kSolved);
+  EXPECT_GE(solution.q[1], 0.0);
+  EXPECT_LT(solution.q[1], 1e-6);
+  EXPECT_NEAR(solution.q[0], deg(40.0), 1e-6);
+}
+
 // Every solution of the SCARA for a reachable pose, derived independently of the solver:
 // the mirror elbow reflects both links across the line from the base axis to the wrist
 // (theta1' = 2 phi - theta1, theta2' = -theta2, yaw kept), and every revolute joint may move
