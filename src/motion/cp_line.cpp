@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 #include <fmt/core.h>
 
@@ -83,10 +84,11 @@ CpSampling sample_cp_line(const RobotModel& robot, const KinematicsAccess& kinem
     return result;
   }
   const int pieces = std::max(1, static_cast<int>(std::ceil(line.length() / spacing)));
+  result.samples.reserve(static_cast<std::size_t>(pieces) + 1);
   result.samples.push_back({0.0, q_start});
   for (int k = 1; k <= pieces; ++k) {
     const double l = k == pieces ? line.length() : line.length() * k / pieces;
-    const auto q = solve_within_limits(robot, kinematics, line.pose_at(l), result.samples.back().q);
+    auto q = solve_within_limits(robot, kinematics, line.pose_at(l), result.samples.back().q);
     if (!q) {
       const Eigen::Vector3d p = line.pose_at(l).translation();
       result.error = make_thesis_error(
@@ -96,7 +98,7 @@ CpSampling sample_cp_line(const RobotModel& robot, const KinematicsAccess& kinem
                       l, line.length(), p.x(), p.y(), p.z()));
       return result;
     }
-    result.samples.push_back({l, *q});
+    result.samples.push_back({l, std::move(*q)});
   }
   return result;
 }
