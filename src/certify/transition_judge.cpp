@@ -119,8 +119,9 @@ void judge_self_pairs(const RobotCell& cell, const ProbeResult& from, const Prob
                       const Eigen::VectorXd& dq, TransitionRecord& record,
                       const StepAxisDistances* axis) {
   const std::vector<SelfPairHulls>& pairs = cell.self_pairs();
-  std::vector<int> routes(pairs.size(), 0);
-  bool any_route = false;
+  std::vector<int> routes;  // sized at the first pair with a revolution route
+  record.self_pair_motion_bounds.reserve(pairs.size());
+  record.self_pair_allowances.reserve(pairs.size());
   for (std::size_t p = 0; p < pairs.size(); ++p) {
     const auto a = static_cast<std::size_t>(pairs[p].a);
     const auto b = static_cast<std::size_t>(pairs[p].b);
@@ -128,7 +129,7 @@ void judge_self_pairs(const RobotCell& cell, const ProbeResult& from, const Prob
     double allowance = allowance_down(from.self_pairs[p].distance, to.self_pairs[p].distance);
     if (cell.hulls()[a].revolution_L) {
       // Either route proves the pair; the step keeps the one with more room.
-      any_route = true;
+      routes.resize(pairs.size(), 0);
       double revolution_bound = revolution_motion_bound(cell, pairs[p], dq, axis);
       if (axis != nullptr && revolution_bound > 0.0 && has_vertex_route(cell, pairs[p])) {
         revolution_bound = std::min(revolution_bound, vertex_route_motion_bound(cell, p, from, to, *axis));
@@ -148,7 +149,7 @@ void judge_self_pairs(const RobotCell& cell, const ProbeResult& from, const Prob
     record.self_pair_motion_bounds.push_back(bound);
     record.self_pair_allowances.push_back(allowance);
   }
-  if (any_route) record.self_pair_by_revolution = std::move(routes);
+  if (!routes.empty()) record.self_pair_by_revolution = std::move(routes);
 }
 
 double allowance_down(double radius_k, double radius_k1) {
@@ -176,6 +177,9 @@ TransitionRecord judge_transition(const RobotCell& cell, const ProbeResult& from
     axis.to = step_radii->kept_or_computed(to, scratch);
     axis.increments_up = increments_up(from.q, to.q, joint_variation);
   }
+  record.hull_motion_bounds.reserve(cell.hulls().size());
+  record.hull_allowances.reserve(cell.hulls().size());
+  record.governing.reserve(cell.hulls().size());
   for (std::size_t i = 0; i < cell.hulls().size(); ++i) {
     double bound = hull_motion_bound(cell, cell.hulls()[i], from, to, dq, joint_linear);
     if (step_radii != nullptr && bound > 0.0) {
