@@ -48,7 +48,7 @@ int ProbeResult::link_nearest_obstacle(const RobotCell& cell, int link) const {
 
 CellProbe::CellProbe(const RobotCell& cell)
     : cell_(&cell),
-      workspace_(cell.robot()),
+      workspace_(kinematics::Workspace::frames_only(cell.chain().joints.size())),
       self_pairs_(cell),
       warm_normals_(cell.hulls().size() * static_cast<std::size_t>(cell.obstacles().size())),
       has_warm_normal_(cell.hulls().size() * static_cast<std::size_t>(cell.obstacles().size()), 0),

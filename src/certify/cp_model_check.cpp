@@ -12,7 +12,9 @@
 namespace grpvss::certify {
 
 CpModelCheck::CpModelCheck(const RobotCell& cell, const CpModelSettings& settings)
-    : cell_(&cell), settings_(settings), workspace_(cell.robot()) {
+    : cell_(&cell),
+      settings_(settings),
+      workspace_(kinematics::Workspace::frames_only(cell.chain().joints.size())) {
   for (const HullPoints& hull : cell.robot().links.back().hulls) {
     for (const auto& p_L : hull.points) end_link_reach_ = std::max(end_link_reach_, p_L.norm());
   }
@@ -27,8 +29,8 @@ double CpModelCheck::deviation(const SegmentPath& path, double s0, const Eigen::
   const double angle_limit = limit / end_link_reach_;
   double deviation = 0.0;
   for (const double fraction : {0.25, 0.5, 0.75}) {
-    const Eigen::VectorXd q_mid = q0 + fraction * (q1 - q0);
-    const Eigen::Isometry3d X_WE_joint_linear = kinematics::end_effector_pose(cell_->chain(), q_mid);
+    q_mid_ = q0 + fraction * (q1 - q0);
+    const Eigen::Isometry3d X_WE_joint_linear = kinematics::end_effector_pose(cell_->chain(), q_mid_);
     const Eigen::Isometry3d X_WE_line = path.line().pose_at(s0 + fraction * (s1 - s0));
     const Eigen::AngleAxisd rotation_error(X_WE_line.linear().transpose() *
                                            X_WE_joint_linear.linear());

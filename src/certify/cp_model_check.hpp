@@ -43,6 +43,7 @@ class CpModelCheck {
   CpModelSettings settings_;
   double end_link_reach_ = 1.0;  ///< max |p_L| over the last link's hulls (at least 1)
   kinematics::Workspace workspace_;
+  mutable Eigen::VectorXd q_mid_;  ///< deviation()'s scratch (a check runs every CP step)
 };
 
 }  // namespace grpvss::certify

@@ -28,9 +28,7 @@ double size_of(const Vector6d& e, double length_scale) {
 }  // namespace
 
 void AnalyticIk::refine(const Eigen::Isometry3d& X_WT, Vector6d& q) const {
-  Workspace ws;
-  ws.X_WL.assign(7, Eigen::Isometry3d::Identity());
-  ws.X_WJ.assign(6, Eigen::Isometry3d::Identity());
+  Workspace ws = Workspace::frames_only(6);
   const auto error_at = [&](const Eigen::VectorXd& at) {
     forward_kinematics(chain_, at, ws);
     return tool_error(X_WT, ws.X_WL.back() * X_ET());

@@ -23,9 +23,7 @@ std::optional<std::string> six_revolute_joints(const KinematicChain& chain) {
 
 ChainGeometry chain_geometry_at_zero(const KinematicChain& chain, const Eigen::Isometry3d& X_ET) {
   ChainGeometry geometry;
-  Workspace ws;
-  ws.X_WL.assign(chain.joints.size() + 1, Eigen::Isometry3d::Identity());
-  ws.X_WJ.assign(chain.joints.size(), Eigen::Isometry3d::Identity());
+  Workspace ws = Workspace::frames_only(chain.joints.size());
   forward_kinematics(chain, Eigen::VectorXd::Zero(chain.joint_count()), ws);
   for (const Eigen::Isometry3d& X_WJ : ws.X_WJ) {
     geometry.axes.push_back({X_WJ.translation(), X_WJ.linear().col(2).normalized()});

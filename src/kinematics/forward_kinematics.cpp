@@ -5,10 +5,7 @@
 
 namespace grpvss::kinematics {
 
-Workspace::Workspace(const RobotModel& model) {
-  const std::size_t n = model.joints.size();
-  X_WL.assign(n + 1, Eigen::Isometry3d::Identity());
-  X_WJ.assign(n, Eigen::Isometry3d::Identity());
+Workspace::Workspace(const RobotModel& model) : Workspace(frames_only(model.joints.size())) {
   hull_points_W.resize(model.links.size());
   for (std::size_t i = 0; i < model.links.size(); ++i) {
     const auto& hulls = model.links[i].hulls;
@@ -17,6 +14,13 @@ Workspace::Workspace(const RobotModel& model) {
       hull_points_W[i][h].assign(hulls[h].points.size(), Eigen::Vector3d::Zero());
     }
   }
+}
+
+Workspace Workspace::frames_only(std::size_t joint_count) {
+  Workspace ws;
+  ws.X_WL.assign(joint_count + 1, Eigen::Isometry3d::Identity());
+  ws.X_WJ.assign(joint_count, Eigen::Isometry3d::Identity());
+  return ws;
 }
 
 void forward_kinematics(const KinematicChain& chain, const Eigen::VectorXd& q, Workspace& ws) {

@@ -52,9 +52,7 @@ class NumericIk final : public InverseKinematics {
     if (q_near.size() != chain_.joint_count()) {
       throw std::logic_error("NumericIk: q_near has the wrong size");
     }
-    Workspace ws;
-    ws.X_WL.assign(chain_.joints.size() + 1, Eigen::Isometry3d::Identity());
-    ws.X_WJ.assign(chain_.joints.size(), Eigen::Isometry3d::Identity());
+    Workspace ws = Workspace::frames_only(chain_.joints.size());
 
     IkSolution best{IkStatus::kOutOfWorkspace, {}};
     double best_distance = std::numeric_limits<double>::infinity();

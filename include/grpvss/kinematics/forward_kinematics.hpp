@@ -17,6 +17,9 @@ struct Workspace {
   Workspace() = default;
   /// Sizes every buffer for `model` (frames 0..N, joint frames 1..N, every hull vertex).
   explicit Workspace(const RobotModel& model);
+  /// Frames only (for forward_kinematics and Jacobians), no hull vertices: two allocations
+  /// instead of one per hull.
+  static Workspace frames_only(std::size_t joint_count);
 
   /// X_WL[i]: pose of link frame i in the world, i = 0..N (X_WL[0] = identity, X_WL[N] = X_WE).
   std::vector<Eigen::Isometry3d> X_WL;
