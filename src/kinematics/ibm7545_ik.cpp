@@ -24,6 +24,13 @@ bool near_angle(double angle, double expected) {
 // Fits value + 2 pi k into [minimum, maximum] choosing k so that the result is nearest to
 // `near`; returns false when no k fits.
 bool fit_revolute(double value, double minimum, double maximum, double near, double& out) {
+  // The common case first: value fits and neither value - 2 pi nor value + 2 pi does, so it is
+  // the only candidate (no division, no search).
+  if (value >= minimum - kLimitSlack && value <= maximum + kLimitSlack &&
+      value + 2 * kPi > maximum + kLimitSlack && value - 2 * kPi < minimum - kLimitSlack) {
+    out = std::clamp(value, minimum, maximum);
+    return true;
+  }
   bool found = false;
   const double k_low = std::ceil((minimum - kLimitSlack - value) / (2 * kPi));
   const double k_high = std::floor((maximum + kLimitSlack - value) / (2 * kPi));
