@@ -23,9 +23,9 @@ Eigen::Vector3d box_midpoint(const std::vector<Eigen::Vector3d>& points_L) {
   return (lo + hi) * 0.5;  // any centre is sound: the radius is measured from it
 }
 
-// max |u - c| over the vertices, rounded up (each coordinate difference as a range).
+// max |u - c| over the vertices, rounded up (each coordinate difference as a range). An active
+// UpwardRoundingScope is required.
 double largest_distance_up(const std::vector<Eigen::Vector3d>& points_L, const Eigen::Vector3d& c) {
-  r::UpwardRoundingScope upward;
   double largest_square = 0.0;
   for (const Eigen::Vector3d& u : points_L) {
     double square = 0.0;
@@ -60,9 +60,17 @@ StepAxisRadii::StepAxisRadii(const RobotCell& cell)
   for (const LinkHull& hull : cell.hulls()) {
     for (const Eigen::Vector3d& u : hull.raw_L) coordinate_limit_ = std::max(coordinate_limit_, u.cwiseAbs().maxCoeff());
   }
+  // The centres in round-to-nearest, then every radius in one upward scope (a scope costs two
+  // rounding-mode switches, and a run builds these radii once).
+  center_L_.reserve(cell.hulls().size());
   for (const LinkHull& hull : cell.hulls()) {
     center_L_.push_back(hull.raw_L.empty() ? Eigen::Vector3d::Zero() : box_midpoint(hull.raw_L));
-    radius_up_.push_back(hull.raw_L.empty() ? 0.0 : largest_distance_up(hull.raw_L, center_L_.back()));
+  }
+  radius_up_.reserve(cell.hulls().size());
+  r::UpwardRoundingScope upward;
+  for (std::size_t i = 0; i < cell.hulls().size(); ++i) {
+    const std::vector<Eigen::Vector3d>& raw_L = cell.hulls()[i].raw_L;
+    radius_up_.push_back(raw_L.empty() ? 0.0 : largest_distance_up(raw_L, center_L_[i]));
   }
 }
 
