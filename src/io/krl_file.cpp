@@ -18,6 +18,9 @@
 
 namespace grpvss::io {
 namespace {
+// Named: the program readers' interpreters share their names, and a unity batch would
+// otherwise bring two of them into one anonymous namespace.
+namespace krl_reader {
 
 using krl::Designator;
 using krl::Evaluator;
@@ -406,6 +409,7 @@ std::optional<std::string> find_beside(const std::filesystem::path& directory, c
   return std::nullopt;
 }
 
+}  // namespace krl_reader
 }  // namespace
 
 RobotProgram parse_krl(std::string_view src_text, const std::string& src_name,
@@ -416,7 +420,7 @@ RobotProgram parse_krl(std::string_view src_text, const std::string& src_name,
     krl::read_data_file(data.text, data.file_name, module, data_recorder);
   }
   ProgramRecorder recorder(ProgramLanguage::kKrl, 0);
-  Interpreter interpreter(src_text, src_name, std::move(module), recorder);
+  krl_reader::Interpreter interpreter(src_text, src_name, std::move(module), recorder);
   recorder.set_statement_count(interpreter.statement_count());
   recorder.program().files.push_back(src_name);
   for (const KrlDataText& data : data_files) recorder.program().files.push_back(data.file_name);
@@ -430,7 +434,7 @@ std::vector<std::string> krl_data_files_beside(const std::string& src_path) {
   const std::filesystem::path directory = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
   std::vector<std::string> found_files;
   for (const std::string& name : {std::string("$config.dat"), path.stem().string() + ".dat"}) {
-    if (const std::optional<std::string> found = find_beside(directory, name)) {
+    if (const std::optional<std::string> found = krl_reader::find_beside(directory, name)) {
       found_files.push_back(path.has_parent_path() ? *found : std::filesystem::path(*found).filename().string());
     }
   }

@@ -16,6 +16,9 @@
 
 namespace grpvss::io {
 namespace {
+// Named: the program readers' interpreters share their names, and a unity batch would
+// otherwise bring two of them into one anonymous namespace.
+namespace rapid_reader {
 
 using rapid::Argument;
 using rapid::Evaluator;
@@ -480,6 +483,7 @@ void Interpreter::motion_targets(const MotionArguments& arguments, const MotionS
   for (const std::string& axis : external_axes) warn(arguments.line(), "external axis not read: " + axis);
 }
 
+}  // namespace rapid_reader
 }  // namespace
 
 RobotProgram parse_rapid(std::string_view text, const std::string& file_name) {
@@ -489,7 +493,7 @@ RobotProgram parse_rapid(std::string_view text, const std::string& file_name) {
                tokens.end());
   ProgramRecorder recorder(ProgramLanguage::kRapid, 0);
   recorder.program().files.push_back(file_name);
-  Interpreter interpreter(std::move(tokens), file_name, line_after_text(text), recorder);
+  rapid_reader::Interpreter interpreter(std::move(tokens), file_name, line_after_text(text), recorder);
   interpreter.run();
   return recorder.take();
 }

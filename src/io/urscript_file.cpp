@@ -14,6 +14,9 @@
 
 namespace grpvss::io {
 namespace {
+// Named: the program readers' interpreters share their names, and a unity batch would
+// otherwise bring two of them into one anonymous namespace.
+namespace urscript_reader {
 
 using urscript::CallArgument;
 using urscript::Evaluator;
@@ -439,6 +442,7 @@ void Interpreter::motion(TokenCursor& statement, const MotionSignature& signatur
   recorder_.add_motion(std::move(motion));
 }
 
+}  // namespace urscript_reader
 }  // namespace
 
 RobotProgram parse_urscript(std::string_view text, const std::string& file_name) {
@@ -446,7 +450,7 @@ RobotProgram parse_urscript(std::string_view text, const std::string& file_name)
   std::vector<TokenRange> statements = split_line_statements(tokens, file_name);
   const int end_line = line_after_text(text);
   urscript::Blocks blocks = urscript::analyse_blocks(tokens, statements, file_name, end_line);
-  Interpreter interpreter(std::move(tokens), std::move(statements), std::move(blocks), file_name);
+  urscript_reader::Interpreter interpreter(std::move(tokens), std::move(statements), std::move(blocks), file_name);
   return interpreter.run(end_line);
 }
 
