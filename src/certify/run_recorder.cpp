@@ -10,7 +10,7 @@
 namespace grpvss::certify {
 namespace {
 
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
+constexpr double kPlusInfinity = std::numeric_limits<double>::infinity();
 
 }  // namespace
 
@@ -25,7 +25,7 @@ RunRecorder::RunRecorder(const RobotCell& cell, const RunSettings& settings, con
   for (int link = 0; link < static_cast<int>(cell.robot().links.size()); ++link) {
     LinkClearanceSummary summary;
     summary.link = link;
-    summary.min_clearance = kInfinity;
+    summary.min_clearance = kPlusInfinity;
     clearances_.push_back(summary);
   }
 }
@@ -71,7 +71,7 @@ void RunRecorder::add_transition(const AcceptedStep& accepted, StepRecord& step)
     const int link = cell_.hulls()[i].link;
     const double bound = incoming.hull_motion_bounds[i];
     const double allowance = incoming.hull_allowances[i];
-    const double share = allowance > 0.0 ? bound / allowance : kInfinity;
+    const double share = allowance > 0.0 ? bound / allowance : kPlusInfinity;
     if (share > worst_share[link]) {
       worst_share[link] = share;
       step.links[link].motion_bound = bound;

@@ -11,7 +11,7 @@
 namespace grpvss::certify {
 namespace {
 
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
+constexpr double kNoBound = std::numeric_limits<double>::infinity();
 
 }  // namespace
 
@@ -29,7 +29,7 @@ std::vector<double> ThesisStepRule::allowed_displacements(const Eigen::VectorXd&
   kinematics::place_hull_points(robot, workspace_);
   std::vector<double> allowed(robot.joint_count() + 1, base);
   for (int link = 1; link <= robot.joint_count(); ++link) {
-    double nearest = kInfinity;
+    double nearest = kNoBound;
     for (const auto& hull_W : workspace_.hull_points_W[link]) {
       for (int o = 0; o < cell_->obstacles().size(); ++o) {
         nearest = std::min(nearest, geometry::gjk(hull_W, cell_->obstacles().vertices_W(o)).distance);
@@ -89,7 +89,7 @@ double ThesisStepRule::next_cp_parameter(const SegmentPath& path, double s,
     const std::optional<Eigen::VectorXd> q1 = path.q_at(s1, q);
     if (!q1) return s1;  // the caller reports the unreachable point (error 5)
     kinematics::forward_kinematics(cell_->chain(), *q1, workspace_);
-    double ratio = kInfinity;
+    double ratio = kNoBound;
     for (int link = 1; link <= joints; ++link) {
       const double moved = (workspace_.X_WL[link].translation() - origins_now[link]).norm();
       if (moved > 0.0) ratio = std::min(ratio, allowed[link] / moved);

@@ -59,7 +59,7 @@ CellMotion read_motion(const CellYaml& yaml, const YAML::Node& node) {
   return motion;
 }
 
-void read_units(const CellYaml& yaml, const YAML::Node& root, CellDescription& cell) {
+void read_cell_units(const CellYaml& yaml, const YAML::Node& root, CellDescription& cell) {
   const YAML::Node units = yaml.required(root, "units", "the cell");
   cell.units = read_length_unit(yaml, units, "units");
   cell.units_line = yaml_line(units);
@@ -73,7 +73,7 @@ CellDescription read_cell(CellYaml& yaml, const YAML::Node& root) {
                      "thesis_constants", "self_collision"});
   CellDescription cell;
   cell.source = yaml.file_name();
-  read_units(yaml, root, cell);
+  read_cell_units(yaml, root, cell);
   cell.robot = read_cell_robot(yaml, yaml.required(root, "robot", "the cell"));
   if (const YAML::Node obstacles = root["obstacles"]) {
     cell.obstacles = read_cell_obstacles(yaml, obstacles, cell.units);

@@ -85,7 +85,7 @@ Eigen::VectorXd read_velocities(NumberReader& reader, const RobotModel& robot, i
   return velocity;
 }
 
-PathSegment read_segment(NumberReader& reader, const RobotModel& robot, int segment) {
+PathSegment read_thesis_segment(NumberReader& reader, const RobotModel& robot, int segment) {
   const long long type = reader.read_integer(
       fmt::format("the segment type IND of segment {}", segment), LLONG_MIN, LLONG_MAX);
   PathSegment result;
@@ -125,7 +125,7 @@ PathProgram parse_path_file(std::string_view text, const std::string& file_name,
       reader.read_integer("the number of motion segments NOMS", 1, kMaxSegments);
   PathProgram program;
   program.segments.reserve(static_cast<std::size_t>(std::min<long long>(count, 1024)));
-  for (int s = 1; s <= count; ++s) program.segments.push_back(read_segment(reader, robot, s));
+  for (int s = 1; s <= count; ++s) program.segments.push_back(read_thesis_segment(reader, robot, s));
   reader.expect_end(fmt::format("segment {}", count));
   return program;
 }

@@ -8,7 +8,7 @@
 namespace grpvss::io {
 namespace {
 
-constexpr std::size_t kMaxQuoted = 40;
+constexpr std::size_t kMaxEchoedText = 40;
 
 }  // namespace
 
@@ -28,7 +28,7 @@ std::string_view trim_blanks(std::string_view text) {
 
 std::string quoted_text(std::string_view text) {
   std::string result = "'";
-  for (const char c : text.substr(0, kMaxQuoted)) {
+  for (const char c : text.substr(0, kMaxEchoedText)) {
     const auto byte = static_cast<unsigned char>(c);
     if (byte < 0x20 || byte >= 0x7f) {
       result += fmt::format("\\x{:02x}", byte);
@@ -36,7 +36,7 @@ std::string quoted_text(std::string_view text) {
       result += c;
     }
   }
-  return result + (text.size() > kMaxQuoted ? "...'" : "'");
+  return result + (text.size() > kMaxEchoedText ? "...'" : "'");
 }
 
 std::string join(const std::vector<std::string>& items, const std::string& separator) {

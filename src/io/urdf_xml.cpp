@@ -35,7 +35,7 @@ std::optional<double> parse_token(std::string_view token) {
   return value;
 }
 
-std::string quoted(const char* text) { return std::string("\"") + text + "\""; }
+std::string quoted_attribute(const char* text) { return std::string("\"") + text + "\""; }
 
 }  // namespace
 
@@ -127,7 +127,7 @@ Eigen::Vector3d UrdfXml::origin_rpy(const tinyxml2::XMLElement& element,
     throw InputError(file_, line(origin),
                      "<origin rpy> of " + owner + " as three numbers, each 0 or of magnitude "
                      "within [1e-300, 1e9]",
-                     quoted(rpy));
+                     quoted_attribute(rpy));
   }
   return *v;
 }
@@ -141,7 +141,7 @@ double UrdfXml::number_attribute(const tinyxml2::XMLElement& element, const char
     throw InputError(file_, line(&element),
                      std::string(attribute) + " of " + owner + " as a number, 0 or of magnitude "
                      "within [1e-300, 1e9]",
-                     quoted(text));
+                     quoted_attribute(text));
   }
   return *x;
 }

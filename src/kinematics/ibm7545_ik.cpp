@@ -14,7 +14,7 @@ constexpr double kAngleSlack = 1e-9;   // structure recognition, rad
 constexpr double kLengthSlack = 1e-12;  // structure recognition, length
 // Roundoff in the trigonometry may put an exact boundary solution (e.g. theta1 = 0) a few ulps
 // outside a limit; such values are accepted and clamped onto the limit.
-constexpr double kLimitSlack = 1e-10;
+constexpr double kIkLimitSlack = 1e-10;
 constexpr double kToolZSlack = 1e-9;
 
 bool near_angle(double angle, double expected) {
@@ -26,14 +26,14 @@ bool near_angle(double angle, double expected) {
 bool fit_revolute(double value, double minimum, double maximum, double near, double& out) {
   // The common case first: value fits and neither value - 2 pi nor value + 2 pi does, so it is
   // the only candidate (no division, no search).
-  if (value >= minimum - kLimitSlack && value <= maximum + kLimitSlack &&
-      value + 2 * kPi > maximum + kLimitSlack && value - 2 * kPi < minimum - kLimitSlack) {
+  if (value >= minimum - kIkLimitSlack && value <= maximum + kIkLimitSlack &&
+      value + 2 * kPi > maximum + kIkLimitSlack && value - 2 * kPi < minimum - kIkLimitSlack) {
     out = std::clamp(value, minimum, maximum);
     return true;
   }
   bool found = false;
-  const double k_low = std::ceil((minimum - kLimitSlack - value) / (2 * kPi));
-  const double k_high = std::floor((maximum + kLimitSlack - value) / (2 * kPi));
+  const double k_low = std::ceil((minimum - kIkLimitSlack - value) / (2 * kPi));
+  const double k_high = std::floor((maximum + kIkLimitSlack - value) / (2 * kPi));
   for (double k = k_low; k <= k_high; k += 1.0) {
     const double candidate = std::clamp(value + 2 * kPi * k, minimum, maximum);
     if (!found || std::abs(candidate - near) < std::abs(out - near)) out = candidate;
@@ -62,7 +62,7 @@ class Ibm7545Ik final : public InverseKinematics {
 
     // z = d1 + d2 - (d3 + q3) - d4 (alpha_2 = 180 deg turns z2 down).
     const double q3 = dh1.d + dh2.d - dh4.d - dh3.d - p.z();
-    if (q3 < joints_[2].minimum - kLimitSlack || q3 > joints_[2].maximum + kLimitSlack) {
+    if (q3 < joints_[2].minimum - kIkLimitSlack || q3 > joints_[2].maximum + kIkLimitSlack) {
       return {IkStatus::kOutOfWorkspace, {}};
     }
     // Planar two-link arm: x + i y = a1 e^{i theta1} + a2 e^{i (theta1 + theta2)}.

@@ -8,14 +8,14 @@
 namespace grpvss::kinematics {
 namespace {
 
-double l1_norm(const Eigen::Vector3d& t) { return t.cwiseAbs().sum(); }  // >= Euclidean norm
+double translation_l1_norm(const Eigen::Vector3d& t) { return t.cwiseAbs().sum(); }  // >= Euclidean norm
 
 }  // namespace
 
 void BoundedProduct::multiply(const BoundedFactor& factor) {
   // Lemma 1 of proofs/fk-rounding.md, term by term (lambda_k = |t^_k|_1 >= |t^_k|_2).
   const double g = gamma(4);
-  const double lambda = l1_norm(factor.X.translation());
+  const double lambda = translation_l1_norm(factor.X.translation());
   const double rounding = g * (std::sqrt(3.0) * (1 + r_) * lambda + T_);
   const double e_next = e_ + r_ * lambda + factor.tau + rounding;
   const double T_next = (1 + r_) * lambda + T_ + rounding;

@@ -11,8 +11,8 @@ namespace {
 using detail::kPi;
 using detail::wrap_angle;
 
-constexpr double kWristSingular = 1e-12;  // |sin theta_5| below which theta_6 is free
-constexpr double kCosineSlack = 1e-10;    // as in opw_kinematics.cpp
+constexpr double kUrWristSingular = 1e-12;  // |sin theta_5| below which theta_6 is free
+constexpr double kUrCosineSlack = 1e-10;    // as in opw_kinematics.cpp
 
 // UR's DH link transform A = Rot_z(theta) Trans_z(d) Trans_x(a) Rot_x(alpha), alpha in
 // {0, pi/2, -pi/2} written exactly (no cos(pi/2) residue).
@@ -36,12 +36,12 @@ std::array<Eigen::Isometry3d, 6> dh_links(const UrParameters& p, const ModelAngl
 
 // theta_2, theta_3, theta_4 of the planar 3R arm from X_14 (frame 4 in frame 1); branch e = 0
 // has sin(theta_3) >= 0. False when the elbow cannot reach.
-bool solve_planar_arm(const UrParameters& p, const Eigen::Isometry3d& X_14, int e,
+bool solve_ur_planar_arm(const UrParameters& p, const Eigen::Isometry3d& X_14, int e,
                       ModelAngles& theta) {
   const double x = X_14(0, 3);
   const double y = X_14(1, 3);
   const double cos3 = (x * x + y * y - p.a2 * p.a2 - p.a3 * p.a3) / (2 * p.a2 * p.a3);
-  if (!(std::abs(cos3) <= 1 + kCosineSlack)) return false;
+  if (!(std::abs(cos3) <= 1 + kUrCosineSlack)) return false;
   const double c3 = std::clamp(cos3, -1.0, 1.0);
   const double s3 = (e == 0 ? 1.0 : -1.0) * std::sqrt(std::max(0.0, 1 - c3 * c3));
   theta[2] = std::atan2(s3, c3);
@@ -76,7 +76,7 @@ std::array<ModelBranch, 8> ur_inverse(const UrParameters& p, const Eigen::Isomet
   const Eigen::Vector3d p5 = X_BF.translation() - p.d6 * R.col(2);
   const double radial_squared = p5.x() * p5.x() + p5.y() * p5.y() - p.d4 * p.d4;
   const double scale = std::max({std::abs(p.a2), std::abs(p.a3), std::abs(p.d4), std::abs(p.d5)});
-  if (radial_squared < -kCosineSlack * scale * scale) return branches;
+  if (radial_squared < -kUrCosineSlack * scale * scale) return branches;
   const double radial = std::sqrt(std::max(0.0, radial_squared));
   for (int s = 0; s < 2; ++s) {
     const double x1 = s == 0 ? radial : -radial;  // P5 . x1
@@ -90,7 +90,7 @@ std::array<ModelBranch, 8> ur_inverse(const UrParameters& p, const Eigen::Isomet
       const double sin5 = w == 0 ? abs_sin5 : -abs_sin5;
       theta[4] = std::atan2(sin5, cos5);
       // x6 . z1 = sin t5 cos t6, y6 . z1 = -sin t5 sin t6.
-      theta[5] = abs_sin5 > kWristSingular
+      theta[5] = abs_sin5 > kUrWristSingular
                      ? std::atan2(-R.col(1).dot(z1) / sin5, R.col(0).dot(z1) / sin5)
                      : theta6_free;
       const std::array<Eigen::Isometry3d, 6> A = dh_links(p, theta);
@@ -98,7 +98,7 @@ std::array<ModelBranch, 8> ur_inverse(const UrParameters& p, const Eigen::Isomet
       for (int e = 0; e < 2; ++e) {
         ModelBranch& branch = branches[static_cast<std::size_t>(4 * s + 2 * e + w)];
         branch.theta = theta;
-        branch.valid = solve_planar_arm(p, X_14, e, branch.theta);
+        branch.valid = solve_ur_planar_arm(p, X_14, e, branch.theta);
       }
     }
   }

@@ -34,7 +34,7 @@ std::optional<std::string> ur_structure_problem(const std::vector<AxisLine>& a, 
 
 // B, d1, a2, a3 and joints 1-4's signs, joints 2-3's offsets. Returns theta_2 + theta_3 at
 // q = 0. (x, y) below are the arm plane's coordinates: B's x and z relative to the shoulder.
-double fit_arm(const ChainGeometry& g, double length_tol, UrChainModel& m) {
+double fit_ur_arm(const ChainGeometry& g, double length_tol, UrChainModel& m) {
   const AxisLine& axis1 = g.axes[0];
   const Eigen::Vector3d origin = base_origin(axis1);
   const Eigen::Vector3d shoulder = closest_point(axis1, g.axes[1]);
@@ -64,7 +64,7 @@ double fit_arm(const ChainGeometry& g, double length_tol, UrChainModel& m) {
 }
 
 // d4, d5, d6, joints 4-6's offsets, joints 5-6's signs and the tool on the flange.
-void fit_wrist(const ChainGeometry& g, double theta23, UrChainModel& m) {
+void fit_ur_wrist(const ChainGeometry& g, double theta23, UrChainModel& m) {
   const Eigen::Isometry3d X_BW = m.placement.X_WB.inverse();
   const Eigen::Vector3d p45 = X_BW * closest_point(g.axes[3], g.axes[4]);
   const Eigen::Vector3d p56 = X_BW * closest_point(g.axes[4], g.axes[5]);
@@ -104,7 +104,7 @@ Recognition<UrChainModel> recognise_ur(const KinematicChain& chain, const Eigen:
   if (auto reason = ur_structure_problem(g.axes, length_tol)) return not_ur(*reason);
   UrChainModel m;
   m.X_ET = X_ET;
-  fit_wrist(g, fit_arm(g, length_tol, m), m);
+  fit_ur_wrist(g, fit_ur_arm(g, length_tol, m), m);
   const UrParameters parameters = m.parameters;
   m.fk_deviation = model_fk_deviation(chain, X_ET, g.length_scale, m.placement,
                                       [&](const ModelAngles& t) { return ur_forward(parameters, t); });

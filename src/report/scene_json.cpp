@@ -22,7 +22,7 @@ namespace {
 
 using nlohmann::json;
 
-double finite(double value, const char* what) {
+double finite_scene_number(double value, const char* what) {
   if (!std::isfinite(value)) throw std::logic_error(fmt::format("scene: {} is {}", what, value));
   return value;
 }
@@ -46,7 +46,7 @@ json polytope_json(const std::vector<Eigen::Vector3d>& points, const char* verti
   for (std::size_t k = 0; k < order.size(); ++k) {
     new_index[static_cast<std::size_t>(order[k])] = static_cast<int>(k);
     const auto& v = vertices[static_cast<std::size_t>(order[k])];
-    vertex_list.push_back({finite(v.x(), "vertex"), finite(v.y(), "vertex"), finite(v.z(), "vertex")});
+    vertex_list.push_back({finite_scene_number(v.x(), "vertex"), finite_scene_number(v.y(), "vertex"), finite_scene_number(v.z(), "vertex")});
   }
   std::vector<std::vector<int>> faces;
   for (const auto& loop : polytope.faces()) {
@@ -70,7 +70,7 @@ json pose_rows(const Eigen::Isometry3d& X_WL) {
   json values = json::array();
   const Eigen::Matrix4d m = X_WL.matrix();
   for (int row = 0; row < 4; ++row) {
-    for (int col = 0; col < 4; ++col) values.push_back(finite(m(row, col), "pose"));
+    for (int col = 0; col < 4; ++col) values.push_back(finite_scene_number(m(row, col), "pose"));
   }
   return values;
 }
@@ -126,7 +126,7 @@ nlohmann::json scene_to_json(const certify::VerificationResult& result,
     start = poses.step(start_step);
   }
   json scene = {{"expansion",
-                 {{"radius", finite(cell.expansion_radius(), "expansion radius")},
+                 {{"radius", finite_scene_number(cell.expansion_radius(), "expansion radius")},
                   {"shape", geometry::to_string(cell.offset_shape())}}},
                 {"links", links},
                 {"obstacles", obstacles},

@@ -21,7 +21,7 @@ namespace {
 
 constexpr std::size_t kBufferBytes = std::size_t{1} << 20;
 
-[[noreturn]] void throw_system(const std::string& path, const char* what, int error_number) {
+[[noreturn]] void throw_spill_error(const std::string& path, const char* what, int error_number) {
   throw InputError(path, 0, "a writable output location",
                    fmt::format("{} a scratch file failed: {}", what, std::strerror(error_number)));
 }
@@ -34,7 +34,7 @@ int open_anonymous(const std::string& output_path) {
   const int fd = ::open(directory.c_str(), O_RDWR | O_TMPFILE | O_CLOEXEC, 0600);
   if (fd >= 0) return fd;
   if (errno != EOPNOTSUPP && errno != EISDIR && errno != EINVAL) {
-    throw_system(output_path, "creating", errno);
+    throw_spill_error(output_path, "creating", errno);
   }
   // No O_TMPFILE on this file system: a fresh name, unlinked at once.
   static std::atomic<unsigned> counter{0};
@@ -46,9 +46,9 @@ int open_anonymous(const std::string& output_path) {
       ::unlink(name.c_str());
       return named;
     }
-    if (errno != EEXIST) throw_system(output_path, "creating", errno);
+    if (errno != EEXIST) throw_spill_error(output_path, "creating", errno);
   }
-  throw_system(output_path, "creating", EEXIST);
+  throw_spill_error(output_path, "creating", EEXIST);
 }
 
 }  // namespace
@@ -66,7 +66,7 @@ void SpillFile::flush() {
     const ssize_t done = ::pwrite(fd_, rest.data(), rest.size(), static_cast<off_t>(written_));
     if (done < 0) {
       if (errno == EINTR) continue;
-      throw_system(output_path_, "writing", errno);
+      throw_spill_error(output_path_, "writing", errno);
     }
     rest.remove_prefix(static_cast<std::size_t>(done));
     written_ += static_cast<std::uint64_t>(done);
@@ -89,7 +89,7 @@ void SpillFile::copy_to(AtomicOutputFile& output, std::uint64_t begin, std::uint
     const ssize_t got = ::pread(fd_, chunk.data(), wanted, static_cast<off_t>(begin));
     if (got < 0) {
       if (errno == EINTR) continue;
-      throw_system(output_path_, "reading", errno);
+      throw_spill_error(output_path_, "reading", errno);
     }
     if (got == 0) throw std::logic_error("SpillFile: shorter than written");
     output.write(std::string_view(chunk.data(), static_cast<std::size_t>(got)));
