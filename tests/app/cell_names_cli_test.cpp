@@ -25,7 +25,7 @@ using grpvss::test::run_cli;
 using nlohmann::json;
 
 using grpvss::test::kSourceDir;
-const std::string kSixAxis = kSourceDir + "/data/sixaxis/";
+const std::string kSixAxisDataDir = kSourceDir + "/data/sixaxis/";
 
 class CellNamesCli : public ::testing::Test {
  protected:
@@ -34,7 +34,7 @@ class CellNamesCli : public ::testing::Test {
                  ("grpvss-cell-names-" + std::to_string(::getpid()));
     std::filesystem::create_directories(directory_);
     // The path file copied beside the outputs, so that the thesis file's label is its name.
-    std::filesystem::copy_file(kSixAxis + "path-collision.txt", directory_ / "path-collision.txt");
+    std::filesystem::copy_file(kSixAxisDataDir + "path-collision.txt", directory_ / "path-collision.txt");
   }
   void TearDown() override { std::filesystem::remove_all(directory_); }
   std::string dir() const { return directory_.string(); }
@@ -44,7 +44,7 @@ class CellNamesCli : public ::testing::Test {
   std::filesystem::path directory_;
 };
 
-const std::string kCellInputs = "--cell " + kSixAxis + "cell.yaml --path path-collision.txt";
+const std::string kCellInputs = "--cell " + kSixAxisDataDir + "cell.yaml --path path-collision.txt";
 
 TEST_F(CellNamesCli, TheCertificateNamesTheCellsLinksAndObstaclesAndTheCheckerComparesThem) {
   const CliRun verify = run_cli(dir(), "verify " + kCellInputs + " --certificate c.json --quiet");

@@ -48,7 +48,7 @@ class ProgramCli : public ::testing::Test {
   std::filesystem::path directory_;
 };
 
-bool contains(const std::string& text, const std::string& part) {
+bool text_contains(const std::string& text, const std::string& part) {
   return text.find(part) != std::string::npos;
 }
 
@@ -83,9 +83,9 @@ TEST_F(ProgramCli, AUrScriptMovejProgramIsClearAndItsCertificateAccepted) {
   ASSERT_EQ(verify.exit_code, grpvss::app::kExitOk) << verify.out << verify.err;
   expect_summary_starts_with(verify, "motion: program ur5e-clear.script (URScript), synchronized PTP, 3 "
                                      "motions (2 joint targets, 1 pose by IK), exact stops\nverdict: CLEAR\n");
-  EXPECT_TRUE(contains(verify.out, "steps: 12  cycle time: 4.119 s")) << verify.out;
+  EXPECT_TRUE(text_contains(verify.out, "steps: 12  cycle time: 4.119 s")) << verify.out;
   // Every reader warning reaches the user, one per ignored line.
-  EXPECT_TRUE(contains(verify.err, "ur5e-clear.script:9: not read: popup(\"placed\")\n")) << verify.err;
+  EXPECT_TRUE(text_contains(verify.err, "ur5e-clear.script:9: not read: popup(\"placed\")\n")) << verify.err;
 
   const nlohmann::json certificate =
       nlohmann::json::parse(grpvss::test::read_text_file(dir() + "/c.json"));
@@ -125,8 +125,8 @@ TEST_F(ProgramCli, AnEditedProgramIsRejectedByTheCheck) {
   std::ofstream(dir() + "/p.script") << text;
   const CliRun check = run_cli(dir(), "check-certificate " + inputs + " c.json");
   EXPECT_EQ(check.exit_code, grpvss::app::kExitFinding) << check.out << check.err;
-  EXPECT_TRUE(contains(check.out, "REJECTED: claim CLEAR")) << check.out;
-  EXPECT_TRUE(contains(check.out, "  - the program file differs from the one certified\n")) << check.out;
+  EXPECT_TRUE(text_contains(check.out, "REJECTED: claim CLEAR")) << check.out;
+  EXPECT_TRUE(text_contains(check.out, "  - the program file differs from the one certified\n")) << check.out;
   // A program's certificate checked as a path program is rejected too.
   const CliRun as_path = run_cli(dir(), "check-certificate --cell " + kUr5ePostNoSelfCell + " --path " + kSourceDir +
                                             "/tests/data/cells/ur5e-clear.txt c.json");
@@ -140,7 +140,7 @@ TEST_F(ProgramCli, AProgramAndItsEquivalentTrajectoryGiveTheSameCollision) {
   expect_summary_starts_with(program, "motion: program ur5e-through-post.script (URScript), synchronized "
                                       "PTP, 2 motions (2 joint targets, 0 poses by IK), exact stops\n"
                                       "verdict: COLLISION\n");
-  EXPECT_TRUE(contains(program.out, "interference: forearm_link hull 0 / post, steps 16-37 "
+  EXPECT_TRUE(text_contains(program.out, "interference: forearm_link hull 0 / post, steps 16-37 "
                                     "(1.359-2.082 s), unexpanded collides at steps 23-37"))
       << program.out;
   const CliRun trajectory = run_cli(dir(), "verify --cell " + kUr5ePostNoSelfCell + " --trajectory " + kSourceDir +
@@ -195,7 +195,7 @@ TEST_F(ProgramCli, AnotherStatusNamesAConfigurationTheTargetDoesNotHave) {
   std::ofstream(dir() + "/s.dat") << data;
   const CliRun verify = run_cli(dir(), "verify --cell " + kSixAxisCell + " --program s.src");
   EXPECT_EQ(verify.exit_code, grpvss::app::kExitInputError) << verify.out;
-  EXPECT_TRUE(contains(verify.err, "s.src:11: expected a pose the robot reaches within its joint "
+  EXPECT_TRUE(text_contains(verify.err, "s.src:11: expected a pose the robot reaches within its joint "
                                    "limits in S 2 T 18 (OPW closed form), found no solution for "
                                    "the flange at p_WF = (0.3457, 0.0689, 1.3572) m"))
       << verify.err;
@@ -211,7 +211,7 @@ TEST_F(ProgramCli, UrScriptMovelLinesAreClearAndTheirCertificateAccepted) {
   const auto report = nlohmann::json::parse(grpvss::test::read_text_file(dir() + "/r.json"));
   ASSERT_EQ(report["segments"].size(), 4u);
   EXPECT_EQ(report["segments"][1]["source_line"], 11);
-  EXPECT_TRUE(contains(verify.out, "steps: 24  cycle time: 3.914 s")) << verify.out;
+  EXPECT_TRUE(text_contains(verify.out, "steps: 24  cycle time: 3.914 s")) << verify.out;
   const auto certificate = nlohmann::json::parse(grpvss::test::read_text_file(dir() + "/c.json"));
   const std::vector<std::vector<double>> targets = recorded_targets(certificate);
   ASSERT_EQ(targets.size(), 4u);
@@ -228,7 +228,7 @@ TEST_F(ProgramCli, AMovelAndItsEquivalentCpLinePathGiveTheSameCollision) {
   const CliRun program =
       run_cli(dir(), "verify " + ur5e("ur5e-movel-post.script") + " --json p.json --certificate c.json");
   ASSERT_EQ(program.exit_code, grpvss::app::kExitFinding) << program.out << program.err;
-  EXPECT_TRUE(contains(program.out, "verdict: COLLISION\n")) << program.out;
+  EXPECT_TRUE(text_contains(program.out, "verdict: COLLISION\n")) << program.out;
   const CliRun path = run_cli(dir(), "verify --cell " + kUr5ePostNoSelfCell + " --path " + kSourceDir +
                                          "/tests/data/cells/ur5e-movel-post.txt --cp-speed 0.25 "
                                          "--json t.json");
@@ -248,7 +248,7 @@ TEST_F(ProgramCli, AMovelAndItsEquivalentCpLinePathGiveTheSameCollision) {
                 t["steps"][first]["joint_values"][j].get<double>(), 1e-6)  // deg: 17-digit file values
         << j;
   }
-  EXPECT_TRUE(contains(program.out, "interference: wrist_1_link hull 0 / post, steps 8-15")) << program.out;
+  EXPECT_TRUE(text_contains(program.out, "interference: wrist_1_link hull 0 / post, steps 8-15")) << program.out;
   const CliRun check = run_cli(dir(), "check-certificate " + ur5e("ur5e-movel-post.script") + " c.json");
   EXPECT_EQ(check.exit_code, grpvss::app::kExitOk) << check.out << check.err;
   EXPECT_EQ(check.out.rfind("ACCEPTED: claim COLLISION", 0), 0u) << check.out;
@@ -260,7 +260,7 @@ TEST_F(ProgramCli, AKrlLinAndARapidMoveLAreVerifiedAndTheirCertificatesAccepted)
     const std::string certificate_file = program + ".cert";
     const CliRun verify = run_cli(dir(), "verify " + inputs + " --certificate " + certificate_file);
     ASSERT_EQ(verify.exit_code, grpvss::app::kExitOk) << verify.out << verify.err;
-    EXPECT_TRUE(contains(verify.out, "5 motions (2 joint targets, 1 pose by IK, 2 straight TCP "
+    EXPECT_TRUE(text_contains(verify.out, "5 motions (2 joint targets, 1 pose by IK, 2 straight TCP "
                                      "lines), exact stops\nverdict: CLEAR\n"))
         << verify.out;
     const auto certificate =
@@ -283,7 +283,7 @@ TEST_F(ProgramCli, ALinWhoseStatusTheLineDoesNotReachIsAnError) {
   std::ofstream(dir() + "/s.dat") << data;
   const CliRun verify = run_cli(dir(), "verify --cell " + kSixAxisCell + " --program s.src");
   EXPECT_EQ(verify.exit_code, grpvss::app::kExitInputError) << verify.out;
-  EXPECT_TRUE(contains(verify.err, "s.src:15: expected the configuration the line's target names "
+  EXPECT_TRUE(text_contains(verify.err, "s.src:15: expected the configuration the line's target names "
                                    "(S 2 T 18) reached along the line from the previous target, "
                                    "found the line ends at joints (17.19, -22.92, 28.65, 34.38, "
                                    "-40.11, 11.46) deg, and the named configuration has no solution there"))
@@ -324,7 +324,7 @@ TEST_F(ProgramCli, TurningLinesUnderAnotherToolCircularAndBlendedMotionsAreRefus
       const CliRun run = run_cli(dir(), command + " --cell " + refusal.cell + " --program " +
                                             kTestPrograms + refusal.program);
       EXPECT_EQ(run.exit_code, grpvss::app::kExitInputError) << refusal.program << run.out;
-      EXPECT_TRUE(contains(run.err, refusal.message)) << run.err;
+      EXPECT_TRUE(text_contains(run.err, refusal.message)) << run.err;
     }
   }
 }
@@ -334,15 +334,15 @@ TEST_F(ProgramCli, TrajectoryPrintsTheProgramsMotion) {
   ASSERT_EQ(run.exit_code, grpvss::app::kExitOk) << run.out << run.err;
   expect_summary_starts_with(run, "motion: program ur5e-through-post.script (URScript), synchronized PTP, "
                                   "2 motions (2 joint targets, 0 poses by IK), exact stops\n");
-  EXPECT_TRUE(contains(run.out, "PTP TIMING: SYNCHRONIZED")) << run.out;
-  EXPECT_TRUE(contains(run.out, "ENDING JOINT VALUES    100.00   -90.00    90.00     0.00     0.00     0.00"))
+  EXPECT_TRUE(text_contains(run.out, "PTP TIMING: SYNCHRONIZED")) << run.out;
+  EXPECT_TRUE(text_contains(run.out, "ENDING JOINT VALUES    100.00   -90.00    90.00     0.00     0.00     0.00"))
       << run.out;
 }
 
 TEST_F(ProgramCli, OptionsThatContradictTheProgramAreRefused) {
   const CliRun timing = run_cli(dir(), "verify " + ur5e("ur5e-clear.script") + " --timing independent");
   EXPECT_EQ(timing.exit_code, grpvss::app::kExitInputError);
-  EXPECT_TRUE(contains(timing.err, "--timing:0: expected no --timing with --program (a program "
+  EXPECT_TRUE(text_contains(timing.err, "--timing:0: expected no --timing with --program (a program "
                                    "is verified as the controller runs it: synchronized PTP, "
                                    "exact stops), found --timing"))
       << timing.err;
@@ -353,7 +353,7 @@ TEST_F(ProgramCli, OptionsThatContradictTheProgramAreRefused) {
                                            kSourceDir + "/data/ibm7545/environment.txt --program " +
                                            kTestPrograms + "ur5e-clear.script");
   EXPECT_EQ(thesis.exit_code, grpvss::app::kExitInputError);
-  EXPECT_TRUE(contains(thesis.err, "a URDF robot in a cell (--cell)")) << thesis.err;
+  EXPECT_TRUE(text_contains(thesis.err, "a URDF robot in a cell (--cell)")) << thesis.err;
 }
 
 }  // namespace

@@ -24,7 +24,7 @@
 namespace {
 
 using grpvss::test::kUr5ePostNoSelfCell;
-const double kDeg = std::acos(-1.0) / 180.0;
+const double kRadiansPerDegree = std::acos(-1.0) / 180.0;
 
 using grpvss::test::CliRun;
 using grpvss::test::run_cli;
@@ -49,7 +49,7 @@ class YamlPathCli : public ::testing::Test {
 Eigen::Isometry3d pose_at(const std::vector<double>& q_deg) {
   const grpvss::cell::ModelInputs model = grpvss::cell::load_model_inputs({"", "", kUr5ePostNoSelfCell, {}});
   Eigen::VectorXd q(6);
-  for (int j = 0; j < 6; ++j) q[j] = q_deg[static_cast<std::size_t>(j)] * kDeg;
+  for (int j = 0; j < 6; ++j) q[j] = q_deg[static_cast<std::size_t>(j)] * kRadiansPerDegree;
   return grpvss::kinematics::end_effector_pose(grpvss::kinematics::make_chain(model.robot), q);
 }
 

@@ -22,7 +22,7 @@
 
 namespace {
 
-const std::string kSixAxis = std::string(GRPVSS_SOURCE_DIR) + "/data/sixaxis/";
+const std::string kSixAxisDir = std::string(GRPVSS_SOURCE_DIR) + "/data/sixaxis/";
 
 // A cell around the six-axis robot, written beside its URDF (relative mesh paths keep working).
 class LoadCell : public ::testing::Test {
@@ -30,7 +30,7 @@ class LoadCell : public ::testing::Test {
   std::string write(const std::string& obstacles_and_rest, const std::string& robot_extra = "") {
     file_ = std::filesystem::temp_directory_path() /
             ("grpvss-load-cell-" + std::to_string(::getpid()) + ".yaml");
-    std::ofstream(file_) << "units: m\nrobot:\n  urdf: " << kSixAxis << "sixaxis.urdf\n"
+    std::ofstream(file_) << "units: m\nrobot:\n  urdf: " << kSixAxisDir << "sixaxis.urdf\n"
                          << robot_extra << obstacles_and_rest;
     return file_.string();
   }
@@ -39,7 +39,7 @@ class LoadCell : public ::testing::Test {
 };
 
 TEST_F(LoadCell, TheDemoCellHasNamedLinksNamedPiecesAndItsAllowedContact) {
-  const grpvss::cell::LoadedCell cell = grpvss::cell::load_cell(kSixAxis + "cell.yaml");
+  const grpvss::cell::LoadedCell cell = grpvss::cell::load_cell(kSixAxisDir + "cell.yaml");
   ASSERT_EQ(cell.robot.joint_count(), 6);
   EXPECT_EQ(cell.robot.links[0].name, "base_link");
   EXPECT_EQ(cell.robot.links[4].name, "link_4");
@@ -126,7 +126,7 @@ TEST_F(LoadCell, AQuaternionPosePlacesAnObstacleAsItsRpyTwin) {
 // A shape placed several times is built once per cell (cell_environment.cpp): each placement
 // has exactly the pieces a cell with that obstacle alone gives, and its own named warnings.
 TEST_F(LoadCell, ARepeatedShapeGivesEachPlacementItsOwnPiecesAndWarnings) {
-  const std::string fixture = "mesh: " + kSixAxis + "meshes/u_fixture.stl, decompose: hull";
+  const std::string fixture = "mesh: " + kSixAxisDir + "meshes/u_fixture.stl, decompose: hull";
   const std::string second = "  - {name: b, " + fixture + ", pose: {xyz: [0.5, 0, 0.2], rpy: [0, 0, 1]}}\n";
   const std::string post = "  - {name: p2, cylinder: {radius: 0.04, length: 1.2}, pose: {xyz: [1, 1, 0]}}\n";
   const grpvss::cell::LoadedCell both = grpvss::cell::load_cell(write(
@@ -202,14 +202,14 @@ TEST_F(LoadCell, AMillimetreCellAroundAUrdfRobotIsConvertedToMetres) {
 
 // A URDF's `<limit velocity>` is the joint's speed limit; 0 means none (the URDF convention).
 TEST(LoadCellVelocity, UrdfVelocityLimitsBecomeTheJointsMaxVelocityAndZeroMeansUnlimited) {
-  const grpvss::cell::LoadedCell demo = grpvss::cell::load_cell(kSixAxis + "cell.yaml");
+  const grpvss::cell::LoadedCell demo = grpvss::cell::load_cell(kSixAxisDir + "cell.yaml");
   for (const grpvss::Joint& joint : demo.robot.joints) EXPECT_EQ(joint.max_velocity, 6.28);
   // The same robot with joint_2's velocity 0, beside a link to the demo's meshes.
   const std::filesystem::path folder = std::filesystem::temp_directory_path() /
                                        ("grpvss-velocity-" + std::to_string(::getpid()));
   std::filesystem::create_directories(folder);
-  std::filesystem::create_directory_symlink(kSixAxis + "meshes", folder / "meshes");
-  std::ifstream in(kSixAxis + "sixaxis.urdf");
+  std::filesystem::create_directory_symlink(kSixAxisDir + "meshes", folder / "meshes");
+  std::ifstream in(kSixAxisDir + "sixaxis.urdf");
   std::string urdf((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   const std::string joint_2 = "upper=\"0.785\" effort=\"100\" velocity=\"6.28\"";
   ASSERT_NE(urdf.find(joint_2), std::string::npos);

@@ -23,7 +23,7 @@ namespace {
 
 using grpvss::RobotModel;
 
-const std::string kRobots = std::string(GRPVSS_SOURCE_DIR) + "/../shared/robots/";
+const std::string kSharedRobotsDir = std::string(GRPVSS_SOURCE_DIR) + "/../shared/robots/";
 
 struct RealRobot {
   std::string urdf;
@@ -107,8 +107,8 @@ double worst_ratio(const RealRobot& real, int configurations, std::uint64_t seed
   return worst;
 }
 
-const RealRobot kUr5e{kRobots + "ur5e/ur5e.urdf", kRobots + "ur5e", "tool0"};
-const RealRobot kPanda{kRobots + "franka_panda/panda_arm_only.urdf", kRobots + "franka_panda",
+const RealRobot kUr5e{kSharedRobotsDir + "ur5e/ur5e.urdf", kSharedRobotsDir + "ur5e", "tool0"};
+const RealRobot kPanda{kSharedRobotsDir + "franka_panda/panda_arm_only.urdf", kSharedRobotsDir + "franka_panda",
                        "panda_link8"};
 
 TEST(GeneralAxisRadius, BoundsTheSampledAxisDistanceOfTheUr5eAndPanda) {

@@ -98,7 +98,7 @@ bool make_polytope(const std::vector<Q3>& pts_in, Polytope& out) {
   return true;
 }
 
-bool contains(const Polytope& k, const Q3& x) {
+bool polytope_contains(const Polytope& k, const Q3& x) {
   for (const CompletenessPlane& f : k.facets)
     if (dot(f.n, x) > f.c) return false;
   return true;
@@ -124,7 +124,7 @@ bool segment_meets_facet(const Q3& p, const Q3& q, const CompletenessPlane& f, c
     return lo <= hi;
   }
   const Q t = sp / (sp - sq);
-  return contains(k, {p[0] + t * d[0], p[1] + t * d[1], p[2] + t * d[2]});
+  return polytope_contains(k, {p[0] + t * d[0], p[1] + t * d[1], p[2] + t * d[2]});
 }
 
 // The thesis's test (Section 3.2.4 B): edges of each against faces of the other.
@@ -140,9 +140,9 @@ bool edge_face_test(const Polytope& a, const Polytope& b) {
 
 bool vertex_containment(const Polytope& a, const Polytope& b) {
   for (const Q3& v : a.vertices)
-    if (contains(b, v)) return true;
+    if (polytope_contains(b, v)) return true;
   for (const Q3& v : b.vertices)
-    if (contains(a, v)) return true;
+    if (polytope_contains(a, v)) return true;
   return false;
 }
 
@@ -198,7 +198,7 @@ TEST(LemmaInterferenceCompleteness, EdgeFaceTestMissesCubeInsideCube) {
 TEST(LemmaInterferenceCompleteness, VertexContainmentClauseFindsCubeInsideCube) {
   const Polytope small = box(-1, -1, -1, 1, 1, 1), big = box(-2, -2, -2, 2, 2, 2);
   EXPECT_TRUE(vertex_containment(small, big));
-  EXPECT_TRUE(contains(big, {Q(1), Q(1), Q(1)}));
+  EXPECT_TRUE(polytope_contains(big, {Q(1), Q(1), Q(1)}));
   EXPECT_EQ(sat_three_way(small, big), Verdict::kOverlapping);
 }
 

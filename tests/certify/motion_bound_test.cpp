@@ -10,7 +10,7 @@
 namespace grpvss::certify {
 namespace {
 
-constexpr double kDeg = M_PI / 180.0;
+constexpr double kRadiansPerDegree = M_PI / 180.0;
 
 // The IBM 7545 chain (thesis A.1.1.1) with one hull per link; hull points chosen so that
 // the L1 norms are easy to compute by hand.
@@ -19,11 +19,11 @@ RobotModel make_scara_with_unit_hulls() {
   auto revolute = [](double alpha_deg, double d, double a, double min_deg, double max_deg) {
     Joint joint;
     joint.type = JointType::kRevolute;
-    joint.dh = {0.0, d, a, alpha_deg * kDeg};
-    joint.minimum = min_deg * kDeg;
-    joint.maximum = max_deg * kDeg;
-    joint.acceleration = 2 * kDeg;
-    joint.deceleration = 1.8 * kDeg;
+    joint.dh = {0.0, d, a, alpha_deg * kRadiansPerDegree};
+    joint.minimum = min_deg * kRadiansPerDegree;
+    joint.maximum = max_deg * kRadiansPerDegree;
+    joint.acceleration = 2 * kRadiansPerDegree;
+    joint.deceleration = 1.8 * kRadiansPerDegree;
     return joint;
   };
   robot.joints.push_back(revolute(0, 25.5, 15.8, 0, 200));

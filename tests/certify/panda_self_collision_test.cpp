@@ -23,12 +23,12 @@ namespace {
 using test::PandaSelfRun;
 
 // As `grpvss verify --cell panda-self.yaml --path <path>`.
-PandaSelfRun run(const std::string& path) { return test::run_panda_self(path); }
+PandaSelfRun run_panda_path(const std::string& path) { return test::run_panda_self(path); }
 
 CheckReport check_panda_certificate(const PandaSelfRun& r) { return test::check_panda_self(r, r.verified.certificate); }
 
 TEST(PandaSelfCollision, FoldingTheHandIntoTheUpperArmIsACollisionNamingBothLinks) {
-  const PandaSelfRun r = run("panda-fold.txt");
+  const PandaSelfRun r = run_panda_path("panda-fold.txt");
   ASSERT_FALSE(r.cell.robot.self_collision_pairs.empty());
   const VerificationResult& result = r.verified.result;
   EXPECT_EQ(result.verdict, Verdict::kCollision);
@@ -57,7 +57,7 @@ TEST(PandaSelfCollision, FoldingTheHandIntoTheUpperArmIsACollisionNamingBothLink
 }
 
 TEST(PandaSelfCollision, TheFoldStoppedShortIsClearAndItsCertificateIsAccepted) {
-  const PandaSelfRun r = run("panda-near-fold.txt");
+  const PandaSelfRun r = run_panda_path("panda-near-fold.txt");
   EXPECT_EQ(r.verified.result.verdict, Verdict::kClear);
   EXPECT_TRUE(r.verified.result.self_collision_episodes.empty());
   const CheckReport report = check_panda_certificate(r);

@@ -276,7 +276,7 @@ TEST(SelfCollision, DisablingTheCollidingPairInTheSrdfMakesTheFoldClear) {
 }
 
 // The placed raw hulls of a configuration, by RobotCell hull index.
-std::vector<Points> placed_hulls(const RobotCell& cell, const Eigen::VectorXd& q) {
+std::vector<Points> placed_pair_hulls(const RobotCell& cell, const Eigen::VectorXd& q) {
   kinematics::Workspace workspace(cell.robot());
   kinematics::forward_kinematics(cell.chain(), q, workspace);
   std::vector<Points> placed(cell.hulls().size());
@@ -289,7 +289,7 @@ std::vector<Points> placed_hulls(const RobotCell& cell, const Eigen::VectorXd& q
 
 // Independent: CGAL's exact contact (tests/support/geometry_reference) on every self pair.
 bool reference_self_contact(const RobotCell& cell, const Eigen::VectorXd& q) {
-  const std::vector<Points> placed = placed_hulls(cell, q);
+  const std::vector<Points> placed = placed_pair_hulls(cell, q);
   for (const SelfPairHulls& pair : cell.self_pairs()) {
     if (grpvss::testing::reference_contact(placed[static_cast<std::size_t>(pair.a)],
                                 placed[static_cast<std::size_t>(pair.b)]) !=
@@ -382,7 +382,7 @@ TEST(SelfCollision, TheStepRuleHoldsEachPairToItsRelativeBound) {
       // Below the exact distance of the placed hulls (it may exceed d: a pair settled by its
       // balls' slab gets the solid's tighter support on that normal).
       EXPECT_GT(from.self_pairs[p].revolution_distance, 0.0);
-      const std::vector<Points> placed = placed_hulls(cell, from.q);
+      const std::vector<Points> placed = placed_pair_hulls(cell, from.q);
       const double exact_distance = std::sqrt(geometry::exact_distance_squared_lower(
           placed[static_cast<std::size_t>(cell.self_pairs()[p].a)],
           placed[static_cast<std::size_t>(cell.self_pairs()[p].b)]));
@@ -434,7 +434,7 @@ TEST(SelfCollision, FarPairsAreSettledByTheirBallsAndTheSlabHoldsOnThePlacedHull
   Eigen::VectorXd q(6);
   q << 0.3, -1.2, 1.1, -0.4, 1.57, 0.2;
   kinematics::forward_kinematics(cell.chain(), q, workspace);
-  const std::vector<Points> placed = placed_hulls(cell, q);
+  const std::vector<Points> placed = placed_pair_hulls(cell, q);
   std::vector<SelfPairEvidence> closest, by_balls, unreached;
   SelfPairProbe closest_probe(cell), ball_probe(cell), unreached_probe(cell);
   closest_probe.probe(workspace.X_WL, {}, closest);
@@ -492,7 +492,7 @@ TEST(SelfCollision, TheWarmNormalSettlesAPairDoubleGjkCallsOverlapping) {
   q << 0.9772725874971312, 0.83967636208827023, 1.2511440378415255, -0.69245001152371943,
       0.088747194030848603, -1.051461583708666;
   const Eigen::Vector3d warm(-0.0036158021299844967, 0.0044345373303059307, 0.0012508983572103276);
-  const std::vector<Points> placed = placed_hulls(cell, q);
+  const std::vector<Points> placed = placed_pair_hulls(cell, q);
   const auto& base = placed[0];
   const auto& upper_arm = placed[2];
   ASSERT_EQ(cell.robot().links[static_cast<std::size_t>(cell.hulls()[2].link)].name,

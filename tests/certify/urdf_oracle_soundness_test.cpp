@@ -37,6 +37,9 @@
 
 namespace grpvss::certify {
 namespace {
+// Named: the thesis-format oracle (oracle_soundness_test.cpp) has helpers of the same names,
+// and a unity batch may bring the two files together.
+namespace urdf_oracle {
 
 const std::string kRobots = std::string(GRPVSS_SOURCE_DIR) + "/../shared/robots/";
 const std::string kBracket = std::string(GRPVSS_SOURCE_DIR) + "/tests/data/cells/l-bracket.stl";
@@ -436,5 +439,6 @@ TEST(UrdfOracleSoundness, TheHullAndSelfPairBoundsCoverTheMeasuredPaths) {
   }
 }
 
+}  // namespace urdf_oracle
 }  // namespace
 }  // namespace grpvss::certify

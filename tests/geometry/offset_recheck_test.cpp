@@ -27,7 +27,7 @@ ConvexPolytope sample_hull() {
                                       {1.0, 1.0, 1.0}});
 }
 
-std::vector<std::vector<int>> canonical_faces(const ConvexPolytope& p) {
+std::vector<std::vector<int>> canonical_offset_faces(const ConvexPolytope& p) {
   std::vector<std::vector<int>> faces = p.faces();
   for (auto& loop : faces) {
     std::rotate(loop.begin(), std::min_element(loop.begin(), loop.end()), loop.end());
@@ -48,7 +48,7 @@ TEST(OffsetRecheck, AcceptsTheOffsetsMinkowskiOffsetBuildsAndKeepsTheirVertexOrd
     EXPECT_EQ(accepted->vertices().size(), vertices.size());
     // Same polytope as the one the cell would hull from the built offset (faces compared
     // as sets of loops: from_points may list them in another order).
-    EXPECT_EQ(canonical_faces(*accepted), canonical_faces(ConvexPolytope::from_points(vertices)));
+    EXPECT_EQ(canonical_offset_faces(*accepted), canonical_offset_faces(ConvexPolytope::from_points(vertices)));
   }
 }
 

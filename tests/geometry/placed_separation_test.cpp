@@ -50,7 +50,7 @@ Eigen::Isometry3d random_separation_pose(std::mt19937_64& rng, double reach) {
   return X;
 }
 
-PlacedHull placed(const LinkTemplate& link, const Eigen::Isometry3d& X_WL) {
+PlacedHull placed_link_hull(const LinkTemplate& link, const Eigen::Isometry3d& X_WL) {
   PlacedHull hull;
   hull.vertices_L = &link.vertices_L;
   hull.skeleton = &link.skeleton;
@@ -110,7 +110,7 @@ TEST(PlacedSeparation, EveryWitnessHoldsExactlyOnThePlacedPointsAndMatchesTheSca
     int a_start = 0;
     int b_start = 0;
     const auto by_templates =
-        certify_placed_separation(placed(link_a, X_a), a_start, placed(link_b, X_b), b_start, normal);
+        certify_placed_separation(placed_link_hull(link_a, X_a), a_start, placed_link_hull(link_b, X_b), b_start, normal);
     const auto by_scan = certify_separation(a, b, normal);
     if (!by_templates) {
       if (by_scan) ++scanned_only;
@@ -149,7 +149,7 @@ TEST(PlacedSeparation, AFaceSeenHeadOnIsSettledAsATiedPlateau) {
     for (int start = 0; start < 8; ++start) {
       int a_start = start;
       int b_start = start;
-      const auto s = certify_placed_separation(placed(link, X_a), a_start, placed(link, X_b), b_start, normal);
+      const auto s = certify_placed_separation(placed_link_hull(link, X_a), a_start, placed_link_hull(link, X_b), b_start, normal);
       ASSERT_TRUE(s) << "trial " << trial << " start " << start;
       EXPECT_NEAR(s->lower_bound, 0.001, 1e-14);
       EXPECT_TRUE(check_witness_exactly(placed_points(link, X_a), placed_points(link, X_b), s->witness,
@@ -169,13 +169,13 @@ TEST(PlacedSeparation, RefusesNormalsThatDoNotSeparate) {
   X_b.translation() += Vector3d(0.01, 0, 0);  // overlapping copies
   int a_start = 0;
   int b_start = 0;
-  EXPECT_FALSE(certify_placed_separation(placed(link, X_a), a_start, placed(link, X_b), b_start,
+  EXPECT_FALSE(certify_placed_separation(placed_link_hull(link, X_a), a_start, placed_link_hull(link, X_b), b_start,
                                          Vector3d(1, 0, 0)));
-  EXPECT_FALSE(certify_placed_separation(placed(link, X_a), a_start, placed(link, X_b), b_start,
+  EXPECT_FALSE(certify_placed_separation(placed_link_hull(link, X_a), a_start, placed_link_hull(link, X_b), b_start,
                                          Vector3d::Zero()));
-  EXPECT_FALSE(certify_placed_separation(placed(link, X_a), a_start, placed(link, X_b), b_start,
+  EXPECT_FALSE(certify_placed_separation(placed_link_hull(link, X_a), a_start, placed_link_hull(link, X_b), b_start,
                                          Vector3d(std::nan(""), 1, 0)));
-  EXPECT_FALSE(certified_placed_separation_query(placed(link, X_a), placed(link, X_b), nullptr,
+  EXPECT_FALSE(certified_placed_separation_query(placed_link_hull(link, X_a), placed_link_hull(link, X_b), nullptr,
                                                  nullptr, nullptr));
 }
 
@@ -188,7 +188,7 @@ TEST(PlacedSeparation, GjkOnTemplatesProposesWhatGjkOnThePlacedPointsProposes) {
     const auto [link_a, link_b, X_a, X_b] = random_pair(rng, 0.4);
     const GjkResult on_points = gjk(placed_points(link_a, X_a), placed_points(link_b, X_b), nullptr,
                                     &link_a.skeleton, 0, &link_b.skeleton, 0);
-    const GjkResult on_templates = gjk(placed(link_a, X_a), placed(link_b, X_b));
+    const GjkResult on_templates = gjk(placed_link_hull(link_a, X_a), placed_link_hull(link_b, X_b));
     ASSERT_EQ(on_points.status, on_templates.status) << "trial " << trial;
     if (on_points.status != GjkStatus::kSeparated) continue;
     ++separated;
@@ -209,7 +209,7 @@ TEST(PlacedSeparation, GjkFromTheLastSimplexFindsWhatAFreshStartFinds) {
   for (int trial = 0; trial < 300; ++trial) {
     auto [link_a, link_b, X_a, X_b] = random_pair(rng, 0.4);
     GjkSimplexHint hint;
-    const GjkResult before = gjk(placed(link_a, X_a), placed(link_b, X_b), nullptr, 0, 0, &hint);
+    const GjkResult before = gjk(placed_link_hull(link_a, X_a), placed_link_hull(link_b, X_b), nullptr, 0, 0, &hint);
     if (before.status != GjkStatus::kSeparated) {
       EXPECT_EQ(hint.size, 0);
       continue;
@@ -217,8 +217,8 @@ TEST(PlacedSeparation, GjkFromTheLastSimplexFindsWhatAFreshStartFinds) {
     EXPECT_EQ(hint.size, before.simplex_size);
     X_b.translation() += Vector3d(nudge(rng), nudge(rng), nudge(rng));
     X_b.rotate(Eigen::AngleAxisd(0.01, Vector3d::UnitZ()));
-    const GjkResult fresh = gjk(placed(link_a, X_a), placed(link_b, X_b));
-    const GjkResult hinted = gjk(placed(link_a, X_a), placed(link_b, X_b), nullptr, 0, 0, &hint);
+    const GjkResult fresh = gjk(placed_link_hull(link_a, X_a), placed_link_hull(link_b, X_b));
+    const GjkResult hinted = gjk(placed_link_hull(link_a, X_a), placed_link_hull(link_b, X_b), nullptr, 0, 0, &hint);
     ASSERT_EQ(fresh.status, hinted.status) << "trial " << trial;
     if (fresh.status != GjkStatus::kSeparated) continue;
     ++separated;
@@ -232,10 +232,10 @@ TEST(PlacedSeparation, GjkFromTheLastSimplexFindsWhatAFreshStartFinds) {
   GjkSimplexHint out_of_range{3, {0, 1, 100000, 0}, {0, 1, 2, 0}};
   Eigen::Isometry3d X_far = Eigen::Isometry3d::Identity();
   X_far.translation() = Vector3d(2, 0, 0);
-  const GjkResult g = gjk(placed(link, Eigen::Isometry3d::Identity()), placed(link, X_far), nullptr, 0,
+  const GjkResult g = gjk(placed_link_hull(link, Eigen::Isometry3d::Identity()), placed_link_hull(link, X_far), nullptr, 0,
                           0, &out_of_range);
   EXPECT_EQ(g.status, GjkStatus::kSeparated);
-  EXPECT_NEAR(g.distance, gjk(placed(link, Eigen::Isometry3d::Identity()), placed(link, X_far)).distance, 1e-12);
+  EXPECT_NEAR(g.distance, gjk(placed_link_hull(link, Eigen::Isometry3d::Identity()), placed_link_hull(link, X_far)).distance, 1e-12);
 }
 
 }  // namespace

@@ -16,16 +16,16 @@ namespace {
 
 using grpvss::testing::expect_input_error;
 
-const std::string kFolder = std::string(GRPVSS_SOURCE_DIR) + "/data/programs/";
+const std::string kProgramsFolder = std::string(GRPVSS_SOURCE_DIR) + "/data/programs/";
 
 TEST(RobotProgramFile, PicksTheReaderByExtension) {
-  const RobotProgram ur = read_robot_program(kFolder + "ur5e_pick_and_place.script");
+  const RobotProgram ur = read_robot_program(kProgramsFolder + "ur5e_pick_and_place.script");
   EXPECT_EQ(ur.language, ProgramLanguage::kUrScript);
   EXPECT_EQ(ur.motions.size(), 8u);
-  const RobotProgram krl = read_robot_program(kFolder + "kr_palletize.src");
+  const RobotProgram krl = read_robot_program(kProgramsFolder + "kr_palletize.src");
   EXPECT_EQ(krl.language, ProgramLanguage::kKrl);
   EXPECT_EQ(krl.files.size(), 3u);  // the .src, $config.dat and the .dat beside it
-  const RobotProgram rapid = read_robot_program(kFolder + "irb_glue.mod");
+  const RobotProgram rapid = read_robot_program(kProgramsFolder + "irb_glue.mod");
   EXPECT_EQ(rapid.language, ProgramLanguage::kRapid);
   EXPECT_EQ(rapid.motions.size(), 8u);
 }

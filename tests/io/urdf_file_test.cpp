@@ -18,7 +18,7 @@
 namespace grpvss::io {
 namespace {
 
-const std::string kRobots = std::string(GRPVSS_SOURCE_DIR) + "/../shared/robots/";
+const std::string kUrdfRobotsDir = std::string(GRPVSS_SOURCE_DIR) + "/../shared/robots/";
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 UrdfReadOptions robot_options(const std::string& package_directory, const std::string& tip = "") {
@@ -30,13 +30,13 @@ UrdfReadOptions robot_options(const std::string& package_directory, const std::s
 }
 
 UrdfReadResult read_ur5e() {
-  return read_urdf_file(kRobots + "ur5e/ur5e.urdf", robot_options(kRobots + "ur5e"));
+  return read_urdf_file(kUrdfRobotsDir + "ur5e/ur5e.urdf", robot_options(kUrdfRobotsDir + "ur5e"));
 }
 
 UrdfReadResult read_panda(double finger = -1.0) {
-  UrdfReadOptions options = robot_options(kRobots + "franka_panda", "panda_hand_tcp");
+  UrdfReadOptions options = robot_options(kUrdfRobotsDir + "franka_panda", "panda_hand_tcp");
   if (finger >= 0) options.side_joint_values["panda_finger_joint1"] = finger;
-  return read_urdf_file(kRobots + "franka_panda/panda.urdf", options);
+  return read_urdf_file(kUrdfRobotsDir + "franka_panda/panda.urdf", options);
 }
 
 std::vector<std::string> joint_names(const RobotDescription& d) {
@@ -104,7 +104,7 @@ TEST(UrdfFile, Ur5eCollisionMeshesAreResolvedThroughThePackagePathAndReadExactly
     EXPECT_EQ(c.shape, CollisionShape::kMesh);
     EXPECT_EQ(c.mesh.vertices.size(), vertices[i]);
     EXPECT_EQ(c.mesh_vertex_error, 0.0);  // float32 values, no scale: nothing rounded
-    const std::string folder = std::filesystem::path(kRobots + "ur5e/ur_description/meshes/ur5e/collision/").lexically_normal().string();
+    const std::string folder = std::filesystem::path(kUrdfRobotsDir + "ur5e/ur_description/meshes/ur5e/collision/").lexically_normal().string();
     EXPECT_EQ(c.mesh_file.rfind(folder, 0), 0u) << c.mesh_file;
   }
   EXPECT_EQ(d.links[0].collisions[0].line, 128);
@@ -210,8 +210,8 @@ TEST(UrdfFile, PandaFingerBoxesAreClosedByDefaultAndFollowASetValueWithTheMimic)
 
 TEST(UrdfFile, PandaArmOnlyEndsAtLink8) {
   const RobotDescription d =
-      read_urdf_file(kRobots + "franka_panda/panda_arm_only.urdf",
-                     robot_options(kRobots + "franka_panda", "panda_link8"))
+      read_urdf_file(kUrdfRobotsDir + "franka_panda/panda_arm_only.urdf",
+                     robot_options(kUrdfRobotsDir + "franka_panda", "panda_link8"))
           .description;
   EXPECT_EQ(d.joint_count(), 7);
   EXPECT_EQ(d.links[7].frame, "panda_link8");

@@ -23,7 +23,7 @@ using grpvss::testing::kPi;
 using grpvss::testing::rodrigues_reference;
 using grpvss::testing::vector6;
 
-const std::string kSample = std::string(GRPVSS_SOURCE_DIR) + "/data/programs/ur5e_pick_and_place.script";
+const std::string kUrScriptSample = std::string(GRPVSS_SOURCE_DIR) + "/data/programs/ur5e_pick_and_place.script";
 constexpr double kRoughPi = 3.14159265358979;  // as the sample writes it
 
 RobotProgram parse_script(const std::string& text) { return parse_urscript(text, "t.script"); }
@@ -49,10 +49,10 @@ void expect_pose(const ProgramTarget& target, const Pose& expected) {
 }
 
 TEST(UrScriptFile, ReadsThePickAndPlaceSample) {
-  const RobotProgram program = read_urscript_file(kSample);
+  const RobotProgram program = read_urscript_file(kUrScriptSample);
   EXPECT_EQ(program.language, ProgramLanguage::kUrScript);
   EXPECT_EQ(program.name, "pick_and_place");
-  EXPECT_EQ(program.files, std::vector<std::string>{kSample});
+  EXPECT_EQ(program.files, std::vector<std::string>{kUrScriptSample});
   ASSERT_EQ(program.motions.size(), 8u);
   const auto& m = program.motions;
 
@@ -69,7 +69,7 @@ TEST(UrScriptFile, ReadsThePickAndPlaceSample) {
                          "above_place", "place", "above_place", "home_q"};
   for (std::size_t i = 0; i < m.size(); ++i) {
     EXPECT_EQ(m[i].line, lines[i]) << i;
-    EXPECT_EQ(m[i].file, kSample) << i;
+    EXPECT_EQ(m[i].file, kUrScriptSample) << i;
     EXPECT_EQ(m[i].kind, kinds[i]) << i;
     EXPECT_EQ(m[i].target_name, names[i]) << i;
     EXPECT_EQ(m[i].X_FT.translation(), Eigen::Vector3d(0, 0, 0.15)) << i;
@@ -123,9 +123,9 @@ TEST(UrScriptFile, ReadsThePickAndPlaceSample) {
 
   // grip() runs twice: its statements are warned about once.
   ASSERT_EQ(program.warnings.size(), 3u);
-  expect_warning(program.warnings[0], kSample, 5, "not read: set_payload(1.2, [0.0, 0.0, 0.05])");
-  expect_warning(program.warnings[1], kSample, 14, "not read: set_standard_digital_out(0, closed)");
-  expect_warning(program.warnings[2], kSample, 15, "not read: sleep(0.3)");
+  expect_warning(program.warnings[0], kUrScriptSample, 5, "not read: set_payload(1.2, [0.0, 0.0, 0.05])");
+  expect_warning(program.warnings[1], kUrScriptSample, 14, "not read: set_standard_digital_out(0, closed)");
+  expect_warning(program.warnings[2], kUrScriptSample, 15, "not read: sleep(0.3)");
 }
 
 TEST(UrScriptFile, RotationVectorQuarterTurnAboutZMapsXToY) {

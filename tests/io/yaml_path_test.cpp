@@ -16,7 +16,7 @@ namespace {
 
 using grpvss::testing::expect_input_error;
 
-const RobotModel& ibm7545() {
+const RobotModel& ibm7545_robot() {
   static const RobotModel robot =
       read_robot_file(std::string(GRPVSS_SOURCE_DIR) + "/data/ibm7545/robot.txt");
   return robot;
@@ -29,7 +29,7 @@ PathPlacement in_millimetres(const Eigen::Isometry3d& X_WR = Eigen::Isometry3d::
 }
 
 PathProgram parse_yaml_text(const std::string& text, const PathPlacement& placement = in_millimetres()) {
-  return parse_path_file(text, "p.yaml", ibm7545(), placement);
+  return parse_path_file(text, "p.yaml", ibm7545_robot(), placement);
 }
 
 // The rotation of a target (axis-angle as stored) as a matrix.
@@ -117,7 +117,7 @@ TEST(YamlPath, DefectsAreNamedWithFileLineAndExpectation) {
       "p.yaml", 3,
       "p.yaml:3: expected segment 1 lin.pose.quaternion: a unit quaternion (norm 1 within 1e-6), norm 1.4142135623730951, found a mapping");
   expect_input_error(
-      [&] { parse_path_file(units + "segments:\n  - lin: {pose: {xyz: [1, 2, 3]}}\n", "p.yaml", ibm7545(), {}); },
+      [&] { parse_path_file(units + "segments:\n  - lin: {pose: {xyz: [1, 2, 3]}}\n", "p.yaml", ibm7545_robot(), {}); },
       "p.yaml", 1,
       "p.yaml:1: expected units.length: a robot with a declared length unit (a cell); thesis robot files take the thesis path format, found 'mm'");
   expect_input_error([&] { parse_yaml_text(units + "segments:\n  - {ptp: {joints: [1, 2, 3, 4], speed: 1}, lin: {pose: {xyz: [1, 2, 3]}}}\n"); },

@@ -15,8 +15,8 @@ namespace {
 
 using grpvss::test::kPi;
 
-AnalyticIk opw_ik(const KinematicChain& chain) { return AnalyticIk(chain, *recognise_opw(chain).model); }
-AnalyticIk ur_ik(const KinematicChain& chain) { return AnalyticIk(chain, *recognise_ur(chain).model); }
+AnalyticIk opw_solver(const KinematicChain& chain) { return AnalyticIk(chain, *recognise_opw(chain).model); }
+AnalyticIk ur_solver(const KinematicChain& chain) { return AnalyticIk(chain, *recognise_ur(chain).model); }
 
 bool equal(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
   return (a - b).cwiseAbs().maxCoeff() <= 1e-9;
@@ -31,7 +31,7 @@ bool whole_turns_apart(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
 }
 
 TEST(SolutionSelection, KukaStatusAndTurnSelectExactlyTheOriginal) {
-  const AnalyticIk ik = opw_ik(test::kr6_r700_chain());
+  const AnalyticIk ik = opw_solver(test::kr6_r700_chain());
   std::mt19937_64 generator(41);
   const Eigen::VectorXd elsewhere = Eigen::VectorXd::Zero(6);
   for (int trial = 0; trial < 1000; ++trial) {
@@ -49,7 +49,7 @@ TEST(SolutionSelection, KukaStatusAndTurnSelectExactlyTheOriginal) {
 }
 
 TEST(SolutionSelection, AbbConfdataSelectsExactlyTheOriginal) {
-  const AnalyticIk ik = opw_ik(test::irb2400_chain());
+  const AnalyticIk ik = opw_solver(test::irb2400_chain());
   std::mt19937_64 generator(42);
   for (int trial = 0; trial < 1000; ++trial) {
     const Eigen::VectorXd q = test::random_chain_configuration(ik.chain(), generator);
@@ -84,14 +84,14 @@ void expect_configuration_selects(const AnalyticIk& ik, std::uint64_t seed) {
 }
 
 TEST(SolutionSelection, ArmConfigurationSelectsTheBranch) {
-  expect_configuration_selects(opw_ik(test::kr6_r700_chain()), 43);
-  expect_configuration_selects(opw_ik(test::irb2400_chain()), 44);
-  expect_configuration_selects(ur_ik(test::ur5e_chain_from_urdf()), 45);
+  expect_configuration_selects(opw_solver(test::kr6_r700_chain()), 43);
+  expect_configuration_selects(opw_solver(test::irb2400_chain()), 44);
+  expect_configuration_selects(ur_solver(test::ur5e_chain_from_urdf()), 45);
 }
 
 TEST(SolutionSelection, AConfigurationNoSolutionHasGivesNone) {
   // Within its axis-3 stops the IRB 2400 never has the wrist centre behind the lower arm.
-  const AnalyticIk ik = opw_ik(test::irb2400_chain());
+  const AnalyticIk ik = opw_solver(test::irb2400_chain());
   std::mt19937_64 generator(46);
   for (int trial = 0; trial < 100; ++trial) {
     const Eigen::VectorXd q = test::random_chain_configuration(ik.chain(), generator);
@@ -112,7 +112,7 @@ TEST(SolutionSelection, NearestSolutionIsTheClosestInJointSpace) {
 }
 
 TEST(SolutionSelection, VendorBitsNeedAnOpwArm) {
-  const AnalyticIk ik = ur_ik(test::ur5e_chain_from_urdf());
+  const AnalyticIk ik = ur_solver(test::ur5e_chain_from_urdf());
   EXPECT_THROW(solution_with_status_turn(ik, Eigen::Isometry3d::Identity(), 2, std::nullopt,
                                          Eigen::VectorXd::Zero(6)),
                std::invalid_argument);

@@ -33,7 +33,7 @@ cell::ModelInputs load(const std::string& cell_file) {
   return cell::load_model_inputs(sources);
 }
 
-Eigen::Isometry3d pose(const Eigen::Vector3d& p, double angle, const Eigen::Vector3d& axis) {
+Eigen::Isometry3d pose_about_axis(const Eigen::Vector3d& p, double angle, const Eigen::Vector3d& axis) {
   Eigen::Isometry3d X = Eigen::Isometry3d::Identity();
   X.linear() = Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix();
   X.translation() = p;
@@ -62,9 +62,9 @@ TEST(ProgramPath, APoseThroughBaseWorkObjectAndToolResolvesToTheJointsItCameFrom
   const cell::ModelInputs model = load("/tests/data/cells/ur5e-post-no-self.yaml");
   const auto ik = kinematics::make_automatic_ik(model.robot);
   const kinematics::KinematicChain chain = kinematics::make_chain(model.robot);
-  const ProgramFrames frames{pose({0.1, -0.2, 0.3}, 0.4, {1, 2, 3}), pose({0, 0, 0.05}, 0.3, {0, 1, 1})};
-  const Eigen::Isometry3d X_RB = pose({0.5, 0.1, -0.1}, 1.2, {0, 0, 1});
-  const Eigen::Isometry3d X_FT = pose({0.01, 0.02, 0.15}, 0.7, {1, 0, 0});
+  const ProgramFrames frames{pose_about_axis({0.1, -0.2, 0.3}, 0.4, {1, 2, 3}), pose_about_axis({0, 0, 0.05}, 0.3, {0, 1, 1})};
+  const Eigen::Isometry3d X_RB = pose_about_axis({0.5, 0.1, -0.1}, 1.2, {0, 0, 1});
+  const Eigen::Isometry3d X_FT = pose_about_axis({0.01, 0.02, 0.15}, 0.7, {1, 0, 0});
   for (const Eigen::VectorXd& q : {Eigen::VectorXd((Eigen::VectorXd(6) << -0.6, -1.4, 1.5, -1.2, -1.57, 0.2).finished()),
                                    Eigen::VectorXd((Eigen::VectorXd(6) << 2.0, -0.7, -1.9, 0.4, 1.1, -2.5).finished())}) {
     // The robot model's end effector E is where X_FE puts it; the program's target is the TCP
@@ -197,8 +197,8 @@ TEST(ProgramPath, ALinearMoveIsACpLineOfEWithItsOwnSpeedEndingInTheJointsFollowe
   const auto ik = kinematics::make_automatic_ik(model.robot);
   const kinematics::KinematicChain chain = kinematics::make_chain(model.robot);
   // The program's TCP is the cell's E (X_FT = X_FE): the TCP line is E's line.
-  const ProgramFrames frames{pose({0.1, -0.2, 0.3}, 0.4, {1, 2, 3}), pose({0, 0, 0.05}, 0.3, {0, 1, 1})};
-  const Eigen::Isometry3d X_RB = pose({0.5, 0.1, -0.1}, 1.2, {0, 0, 1});
+  const ProgramFrames frames{pose_about_axis({0.1, -0.2, 0.3}, 0.4, {1, 2, 3}), pose_about_axis({0, 0, 0.05}, 0.3, {0, 1, 1})};
+  const Eigen::Isometry3d X_RB = pose_about_axis({0.5, 0.1, -0.1}, 1.2, {0, 0, 1});
   const Eigen::Isometry3d X_WE_start = kinematics::end_effector_pose(chain, kLineStart);
   const Eigen::Isometry3d X_WE_end = kinematics::end_effector_pose(chain, kLineEnd);
   const Eigen::Isometry3d X_BT = X_RB.inverse() * frames.X_WR.inverse() * X_WE_end * frames.X_FE.inverse() * frames.X_FE;
@@ -231,7 +231,7 @@ TEST(ProgramPath, AMovelToJointsEndsAtTheirPoseAndKeptOrientationUnderAnotherToo
   const ProgramFrames frames{model.X_WR, Eigen::Isometry3d::Identity()};
   // movel(q): the pose q reaches, as UR does; a tool 100 mm along z other than E (identity).
   ProgramMotion to_joints = linear_motion(JointTarget{kLineEnd}, 4);
-  to_joints.X_FT = pose({0, 0, 0.1}, 0.0, {0, 0, 1});
+  to_joints.X_FT = pose_about_axis({0, 0, 0.1}, 0.0, {0, 0, 1});
   // Then up by 50 mm keeping the orientation: E moves on the TCP's line translated.
   const Eigen::Isometry3d X_WE_end = kinematics::end_effector_pose(chain, kLineEnd);
   Eigen::Isometry3d X_RT_up = frames.X_WR.inverse() * X_WE_end * to_joints.X_FT;

@@ -31,7 +31,7 @@ Eigen::Vector3d random_unit(std::mt19937_64& rng) {
 
 // A box with half extents h and orientation `rotation`, centred at c (8 points: cheap exact
 // offsets in the verifier).
-std::vector<Eigen::Vector3d> box(const Eigen::Vector3d& c, const Eigen::Vector3d& h,
+std::vector<Eigen::Vector3d> oracle_box(const Eigen::Vector3d& c, const Eigen::Vector3d& h,
                                  const Eigen::Matrix3d& rotation) {
   std::vector<Eigen::Vector3d> points;
   for (int k = 0; k < 8; ++k) {
@@ -44,7 +44,7 @@ std::vector<Eigen::Vector3d> box(const Eigen::Vector3d& c, const Eigen::Vector3d
 
 std::vector<Eigen::Vector3d> random_box(std::mt19937_64& rng, const Eigen::Vector3d& c,
                                         const Eigen::Vector3d& h) {
-  return box(c, h, random_rotation(rng));
+  return oracle_box(c, h, random_rotation(rng));
 }
 
 // A box from behind the frame origin along a random direction to length `length` (a tool
@@ -117,7 +117,7 @@ void add_obstacles(std::mt19937_64& rng, const std::vector<Eigen::VectorXd>& vis
       half = Eigen::Vector3d(uniform(rng, 0.3, 2.0), uniform(rng, 0.3, 2.0), uniform(rng, 0.3, 2.0));
     }
     smallest_thickness = std::min(smallest_thickness, 2.0 * half.minCoeff());
-    c.environment.obstacles.push_back({box(p_W + u * (gap + half.z()), half, rotation), 0});
+    c.environment.obstacles.push_back({oracle_box(p_W + u * (gap + half.z()), half, rotation), 0});
   }
   double reach = 10.0;
   for (const Joint& joint : robot.joints) reach += std::abs(joint.dh.a) + std::abs(joint.dh.d) + std::abs(joint.maximum);
@@ -268,7 +268,7 @@ OracleCase random_scara_cp_case(std::uint64_t seed) {
   robot.links.resize(5);
   for (int link = 1; link <= 4; ++link) add_link_hulls(rng, robot, link, robot.joints[link - 1].dh.a);
   // The base column under joint 1.
-  robot.links[0].hulls.push_back({box(Eigen::Vector3d(0, 0, 0.5 * robot.joints[0].dh.d - 1.0),
+  robot.links[0].hulls.push_back({oracle_box(Eigen::Vector3d(0, 0, 0.5 * robot.joints[0].dh.d - 1.0),
                                       Eigen::Vector3d(2.0, 2.0, 0.5 * robot.joints[0].dh.d - 1.0),
                                       Eigen::Matrix3d::Identity()), 0});
   c.tolerance = random_tolerance(rng);

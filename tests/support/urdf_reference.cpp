@@ -8,28 +8,28 @@
 namespace grpvss::test {
 namespace {
 
-std::string attribute(const tinyxml2::XMLElement* element, const char* name, const std::string& otherwise) {
+std::string xml_attribute(const tinyxml2::XMLElement* element, const char* name, const std::string& otherwise) {
   const char* value = element != nullptr ? element->Attribute(name) : nullptr;
   return value != nullptr ? value : otherwise;
 }
 
 ReferenceJoint read_joint(const tinyxml2::XMLElement& e) {
   ReferenceJoint joint;
-  joint.name = attribute(&e, "name", "");
-  joint.type = attribute(&e, "type", "");
-  joint.parent = attribute(e.FirstChildElement("parent"), "link", "");
-  joint.child = attribute(e.FirstChildElement("child"), "link", "");
-  joint.xyz = attribute(e.FirstChildElement("origin"), "xyz", "0 0 0");
-  joint.rpy = attribute(e.FirstChildElement("origin"), "rpy", "0 0 0");
-  joint.axis = attribute(e.FirstChildElement("axis"), "xyz", "1 0 0");
+  joint.name = xml_attribute(&e, "name", "");
+  joint.type = xml_attribute(&e, "type", "");
+  joint.parent = xml_attribute(e.FirstChildElement("parent"), "link", "");
+  joint.child = xml_attribute(e.FirstChildElement("child"), "link", "");
+  joint.xyz = xml_attribute(e.FirstChildElement("origin"), "xyz", "0 0 0");
+  joint.rpy = xml_attribute(e.FirstChildElement("origin"), "rpy", "0 0 0");
+  joint.axis = xml_attribute(e.FirstChildElement("axis"), "xyz", "1 0 0");
   if (const tinyxml2::XMLElement* limit = e.FirstChildElement("limit")) {
     joint.lower = limit->DoubleAttribute("lower", 0.0);
     joint.upper = limit->DoubleAttribute("upper", 0.0);
   }
   if (const tinyxml2::XMLElement* mimic = e.FirstChildElement("mimic")) {
-    joint.mimic = attribute(mimic, "joint", "");
-    joint.multiplier = attribute(mimic, "multiplier", "1");
-    joint.offset = attribute(mimic, "offset", "0");
+    joint.mimic = xml_attribute(mimic, "joint", "");
+    joint.multiplier = xml_attribute(mimic, "multiplier", "1");
+    joint.offset = xml_attribute(mimic, "offset", "0");
   }
   return joint;
 }
@@ -38,13 +38,13 @@ ReferenceCollision read_collision(const tinyxml2::XMLElement& e, const std::stri
   ReferenceCollision collision;
   collision.link = link;
   collision.index = index;
-  collision.xyz = attribute(e.FirstChildElement("origin"), "xyz", "0 0 0");
-  collision.rpy = attribute(e.FirstChildElement("origin"), "rpy", "0 0 0");
+  collision.xyz = xml_attribute(e.FirstChildElement("origin"), "xyz", "0 0 0");
+  collision.rpy = xml_attribute(e.FirstChildElement("origin"), "rpy", "0 0 0");
   const tinyxml2::XMLElement* shape = e.FirstChildElement("geometry")->FirstChildElement();
   collision.shape = shape->Name();
-  collision.size = attribute(shape, "size", "");
-  collision.radius = attribute(shape, "radius", "");
-  collision.length = attribute(shape, "length", "");
+  collision.size = xml_attribute(shape, "size", "");
+  collision.radius = xml_attribute(shape, "radius", "");
+  collision.length = xml_attribute(shape, "length", "");
   return collision;
 }
 
@@ -70,7 +70,7 @@ ReferenceUrdf read_reference_urdf(const std::string& path) {
   }
   for (std::size_t j = 0; j < urdf.joints.size(); ++j) urdf.joint_to_child[urdf.joints[j].child] = j;
   for (const auto* e = robot->FirstChildElement("link"); e; e = e->NextSiblingElement("link")) {
-    const std::string name = attribute(e, "name", "");
+    const std::string name = xml_attribute(e, "name", "");
     if (urdf.joint_to_child.count(name) == 0) urdf.root = name;
     int index = 0;
     for (const auto* c = e->FirstChildElement("collision"); c; c = c->NextSiblingElement("collision")) {
