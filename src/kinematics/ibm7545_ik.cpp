@@ -81,7 +81,7 @@ class Ibm7545Ik final : public InverseKinematics {
     // bearing and link 1 is +-atan2(a2 sin(elbow), a1 + a2 cos(elbow)), with sin(elbow) =
     // sqrt(1 - c2^2) and cos(elbow) = c2. One atan2 serves both branches (a CP line solves
     // the IK every 0.5 in.; the trigonometry was most of its cost).
-    const double sin_elbow = std::sqrt(std::max(0.0, (1.0 - c2) * (1.0 + c2)));
+    const double sin_elbow = std::sqrt((1.0 - c2) * (1.0 + c2));  // c2 is in [-1, 1]
     const double link1_from_bearing = std::atan2(a2 * sin_elbow, a1 + a2 * c2);
     bool solved = false;
     Eigen::Vector4d best_q;

@@ -91,7 +91,7 @@ TEST(Ibm7545Ik, RecognisesTheStructure) {
 }
 
 // At the stretched (theta2 = 0) and the folded (theta2 = 180 deg) elbow both branches meet:
-// sin(elbow) is 0 there (or the square root of a rounded negative number, clamped to 0).
+// sin(elbow) is 0 there, or the square root of a rounding-sized 1 - c2^2.
 // Each pose round-trips within 1e-8, and the straight elbow is found at joint 2's limit 0.
 TEST(Ibm7545Ik, StretchedAndFoldedElbowsRoundTrip) {
   RobotModel model = test::make_ibm7545_model();
