@@ -4,14 +4,19 @@ docs/performance.md#real-robots-and-fcl (issue #22): per configuration, per traj
 misses, whole processes cold and warm, and the targets met or missed.
 
 Usage: scripts/bench-robots.py [--build DIR] [--repetitions N] [--runs N] [--json FILE]
-                               [--filter REGEX] [--no-processes]
+                               [--filter REGEX] [--no-processes] [--cpu N]
 
 --json FILE   read the benchmark results from FILE (an earlier --benchmark_out) instead of
               running grpvss_bench (the file is written there when it does not exist; a FILE
               older than grpvss_bench is refused).
 --filter      benchmark filter (default: every robot benchmark and Table 3's CP operation).
-Benchmarks: CPU-time medians of --repetitions repetitions (the machine's load is printed:
-other processes inflate wall time; CPU time is what the tables use). Whole processes: --runs
+--cpu N       pin this script and everything it runs to CPU N (a VM's vCPUs may differ in
+              speed, and a process that migrates changes speed mid-run).
+Benchmarks: CPU-time medians of --repetitions repetitions, randomly interleaved across the
+benchmarks (Google Benchmark's --benchmark_enable_random_interleaving), so that a change of
+the machine's speed during the run reaches GRPVSS's rows and the FCL peers' alike rather than
+whichever ran then (the machine's load is printed: other processes inflate wall time; CPU time
+is what the tables use). Whole processes: --runs
 interleaved runs each of `grpvss verify` cold (--no-cache), warm (set-up cache hit) and of
 `grpvss_fcl_peer check` (FCL sampled at Delta/4) on the same files; CPU = user + system.
 """
@@ -46,6 +51,7 @@ def run_benchmarks(build, repetitions, json_file, bench_filter):
     out = json_file or tempfile.mktemp(suffix=".json")
     command = [binary, f"--benchmark_filter={bench_filter}",
                f"--benchmark_repetitions={repetitions}", "--benchmark_report_aggregates_only=true",
+               "--benchmark_enable_random_interleaving=true",
                f"--benchmark_out={out}", "--benchmark_out_format=json"]
     print(f"# running {' '.join(command)} ({load_text()})", file=sys.stderr)
     subprocess.run(command, check=True, stdout=subprocess.DEVNULL)
@@ -232,8 +238,12 @@ def main():
     parser.add_argument("--json")
     parser.add_argument("--filter", default=DEFAULT_FILTER)
     parser.add_argument("--no-processes", action="store_true")
+    parser.add_argument("--cpu", type=int)
     args = parser.parse_args()
-    print(f"# {load_text()}, nproc {os.cpu_count()}")
+    if args.cpu is not None:
+        os.sched_setaffinity(0, {args.cpu})  # inherited by every process the script starts
+    pinning = f", pinned to CPU {args.cpu}" if args.cpu is not None else ""
+    print(f"# {load_text()}, nproc {os.cpu_count()}{pinning}")
     table = medians(run_benchmarks(args.build, args.repetitions, args.json, args.filter))
     print("\n## Per configuration (CPU medians; 64 configurations along a clear trajectory)\n")
     configuration_table(table)
