@@ -16,9 +16,10 @@ Benchmarks: CPU-time medians of --repetitions repetitions, randomly interleaved 
 benchmarks (Google Benchmark's --benchmark_enable_random_interleaving), so that a change of
 the machine's speed during the run reaches GRPVSS's rows and the FCL peers' alike rather than
 whichever ran then (the machine's load is printed: other processes inflate wall time; CPU time
-is what the tables use). Whole processes: --runs
-interleaved runs each of `grpvss verify` cold (--no-cache), warm (set-up cache hit) and of
-`grpvss_fcl_peer check` (FCL sampled at Delta/4) on the same files; CPU = user + system.
+is what the tables use).
+Whole processes: --runs interleaved runs each of `grpvss verify` cold (--no-cache), warm
+(set-up cache hit) and of `grpvss_fcl_peer check` (FCL sampled at Delta/4) on the same files;
+CPU = user + system.
 """
 import argparse
 import json
