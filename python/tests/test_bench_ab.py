@@ -1,7 +1,6 @@
 """scripts/bench-ab.py against fake benchmark binaries: the paired mode's ratios, its
 alternating order, and why it exists (a machine whose speed steps between runs)."""
 import importlib.util
-import json
 import os
 import stat
 import sys
