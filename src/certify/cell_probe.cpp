@@ -289,10 +289,7 @@ void CellProbe::decide_expanded(HullProbe& hull, int o, double gap_estimate,
   const std::size_t warm_slot = static_cast<std::size_t>(hull.index) * obstacle_count + o;
   if (separate_by_kept_normal(hull, o, warm_slot, evidence)) return;
   if (separate_by_template(hull, o, warm_slot, evidence)) return;
-  if (!hull.expanded_placed) {
-    kinematics::place_points(hull.X_WL, hull.hull.expanded_L, placed_expanded_);
-    hull.expanded_placed = true;
-  }
+  place_expanded(hull);
   const geometry::CertifiedPairResult result = geometry::certified_pair_query(
       placed_expanded_, cell.obstacles().vertices_W(o),
       has_warm_normal_[warm_slot] ? &warm_normals_[warm_slot] : nullptr,
@@ -318,7 +315,7 @@ std::optional<geometry::PlacedHull> CellProbe::offset_template(const HullProbe& 
 // Any proven slab is evidence (the checker re-checks it on every placed vertex); the hull's
 // radius is the smallest clearance over its obstacles, which a bound not below the smallest so
 // far leaves as it is. proof: proofs/fast-path.md#placed-separation
-bool CellProbe::separate_by_kept_normal(const HullProbe& hull, int o, std::size_t warm_slot,
+bool CellProbe::separate_by_kept_normal(HullProbe& hull, int o, std::size_t warm_slot,
                                         PairEvidence& evidence) {
   if (!has_warm_normal_[warm_slot]) return false;
   // The bound the kept normal must reach: for a verdict any (a returned slab has a positive
@@ -337,15 +334,33 @@ bool CellProbe::separate_by_kept_normal(const HullProbe& hull, int o, std::size_
   if (!any_slab && !(required > 0.0)) return false;
   // After a long move the kept normal is stale: its bound would mostly fall short (wasted climbs).
   if (!(hull.moved < (any_slab || loose ? anchor_bounds_[warm_slot] : required))) return false;
-  const std::optional<geometry::PlacedHull> offset = offset_template(hull);
-  if (!offset) return false;
-  const std::optional<geometry::CertifiedSeparation> separation = geometry::certify_placed_separation(
-      *offset, climb_hints_[warm_slot], cell_->obstacles().vertices_W(o), warm_normals_[warm_slot]);
+  const std::optional<geometry::CertifiedSeparation> separation = kept_normal_slab(hull, o, warm_slot);
   if (!separation || !(separation->lower_bound >= required)) return false;
   evidence.separated = true;
   evidence.witness = separation->witness;
   evidence.lower_bound = separation->lower_bound;
   return true;
+}
+
+// On the template, the slab a scan of the placed offset would prove
+// (proofs/fast-path.md#placed-separation). Below the template size the offset is placed (cheaper
+// than climbing, docs/performance.md#placed-templates) and the normal is proven on every placed
+// vertex, as GJK's is in the full query (proofs/fast-path.md#certified-separation).
+std::optional<geometry::CertifiedSeparation> CellProbe::kept_normal_slab(HullProbe& hull, int o,
+                                                                        std::size_t warm_slot) {
+  const std::vector<Eigen::Vector3d>& obstacle_W = cell_->obstacles().vertices_W(o);
+  if (const std::optional<geometry::PlacedHull> offset = offset_template(hull)) {
+    return geometry::certify_placed_separation(*offset, climb_hints_[warm_slot], obstacle_W,
+                                               warm_normals_[warm_slot]);
+  }
+  place_expanded(hull);
+  return geometry::certify_separation(placed_expanded_, obstacle_W, warm_normals_[warm_slot]);
+}
+
+void CellProbe::place_expanded(HullProbe& hull) {
+  if (hull.expanded_placed) return;
+  kinematics::place_points(hull.X_WL, hull.hull.expanded_L, placed_expanded_);
+  hull.expanded_placed = true;
 }
 
 bool CellProbe::separate_by_template(const HullProbe& hull, int o, std::size_t warm_slot,

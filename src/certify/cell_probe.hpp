@@ -12,6 +12,7 @@
 #include <Eigen/Core>
 
 #include "grpvss/certify/robot_cell.hpp"
+#include "grpvss/exact/certified_query.hpp"
 #include "grpvss/geometry/gjk.hpp"
 #include "grpvss/exact/convex_polytope.hpp"
 #include "grpvss/evidence/certificate.hpp"
@@ -122,12 +123,18 @@ class CellProbe {
   bool separate_by_template(const HullProbe& hull, int obstacle, std::size_t warm_slot,
                             PairEvidence& evidence);
   /// Before that, once a nearer obstacle has set the hull's smallest clearance: the pair's
-  /// last witness normal proven again on the template (no GJK). Taken only when its bound does
+  /// last witness normal proven again (kept_normal_slab; no GJK). Taken only when its bound does
   /// not lower that clearance, so the hull's radius is the one the full query gives. For a
   /// loose hull's nearest obstacle, taken when its bound keeps kLooseKeep of the bound the
   /// normal was found with and the hull's radius its floor (LooseTerms::hull_floors).
-  bool separate_by_kept_normal(const HullProbe& hull, int obstacle, std::size_t warm_slot,
+  bool separate_by_kept_normal(HullProbe& hull, int obstacle, std::size_t warm_slot,
                                PairEvidence& evidence);
+  /// The slab the pair's kept witness normal proves between the placed offset and the obstacle:
+  /// on the offset's template, or on its placed vertices below the template size.
+  std::optional<geometry::CertifiedSeparation> kept_normal_slab(HullProbe& hull, int obstacle,
+                                                                std::size_t warm_slot);
+  /// Places the hull's offset into placed_expanded_ once per hull probe.
+  void place_expanded(HullProbe& hull);
   /// The placed offset on its template, or nullopt when the offset is placed instead.
   std::optional<geometry::PlacedHull> offset_template(const HullProbe& hull) const;
   /// Keeps a proven separation of the offset and an obstacle as evidence and warm start.

@@ -78,12 +78,7 @@ bool SelfPairProbe::settle_by_kept_normal(std::size_t p, const std::vector<Eigen
   const bool any_slab = need_ == ProbeNeed::kVerdict;
   const bool loose = p < loose_floors_.size() && loose_floors_[p] < std::numeric_limits<double>::infinity();
   if (!(any_slab || loose) || !has_warm_normal_[p] || !(anchor_bounds_[p] > 0.0)) return false;
-  const SelfPairHulls& pair = cell_->self_pairs()[p];
-  const auto on_template = [&](int hull) { return cell_->hulls()[static_cast<std::size_t>(hull)].raw_on_template; };
-  if (!on_template(pair.a) && !on_template(pair.b)) return false;
-  const std::optional<geometry::CertifiedSeparation> separation = geometry::certify_placed_separation(
-      template_placed(pair.a, X_WL), climb_hints_a_[p], template_placed(pair.b, X_WL), climb_hints_b_[p],
-      warm_normals_[p]);
+  const std::optional<geometry::CertifiedSeparation> separation = kept_normal_slab(p, X_WL);
   if (!separation) return false;
   const double distance = exact_distance_lower_bound(separation->lower_bound, cell_->placement_error());
   if (any_slab ? !(distance > 0.0)
@@ -95,6 +90,23 @@ bool SelfPairProbe::settle_by_kept_normal(std::size_t p, const std::vector<Eigen
   evidence.lower_bound = separation->lower_bound;
   evidence.distance = distance;
   return true;
+}
+
+// On the templates, the slab a scan of the placed hulls would prove
+// (proofs/fast-path.md#placed-separation). Two hulls below the template size are placed
+// (cheaper than climbing, docs/performance.md#placed-templates) and the normal is proven on
+// every placed vertex, as GJK's is in the full query (proofs/fast-path.md#certified-separation).
+std::optional<geometry::CertifiedSeparation> SelfPairProbe::kept_normal_slab(
+    std::size_t p, const std::vector<Eigen::Isometry3d>& X_WL) {
+  const SelfPairHulls& pair = cell_->self_pairs()[p];
+  const auto on_template = [&](int hull) { return cell_->hulls()[static_cast<std::size_t>(hull)].raw_on_template; };
+  if (on_template(pair.a) || on_template(pair.b)) {
+    return geometry::certify_placed_separation(template_placed(pair.a, X_WL), climb_hints_a_[p],
+                                               template_placed(pair.b, X_WL), climb_hints_b_[p],
+                                               warm_normals_[p]);
+  }
+  const std::vector<Eigen::Vector3d>& a = placed(pair.a, X_WL);
+  return geometry::certify_separation(a, placed(pair.b, X_WL), warm_normals_[p]);
 }
 
 void SelfPairProbe::keep(std::size_t p, const geometry::CertifiedPairResult& result,

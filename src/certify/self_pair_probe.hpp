@@ -3,6 +3,7 @@
 // links at least two apart), a certified lower bound of the distance between the two exactly
 // placed raw hulls, or their contact. proof: proofs/two-ball-cover.md#lemma-relative-motion
 
+#include <optional>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -72,11 +73,15 @@ class SelfPairProbe {
   /// worth it (geometry::kTemplateClimbMinVertices); false when that proves nothing.
   bool settle_by_templates(std::size_t p, const std::vector<Eigen::Isometry3d>& X_WL,
                            SelfPairEvidence& evidence);
-  /// A loose pair's last witness normal proven again on the two templates (no GJK), kept when
+  /// A loose pair's last witness normal proven again (kept_normal_slab; no GJK), kept when
   /// its bound is at least kLooseKeep of the bound the normal was found with and its distance
   /// is at least the pair's floor.
   bool settle_by_kept_normal(std::size_t p, const std::vector<Eigen::Isometry3d>& X_WL,
                              SelfPairEvidence& evidence);
+  /// The slab pair p's kept witness normal proves: on the two templates when one hull is big
+  /// enough for them, else on the two placed hulls.
+  std::optional<geometry::CertifiedSeparation> kept_normal_slab(std::size_t p,
+                                                                const std::vector<Eigen::Isometry3d>& X_WL);
   /// Keeps a proven separation of pair p as its evidence and its normal as the next warm start.
   void keep(std::size_t p, const geometry::CertifiedPairResult& result, SelfPairEvidence& evidence);
   /// The revolution route's distances of a separated pair whose hull a has a solid of revolution: the

@@ -265,17 +265,21 @@ TEST(CellProbe, AKeptNormalProvesAFartherObstacleWithoutChangingAnyHullsRadius) 
   EXPECT_GT(kept_normal_proofs, 20);  // the kept normals are exercised, not vacuous
 }
 
+// How many loose terms a warm probe proved on their kept normals along a motion (next test).
+struct LooseProofs {
+  int hulls = 0;
+  int pairs = 0;
+};
+
 // A term the march's last transition left loose (far from limiting the step) may be proven on its
-// kept witness normal alone, its nearest obstacle included: no GJK. Along the same UR5e motion
-// beside the post, one warm probe told every hull and pair is loose, against a fresh probe at
-// each configuration: every witness holds exactly on the placed offset or raw hulls (a proven
-// slab is evidence), such proofs are there (the normal kept from the step before, a bound below
-// the fresh query's), and each keeps at least kLooseKeep of the bound its normal was found
-// with (by GJK) -- below that the normal is stale and GJK runs again.
-TEST(CellProbe, ALooseTermIsProvenOnItsKeptNormalWhileItKeepsMostOfItsLastClosestBound) {
-  const cell::LoadedCell loaded = test::load_test_cell("ur5e-post.yaml");
-  const RobotCell cell = test::certified_cell(loaded);
-  ASSERT_FALSE(cell.self_pairs().empty());
+// kept witness normal alone, its nearest obstacle included: no GJK. Along `steps` + 1
+// configurations from `from` to `to`, one warm probe told every hull and pair is loose, against a
+// fresh probe at each configuration: every witness holds exactly on the placed offset or raw hulls
+// (a proven slab is evidence), such proofs are there (the normal kept from the step before, a
+// bound below the fresh query's), and each keeps at least kLooseKeep of the bound its normal was
+// found with (by GJK) -- below that the normal is stale and GJK runs again.
+LooseProofs expect_loose_terms_on_kept_normals(const RobotCell& cell, const Eigen::VectorXd& from,
+                                               const Eigen::VectorXd& to, int steps) {
   CellProbe warm(cell);
   // Every term loose, with no floor: only kLooseKeep limits the kept normals.
   const double no_floor = -std::numeric_limits<double>::infinity();
@@ -289,23 +293,32 @@ TEST(CellProbe, ALooseTermIsProvenOnItsKeptNormalWhileItKeepsMostOfItsLastCloses
   kinematics::Workspace workspace(cell.robot());
   std::vector<Eigen::Vector3d> placed_offset_W;
   std::vector<std::vector<Eigen::Vector3d>> placed_raw_W(cell.hulls().size());
-  int loose_hull_proofs = 0;
-  int loose_pair_proofs = 0;
-  // A bound proven on the normal kept from the step before, below the fresh query's: it must
-  // keep kLooseKeep of the bound that normal was found with.
+  LooseProofs proofs;
+  // A bound proven on the normal kept from the step before, below the fresh query's: a loose
+  // term's must keep kLooseKeep of the bound that normal was found with; a farther obstacle's
+  // (`nearest_bound` below it) must not lower the hull's radius, as in the test above.
   const auto check_kept = [&](const std::pair<int, int>& key, const Eigen::Vector3d& normal, double bound,
-                              double fresh_bound, int step, int& proofs) {
+                              double fresh_bound, double nearest_bound, int step, int& proven) {
     const auto last = kept.find(key);
     if (step > 0 && last != kept.end() && last->second.normal == normal && bound < fresh_bound - 1e-12) {
-      ++proofs;
+      if (nearest_bound < bound) {
+        EXPECT_GE(bound, nearest_bound) << "step " << step;
+        return;
+      }
+      ++proven;
       EXPECT_GE(bound, kLooseKeep * last->second.found_with) << "step " << step;
       return;
     }
     kept[key] = {normal, bound};
   };
-  for (int k = 0; k <= kBesideThePostSteps; ++k) {
-    const auto [warm_result, fresh_result] = probe_beside_the_post(cell, warm, k);
-    ASSERT_FALSE(warm_result.any_expanded_interference) << "step " << k;
+  for (int k = 0; k <= steps; ++k) {
+    const Eigen::VectorXd q = from + (to - from) * (static_cast<double>(k) / steps);
+    ProbeResult warm_result;
+    ProbeResult fresh_result;
+    warm.probe(q, /*with_points=*/false, warm_result);
+    CellProbe(cell).probe(q, /*with_points=*/false, fresh_result);
+    EXPECT_FALSE(warm_result.any_expanded_interference) << "step " << k;
+    if (warm_result.any_expanded_interference) return proofs;
     kinematics::forward_kinematics(cell.chain(), warm_result.q, workspace);
     for (int i = 0; i < static_cast<int>(cell.hulls().size()); ++i) {
       const LinkHull& hull = cell.hulls()[static_cast<std::size_t>(i)];
@@ -313,32 +326,65 @@ TEST(CellProbe, ALooseTermIsProvenOnItsKeptNormalWhileItKeepsMostOfItsLastCloses
       kinematics::place_points(workspace.X_WL[static_cast<std::size_t>(hull.link)], hull.raw_L,
                                placed_raw_W[static_cast<std::size_t>(i)]);
       const std::vector<PairEvidence> fresh_evidence = evidence_of(fresh_result, i);
+      double nearest_bound = std::numeric_limits<double>::infinity();
+      for (const PairEvidence& evidence : evidence_of(warm_result, i)) nearest_bound = std::min(nearest_bound, evidence.lower_bound);
       for (const PairEvidence& evidence : evidence_of(warm_result, i)) {
-        ASSERT_TRUE(evidence.separated);
+        EXPECT_TRUE(evidence.separated);
         EXPECT_TRUE(test::witness_holds_exactly(evidence.witness, placed_offset_W,
                                           cell.obstacles().vertices_W(evidence.obstacle)))
             << "step " << k << " hull " << i << " obstacle " << evidence.obstacle;
         const auto fresh = std::find_if(fresh_evidence.begin(), fresh_evidence.end(),
                                         [&](const PairEvidence& e) { return e.obstacle == evidence.obstacle; });
-        ASSERT_NE(fresh, fresh_evidence.end());
-        check_kept({i, evidence.obstacle}, evidence.witness.normal, evidence.lower_bound, fresh->lower_bound, k,
-                   loose_hull_proofs);
+        EXPECT_NE(fresh, fresh_evidence.end());
+        if (fresh == fresh_evidence.end()) continue;
+        check_kept({i, evidence.obstacle}, evidence.witness.normal, evidence.lower_bound, fresh->lower_bound,
+                   nearest_bound, k, proofs.hulls);
       }
     }
     for (std::size_t p = 0; p < cell.self_pairs().size(); ++p) {
       const SelfPairEvidence& evidence = warm_result.self_pairs[p];
-      ASSERT_TRUE(evidence.separated) << "step " << k << " pair " << p;
+      EXPECT_TRUE(evidence.separated) << "step " << k << " pair " << p;
       const SelfPairHulls& pair = cell.self_pairs()[p];
       EXPECT_TRUE(test::witness_holds_exactly(evidence.witness, placed_raw_W[static_cast<std::size_t>(pair.a)],
                                         placed_raw_W[static_cast<std::size_t>(pair.b)]))
           << "step " << k << " pair " << p;
       check_kept({-1, static_cast<int>(p)}, evidence.witness.normal, evidence.lower_bound,
-                 fresh_result.self_pairs[p].lower_bound, k, loose_pair_proofs);
+                 fresh_result.self_pairs[p].lower_bound, evidence.lower_bound, k, proofs.pairs);
     }
   }
+  return proofs;
+}
+
+// The UR5e beside the post: its CAD hulls and offsets are proven on their templates.
+TEST(CellProbe, ALooseTermIsProvenOnItsKeptNormalWhileItKeepsMostOfItsLastClosestBound) {
+  const cell::LoadedCell loaded = test::load_test_cell("ur5e-post.yaml");
+  const RobotCell cell = test::certified_cell(loaded);
+  ASSERT_FALSE(cell.self_pairs().empty());
+  Eigen::VectorXd from(6), to(6);
+  from << 0.0, -1.5708, 1.5708, 0.0, 0.0, 0.0;  // the cell's home
+  to << -0.9, -1.3, 1.4, -0.3, 0.5, 0.2;
+  const LooseProofs proofs = expect_loose_terms_on_kept_normals(cell, from, to, kBesideThePostSteps);
   // Exercised, not vacuous: hulls' nearest obstacles and self pairs both.
-  EXPECT_GT(loose_hull_proofs, 20);
-  EXPECT_GT(loose_pair_proofs, 20);
+  EXPECT_GT(proofs.hulls, 20);
+  EXPECT_GT(proofs.pairs, 20);
+}
+
+// The six-axis robot past its post and over its table: every hull and offset is below the
+// template size, so the kept normals are proven on the placed points.
+TEST(CellProbe, ALooseTermOfHullsBelowTheTemplateSizeIsProvenOnThePlacedPoints) {
+  const cell::LoadedCell loaded = cell::load_cell(test::kSourceDir + "/data/sixaxis/cell.yaml");
+  const RobotCell cell = test::certified_cell(loaded);
+  ASSERT_FALSE(cell.self_pairs().empty());
+  for (const LinkHull& hull : cell.hulls()) {
+    ASSERT_FALSE(hull.raw_on_template);
+    ASSERT_LT(hull.expanded_template_max_abs_L, 0.0);
+  }
+  Eigen::VectorXd from(6), to(6);
+  from << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0;  // the cell's home
+  to << -0.675, 0.375, 0.45, -0.225, 0.375, 0.15;
+  const LooseProofs proofs = expect_loose_terms_on_kept_normals(cell, from, to, 45);
+  EXPECT_GT(proofs.hulls, 20);  // 187 when written
+  EXPECT_GT(proofs.pairs, 20);  // 341
 }
 
 // The probe is asked for points only when the world-frame query finds the pair interfering.
