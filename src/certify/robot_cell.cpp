@@ -89,6 +89,8 @@ RobotCell::RobotCell(const RobotModel& robot, const Environment& environment,
   allowed_contacts_ = environment.allowed_contacts;
   self_pairs_ = self_pair_hulls(robot, hulls_);
   prepare_vertex_routes(raw_extent);
+  raw_coordinate_limit_ = raw_extent;
+  set_axis_balls(hulls_);
 }
 
 namespace {

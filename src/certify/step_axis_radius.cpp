@@ -55,24 +55,20 @@ namespace {
 std::atomic<unsigned long long> next_identity{1};
 }  // namespace
 
-StepAxisRadii::StepAxisRadii(const RobotCell& cell)
-    : cell_(&cell), identity_(next_identity.fetch_add(1)), joints_(cell.chain().joint_count()) {
-  for (const LinkHull& hull : cell.hulls()) {
-    for (const Eigen::Vector3d& u : hull.raw_L) coordinate_limit_ = std::max(coordinate_limit_, u.cwiseAbs().maxCoeff());
-  }
+void set_axis_balls(std::vector<LinkHull>& hulls) {
   // The centres in round-to-nearest, then every radius in one upward scope (a scope costs two
-  // rounding-mode switches, and a run builds these radii once).
-  center_L_.reserve(cell.hulls().size());
-  for (const LinkHull& hull : cell.hulls()) {
-    center_L_.push_back(hull.raw_L.empty() ? Eigen::Vector3d::Zero() : box_midpoint(hull.raw_L));
+  // rounding-mode switches).
+  for (LinkHull& hull : hulls) {
+    hull.axis_ball_center_L = hull.raw_L.empty() ? Eigen::Vector3d::Zero() : box_midpoint(hull.raw_L);
   }
-  radius_up_.reserve(cell.hulls().size());
   r::UpwardRoundingScope upward;
-  for (std::size_t i = 0; i < cell.hulls().size(); ++i) {
-    const std::vector<Eigen::Vector3d>& raw_L = cell.hulls()[i].raw_L;
-    radius_up_.push_back(raw_L.empty() ? 0.0 : largest_distance_up(raw_L, center_L_[i]));
+  for (LinkHull& hull : hulls) {
+    hull.axis_ball_radius_up = hull.raw_L.empty() ? 0.0 : largest_distance_up(hull.raw_L, hull.axis_ball_center_L);
   }
 }
+
+StepAxisRadii::StepAxisRadii(const RobotCell& cell)
+    : cell_(&cell), identity_(next_identity.fetch_add(1)), joints_(cell.chain().joint_count()) {}
 
 void StepAxisRadii::axis_distances(const ProbeResult& probe, std::vector<double>& distances) const {
   const std::vector<LinkHull>& hulls = cell_->hulls();
@@ -87,16 +83,17 @@ void StepAxisRadii::axis_distances(const ProbeResult& probe, std::vector<double>
   // and the checker assume; then only the distances are evaluated upward, in one scope.
   thread_local std::vector<Eigen::Vector3d> centers_W;
   thread_local std::vector<double> parameters;
+  const double coordinate_limit = cell_->raw_coordinate_limit();
   centers_W.resize(hulls.size());
   parameters.assign(hulls.size() * joints, 0.0);
   for (std::size_t i = 0; i < hulls.size(); ++i) {
-    centers_W[i] = probe.X_WL[static_cast<std::size_t>(hulls[i].link)] * center_L_[i];
+    centers_W[i] = probe.X_WL[static_cast<std::size_t>(hulls[i].link)] * hulls[i].axis_ball_center_L;
     for (int j = 1; j <= std::min(hulls[i].link, joints_); ++j) {
       const Eigen::Isometry3d& X_WJ = probe.X_WJ[static_cast<std::size_t>(j - 1)];
       // Near the foot of the perpendicular, within the FK bound's reach (any s is sound).
       parameters[i * joints + static_cast<std::size_t>(j - 1)] =
           std::clamp(X_WJ.linear().col(2).dot(centers_W[i] - X_WJ.translation()),
-                     -coordinate_limit_, coordinate_limit_);
+                     -coordinate_limit, coordinate_limit);
     }
   }
   r::UpwardRoundingScope upward;
@@ -107,7 +104,7 @@ void StepAxisRadii::axis_distances(const ProbeResult& probe, std::vector<double>
       distances[at] = r::add_up(r::add_up(axis_point_distance_up(centers_W[i], X_WJ.translation(),
                                                                  X_WJ.linear().col(2), parameters[at]),
                                           cell_->placement_error()),
-                                radius_up_[i]);
+                                hulls[i].axis_ball_radius_up);
     }
   }
 }

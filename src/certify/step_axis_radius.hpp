@@ -12,10 +12,15 @@
 
 namespace grpvss::certify {
 
+/// Fills each hull's axis ball (LinkHull::axis_ball_center_L, axis_ball_radius_up): the centre
+/// of its raw vertices' box, and their largest distance from it, rounded up. Built once with the
+/// cell: a run's StepAxisRadii reads them. proof: proofs/motion-bound.md#axis-distance-evaluation
+void set_axis_balls(std::vector<LinkHull>& hulls);
+
 class StepAxisRadii {
  public:
-  /// Each hull's link-frame ball (its box's midpoint, its largest vertex distance rounded up)
-  /// and L, the largest |coordinate| of any hull vertex.
+  /// Reads each hull's axis ball and L, the largest |coordinate| of any hull vertex, from the
+  /// cell (set_axis_balls, RobotCell::raw_coordinate_limit).
   explicit StepAxisRadii(const RobotCell& cell);
 
   /// D_jh at the probe's configuration for every hull and joint 1..N, at [hull * N + j - 1]:
@@ -42,7 +47,7 @@ class StepAxisRadii {
 
   int joint_count() const { return joints_; }
   /// L, the largest |coordinate| of any hull vertex.
-  double coordinate_limit() const { return coordinate_limit_; }
+  double coordinate_limit() const { return cell_->raw_coordinate_limit(); }
   const RobotCell& cell() const { return *cell_; }
   /// A number no other StepAxisRadii of this process has (caches keyed by it never mistake a
   /// later one at the same address for this one).
@@ -52,9 +57,6 @@ class StepAxisRadii {
   const RobotCell* cell_;
   unsigned long long identity_ = 0;
   int joints_ = 0;
-  double coordinate_limit_ = 0.0;        ///< L
-  std::vector<Eigen::Vector3d> center_L_;  ///< c_h per hull
-  std::vector<double> radius_up_;        ///< r_h per hull
 };
 
 /// |c - o - s z| rounded up, each coordinate bracketed by directed rounding (an active

@@ -56,6 +56,11 @@ struct LinkHull {
   std::vector<Eigen::Vector3d> vertex_cluster_centers_L;
   std::vector<double> own_axis_distances;
   std::vector<double> cluster_own_axis_distances;
+  /// The ball the step's axis distances place (src/certify/step_axis_radius.hpp): the centre of
+  /// raw_L's box and raw_L's largest distance from it, rounded up.
+  /// proof: proofs/motion-bound.md#axis-distance-evaluation
+  Eigen::Vector3d axis_ball_center_L = Eigen::Vector3d::Zero();
+  double axis_ball_radius_up = 0.0;
 };
 
 /// \brief A self-collision pair as indices into RobotCell::hulls().
@@ -141,6 +146,8 @@ class RobotCell {
   /// Radius of the ball the link offsets are verified to contain: Delta + 2 * placement_error.
   /// proof: proofs/offset-containment.md#rounded-placement
   double expansion_radius() const { return expansion_radius_; }
+  /// L, the largest |coordinate| of any raw hull vertex in its link frame.
+  double raw_coordinate_limit() const { return raw_coordinate_limit_; }
 
  private:
   void build_offsets(const std::vector<geometry::ConvexPolytope>& raw_polytopes,
@@ -159,6 +166,7 @@ class RobotCell {
   HullRadiusTable radii_;
   double placement_error_ = 0.0;
   double expansion_radius_ = 0.0;
+  double raw_coordinate_limit_ = 0.0;
   std::vector<LinkHull> hulls_;
   std::vector<geometry::ConvexPolytope> expanded_polytopes_L_;
   std::vector<geometry::HullSkeleton> expanded_skeletons_;
